@@ -1,0 +1,30 @@
+#pragma once
+/// @file atomic_file.hpp
+/// All-or-nothing outputs: content goes to a temporary beside the target and is renamed
+/// into place only when complete, so a crash or error never leaves a half-written file.
+
+#include <filesystem>
+#include <functional>
+#include <ostream>
+#include <string>
+
+namespace sgmp {
+
+/// Fails unless `target` can be written: its parent directory exists (or can be created)
+/// and, without `overwrite`, the target does not exist. Throws std::runtime_error
+/// "<path>: <reason>" so callers can refuse before any expensive work.
+void check_writable(const std::filesystem::path& target, bool overwrite);
+
+/// Writes a file atomically: `produce` writes to a stream on a temporary file in the
+/// same directory, which is flushed and renamed to `target`. The temporary is removed if
+/// `produce` throws. Content is gzip-compressed when `target` ends in ".gz".
+void write_file_atomically(const std::filesystem::path& target, bool overwrite,
+                           const std::function<void(std::ostream&)>& produce);
+
+/// Replaces directory `target` atomically: `produce` fills a fresh temporary directory
+/// beside it, which then takes the target's place (an existing target is removed only
+/// with `overwrite`, and only after `produce` succeeded).
+void write_directory_atomically(const std::filesystem::path& target, bool overwrite,
+                                const std::function<void(const std::filesystem::path&)>& produce);
+
+}  // namespace sgmp

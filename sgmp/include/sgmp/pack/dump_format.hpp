@@ -1,0 +1,24 @@
+#pragma once
+/// @file dump_format.hpp
+/// LAMMPS / LIGGGHTS `dump custom` text files, read strictly.
+///
+///     ITEM: TIMESTEP / <step>
+///     ITEM: NUMBER OF ATOMS / <n>
+///     ITEM: BOX BOUNDS <flags> / 3 lines "lo hi"
+///     ITEM: ATOMS id type x y z radius ...   (columns by label)
+///
+/// Columns are found by label: `id`, position `x y z` (or unwrapped `xu yu zu`), and
+/// `radius` or `diameter`; other columns are ignored. When a file holds several
+/// snapshots the last complete one is returned. The timestep and box are recorded in the
+/// metadata (`timestep`, `dump_box`). Errors name source:line and the reason.
+
+#include <istream>
+#include <string>
+
+#include "sgmp/pack/pack.hpp"
+
+namespace sgmp {
+
+Pack read_dump_custom(std::istream& in, const std::string& source);
+
+}  // namespace sgmp

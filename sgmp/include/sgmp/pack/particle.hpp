@@ -1,0 +1,28 @@
+#pragma once
+/// @file particle.hpp
+/// A sphere of the pack: centre, radius and a colour label.
+
+#include <Eigen/Core>
+#include <cstdint>
+
+namespace sgmp {
+
+/// Positions and displacements. Axes as the thesis: X left-right, Y up (gravity is -Y),
+/// Z front-back; lengths in units of the control volume's side.
+using Vec3 = Eigen::Vector3d;
+
+/// One sphere. `color` is a label in [0, 10) used only for visualisation (thesis 3.1).
+struct Particle {
+    std::int64_t id = 0;
+    Vec3 center = Vec3::Zero();
+    double radius = 0.0;
+    int color = 0;
+};
+
+/// Signed surface gap between two spheres: |ci - cj| - ri - rj (negative when they overlap).
+double surface_gap(const Particle& a, const Particle& b);
+
+/// True when the spheres overlap: |ci - cj| < ri + rj, decided on squared distances.
+bool overlaps(const Particle& a, const Particle& b);
+
+}  // namespace sgmp

@@ -1,0 +1,24 @@
+#pragma once
+/// @file sphere_box_volume.hpp
+/// Exact volume of a sphere inside an axis-aligned box.
+///
+/// V = ∫ A(x) dx over the sphere's slices x ∈ [max(x_lo, cx - r), min(x_hi, cx + r)], where
+/// A(x) is the area of the disk of radius ρ(x) = √(r² − (x − cx)²) inside the box's
+/// rectangle in (y, z). A(x) is closed form (circular-segment areas combined by
+/// inclusion–exclusion over the rectangle's corners). Between the break points where the
+/// disk meets an edge line or a corner of the rectangle, A(x) is smooth, with square-root
+/// behaviour at the ends; each piece is integrated by tanh–sinh quadrature, which handles
+/// such end points to ~1e-15 relative. Spheres wholly inside or outside take no quadrature.
+
+#include "sgmp/pack/geometry.hpp"
+
+namespace sgmp {
+
+/// Volume of the ball |p - center| ≤ radius inside `box`. The box may be open (infinite
+/// bounds). Accurate to ~1e-13 relative to (4/3)πr³.
+double sphere_box_volume(const Vec3& center, double radius, const Box& box);
+
+/// Area of the disk of radius `rho` centred at the origin inside [y0, y1] × [z0, z1].
+double disk_rectangle_area(double rho, double y0, double y1, double z0, double z1);
+
+}  // namespace sgmp

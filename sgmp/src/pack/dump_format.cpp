@@ -1,0 +1,188 @@
+#include "sgmp/pack/dump_format.hpp"
+
+#include <array>
+
+#include "text_fields.hpp"
+
+namespace sgmp {
+namespace {
+
+/// Column indices of the ATOMS section, found by label.
+struct DumpColumns {
+    int id = -1;
+    std::array<int, 3> position{-1, -1, -1};
+    int radius = -1;
+    int diameter = -1;
+    std::size_t width = 0;
+};
+
+DumpColumns parse_atom_labels(const std::vector<std::string_view>& labels,
+                              const detail::LineReader& reader) {
+    DumpColumns columns;
+    columns.width = labels.size();
+    const std::array<std::array<std::string_view, 2>, 3> position_labels{
+        {{"x", "xu"}, {"y", "yu"}, {"z", "zu"}}};
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+        const auto label = labels[i];
+        const int index = static_cast<int>(i);
+        if (label == "id") {
+            columns.id = index;
+        } else if (label == "radius") {
+            columns.radius = index;
+        } else if (label == "diameter") {
+            columns.diameter = index;
+        }
+        for (std::size_t axis = 0; axis < 3; ++axis) {
+            if (label == position_labels[axis][0] ||
+                (label == position_labels[axis][1] && columns.position[axis] < 0)) {
+                columns.position[axis] = index;
+            }
+        }
+    }
+    const std::array<const char*, 3> axis_names{"x", "y", "z"};
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+        if (columns.position[axis] < 0) {
+            throw reader.error(std::string("ATOMS section lacks the '") + axis_names[axis] +
+                               "' column (scaled coordinates are not accepted)");
+        }
+    }
+    if (columns.id < 0) {
+        throw reader.error("ATOMS section lacks the 'id' column");
+    }
+    if (columns.radius < 0 && columns.diameter < 0) {
+        throw reader.error("ATOMS section lacks a 'radius' or 'diameter' column");
+    }
+    return columns;
+}
+
+std::string expect_item(detail::LineReader& reader, std::string_view item) {
+    std::string line;
+    if (!reader.next(line)) {
+        throw reader.error("file ends where 'ITEM: " + std::string(item) + "' was expected");
+    }
+    const std::string prefix = "ITEM: " + std::string(item);
+    if (line.rfind(prefix, 0) != 0) {
+        throw reader.error("expected '" + prefix + "', found '" + line + "'");
+    }
+    return line.substr(prefix.size());
+}
+
+std::string expect_line(detail::LineReader& reader, const char* what) {
+    std::string line;
+    if (!reader.next(line)) {
+        throw reader.error(std::string("file ends where ") + what + " was expected");
+    }
+    return line;
+}
+
+std::int64_t expect_integer(detail::LineReader& reader, const char* what) {
+    const std::string line = expect_line(reader, what);
+    const auto fields = detail::split_fields(line);
+    const auto value = fields.size() == 1 ? detail::parse_integer(fields[0]) : std::nullopt;
+    if (!value || *value < 0) {
+        throw reader.error(std::string(what) + " must be a non-negative integer, found '" + line +
+                           "'");
+    }
+    return *value;
+}
+
+double field_number(std::string_view field, const char* label, const detail::LineReader& reader) {
+    const auto value = detail::parse_double(field);
+    if (!value) {
+        throw reader.error(std::string("column '") + label + "' holds '" + std::string(field) +
+                           "', which is not a number");
+    }
+    return *value;
+}
+
+/// One snapshot, from the line after "ITEM: TIMESTEP".
+Pack read_snapshot(detail::LineReader& reader) {
+    Pack pack;
+    const std::int64_t step = expect_integer(reader, "the timestep");
+    expect_item(reader, "NUMBER OF ATOMS");
+    const std::int64_t count = expect_integer(reader, "the number of atoms");
+    expect_item(reader, "BOX BOUNDS");
+    std::string box;
+    for (int axis = 0; axis < 3; ++axis) {
+        const std::string line = expect_line(reader, "a box bounds line");
+        const auto fields = detail::split_fields(line);
+        if (fields.size() < 2 || !detail::parse_double(fields[0]) ||
+            !detail::parse_double(fields[1])) {
+            throw reader.error("box bounds line must start with two numbers 'lo hi', found '" +
+                               line + "'");
+        }
+        if (axis > 0) {
+            box += ' ';
+        }
+        box.append(fields[0]).append(" ").append(fields[1]);
+    }
+    const std::string labels_text = expect_item(reader, "ATOMS");
+    const auto labels = detail::split_fields(labels_text);
+    const DumpColumns columns = parse_atom_labels(labels, reader);
+    pack.metadata.set_integer("timestep", step);
+    pack.metadata.set("dump_box", box);
+    pack.particles.reserve(static_cast<std::size_t>(count));
+    detail::ParticleValidator validator;
+    std::string line;
+    for (std::int64_t i = 0; i < count; ++i) {
+        if (!reader.next(line)) {
+            throw reader.error("file ends after " + std::to_string(i) + " of " +
+                               std::to_string(count) + " atom lines of timestep " +
+                               std::to_string(step));
+        }
+        const auto fields = detail::split_fields(line);
+        if (fields.size() != columns.width) {
+            throw reader.error("expected " + std::to_string(columns.width) +
+                               " columns as labelled, found " + std::to_string(fields.size()));
+        }
+        Particle p;
+        const auto id = detail::parse_integer(fields[columns.id]);
+        if (!id) {
+            throw reader.error("column 'id' holds '" + std::string(fields[columns.id]) +
+                               "', which is not an integer");
+        }
+        p.id = *id;
+        const std::array<const char*, 3> names{"x", "y", "z"};
+        for (int axis = 0; axis < 3; ++axis) {
+            p.center[axis] = field_number(fields[columns.position[axis]], names[axis], reader);
+        }
+        p.radius = columns.radius >= 0
+                       ? field_number(fields[columns.radius], "radius", reader)
+                       : 0.5 * field_number(fields[columns.diameter], "diameter", reader);
+        validator.check(p, reader);
+        pack.particles.push_back(p);
+    }
+    return pack;
+}
+
+}  // namespace
+
+namespace detail {
+
+Pack read_dump_lines(LineReader& reader) {
+    std::optional<Pack> last;
+    std::string line;
+    while (reader.next(line)) {
+        if (is_blank(line)) {
+            continue;
+        }
+        if (line.rfind("ITEM: TIMESTEP", 0) != 0) {
+            throw reader.error("expected 'ITEM: TIMESTEP', found '" + line + "'");
+        }
+        last = read_snapshot(reader);
+    }
+    if (!last) {
+        throw InputError(reader.source(), reader.line_number(), "empty file: no snapshot");
+    }
+    last->metadata.set("source_format", "dump custom");
+    return std::move(*last);
+}
+
+}  // namespace detail
+
+Pack read_dump_custom(std::istream& in, const std::string& source) {
+    detail::LineReader reader(in, source);
+    return detail::read_dump_lines(reader);
+}
+
+}  // namespace sgmp

@@ -1,0 +1,102 @@
+#include "text_fields.hpp"
+
+#include <charconv>
+
+namespace sgmp::detail {
+
+bool LineReader::next(std::string& line) {
+    if (pushed_) {
+        line = std::move(*pushed_);
+        pushed_.reset();
+        ++line_number_;
+        return true;
+    }
+    if (!std::getline(in_, line)) {
+        if (in_.bad()) {
+            throw InputError(source_, line_number_, "read error");
+        }
+        return false;
+    }
+    if (!line.empty() && line.back() == '\r') {
+        line.pop_back();
+    }
+    ++line_number_;
+    return true;
+}
+
+void LineReader::put_back(std::string line) {
+    pushed_ = std::move(line);
+    --line_number_;
+}
+
+std::vector<std::string_view> split_fields(std::string_view line) {
+    std::vector<std::string_view> fields;
+    std::size_t pos = 0;
+    while (pos < line.size()) {
+        while (pos < line.size() && (line[pos] == ' ' || line[pos] == '\t')) {
+            ++pos;
+        }
+        const std::size_t start = pos;
+        while (pos < line.size() && line[pos] != ' ' && line[pos] != '\t') {
+            ++pos;
+        }
+        if (pos > start) {
+            fields.push_back(line.substr(start, pos - start));
+        }
+    }
+    return fields;
+}
+
+std::optional<double> parse_double(std::string_view field) {
+    if (!field.empty() && field.front() == '+') {
+        field.remove_prefix(1);
+    }
+    double value = 0.0;
+    const auto* end = field.data() + field.size();
+    const auto result = std::from_chars(field.data(), end, value);
+    if (result.ec != std::errc() || result.ptr != end || field.empty()) {
+        return std::nullopt;
+    }
+    return value;
+}
+
+std::optional<std::int64_t> parse_integer(std::string_view field) {
+    if (!field.empty() && field.front() == '+') {
+        field.remove_prefix(1);
+    }
+    std::int64_t value = 0;
+    const auto* end = field.data() + field.size();
+    const auto result = std::from_chars(field.data(), end, value);
+    if (result.ec != std::errc() || result.ptr != end || field.empty()) {
+        return std::nullopt;
+    }
+    return value;
+}
+
+bool is_blank(std::string_view line) {
+    return line.find_first_not_of(" \t") == std::string_view::npos;
+}
+
+}  // namespace sgmp::detail
+
+#include <cmath>
+
+namespace sgmp::detail {
+
+void ParticleValidator::check(const Particle& particle, const LineReader& reader) {
+    if (!particle.center.allFinite()) {
+        throw reader.error("particle " + std::to_string(particle.id) +
+                           " has a coordinate that is not finite");
+    }
+    if (!std::isfinite(particle.radius) || particle.radius <= 0.0) {
+        throw reader.error("particle " + std::to_string(particle.id) + " has radius " +
+                           std::to_string(particle.radius) + "; a radius must be finite and > 0");
+    }
+    const auto [it, inserted] = line_of_id_.emplace(particle.id, reader.line_number());
+    if (!inserted) {
+        throw reader.error("id " + std::to_string(particle.id) + " repeats the id of line " +
+                           std::to_string(it->second));
+    }
+}
+
+}  // namespace sgmp::detail

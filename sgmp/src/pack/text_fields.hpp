@@ -1,0 +1,77 @@
+#pragma once
+// Private helpers of the pack readers: numbered lines and strict field parsing.
+
+#include <cstddef>
+#include <cstdint>
+#include <istream>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sgmp/pack/input_error.hpp"
+
+namespace sgmp::detail {
+
+/// Reads lines while counting them, so every error can name source:line.
+class LineReader {
+public:
+    LineReader(std::istream& in, std::string source) : in_(in), source_(std::move(source)) {}
+
+    /// Next line without its terminator (a trailing '\r' is dropped); false at the end.
+    bool next(std::string& line);
+    /// Makes `line` the next one returned again (one level of look-back).
+    void put_back(std::string line);
+    /// Number of the line most recently returned (1-based).
+    [[nodiscard]] std::size_t line_number() const { return line_number_; }
+    [[nodiscard]] const std::string& source() const { return source_; }
+
+    /// An InputError at the current line.
+    [[nodiscard]] InputError error(const std::string& reason) const {
+        return InputError(source_, line_number_, reason);
+    }
+
+private:
+    std::istream& in_;
+    std::string source_;
+    std::size_t line_number_ = 0;
+    std::optional<std::string> pushed_;
+};
+
+/// Whitespace-separated fields of a line.
+std::vector<std::string_view> split_fields(std::string_view line);
+
+/// Strict parses: the whole field must be the number. nullopt when it is not.
+std::optional<double> parse_double(std::string_view field);
+std::optional<std::int64_t> parse_integer(std::string_view field);
+
+/// True when the line has only blanks.
+bool is_blank(std::string_view line);
+
+}  // namespace sgmp::detail
+
+#include <unordered_map>
+
+#include "sgmp/pack/particle.hpp"
+
+namespace sgmp::detail {
+
+/// Checks each particle as it is read: finite centre, finite positive radius, and an id
+/// not seen before. Throws InputError at the reader's current line.
+class ParticleValidator {
+public:
+    void check(const Particle& particle, const LineReader& reader);
+
+private:
+    std::unordered_map<std::int64_t, std::size_t> line_of_id_;
+};
+
+}  // namespace sgmp::detail
+
+#include "sgmp/pack/pack.hpp"
+
+namespace sgmp::detail {
+/// Format readers on an already-open line reader (used after format detection).
+Pack read_xyz_lines(LineReader& reader);
+Pack read_dump_lines(LineReader& reader);
+}  // namespace sgmp::detail

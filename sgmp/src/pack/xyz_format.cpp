@@ -1,0 +1,243 @@
+#include "sgmp/pack/xyz_format.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "text_fields.hpp"
+
+namespace sgmp {
+namespace {
+
+constexpr std::string_view kProperties = "id:I:1:pos:R:3:radius:R:1:color:I:1";
+
+bool needs_quotes(const std::string& value) {
+    return value.empty() || value.find_first_of(" \t=") != std::string::npos;
+}
+
+void check_value(const std::string& key, const std::string& value) {
+    if (value.find_first_of("\"\n\r") != std::string::npos) {
+        throw std::invalid_argument("metadata value of '" + key +
+                                    "' contains a quote or line break, which XYZ cannot hold");
+    }
+}
+
+/// key=value pairs of the comment line; values may be double-quoted.
+std::vector<std::pair<std::string, std::string>> parse_comment(const std::string& line,
+                                                               const detail::LineReader& reader) {
+    std::vector<std::pair<std::string, std::string>> pairs;
+    std::size_t pos = 0;
+    while (true) {
+        pos = line.find_first_not_of(" \t", pos);
+        if (pos == std::string::npos) {
+            break;
+        }
+        const std::size_t eq = line.find('=', pos);
+        const std::size_t space = line.find_first_of(" \t", pos);
+        if (eq == std::string::npos || (space != std::string::npos && space < eq)) {
+            const std::string word = line.substr(pos, space == std::string::npos ? std::string::npos
+                                                                                 : space - pos);
+            throw reader.error("expected key=value in the header, found '" + word + "'");
+        }
+        std::string key = line.substr(pos, eq - pos);
+        std::string value;
+        pos = eq + 1;
+        if (pos < line.size() && line[pos] == '"') {
+            const std::size_t close = line.find('"', pos + 1);
+            if (close == std::string::npos) {
+                throw reader.error("unterminated quote in the value of '" + key + "'");
+            }
+            value = line.substr(pos + 1, close - pos - 1);
+            pos = close + 1;
+        } else {
+            const std::size_t end = line.find_first_of(" \t", pos);
+            value = line.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
+            pos = end == std::string::npos ? line.size() : end;
+        }
+        pairs.emplace_back(std::move(key), std::move(value));
+    }
+    return pairs;
+}
+
+/// Column positions of the fields we read, found from the Properties descriptor.
+struct Columns {
+    int id = -1;
+    int x = -1;
+    int radius = -1;
+    int diameter = -1;
+    int color = -1;
+    int width = 0;
+};
+
+Columns parse_properties(const std::string& descriptor, const detail::LineReader& reader) {
+    std::vector<std::string> parts;
+    std::size_t pos = 0;
+    while (pos <= descriptor.size()) {
+        const std::size_t colon = descriptor.find(':', pos);
+        parts.push_back(descriptor.substr(pos, colon == std::string::npos ? std::string::npos
+                                                                           : colon - pos));
+        if (colon == std::string::npos) {
+            break;
+        }
+        pos = colon + 1;
+    }
+    if (parts.size() % 3 != 0) {
+        throw reader.error("Properties='" + descriptor + "' is not a list of name:type:count");
+    }
+    Columns columns;
+    for (std::size_t i = 0; i < parts.size(); i += 3) {
+        const std::string& name = parts[i];
+        const auto count = detail::parse_integer(parts[i + 2]);
+        if (!count || *count < 1) {
+            throw reader.error("Properties entry '" + name + "' has count '" + parts[i + 2] +
+                               "'; a count must be a positive integer");
+        }
+        const auto expect = [&](std::int64_t wanted) {
+            if (*count != wanted) {
+                throw reader.error("Properties entry '" + name + "' must have " +
+                                   std::to_string(wanted) + " column(s)");
+            }
+        };
+        if (name == "id") {
+            expect(1);
+            columns.id = columns.width;
+        } else if (name == "pos") {
+            expect(3);
+            columns.x = columns.width;
+        } else if (name == "radius") {
+            expect(1);
+            columns.radius = columns.width;
+        } else if (name == "diameter") {
+            expect(1);
+            columns.diameter = columns.width;
+        } else if (name == "color") {
+            expect(1);
+            columns.color = columns.width;
+        }
+        columns.width += static_cast<int>(*count);
+    }
+    if (columns.x < 0) {
+        throw reader.error("Properties lacks the 'pos' column");
+    }
+    if (columns.radius < 0 && columns.diameter < 0) {
+        throw reader.error("Properties lacks a 'radius' or 'diameter' column");
+    }
+    return columns;
+}
+
+double number_field(std::string_view field, const char* what, const detail::LineReader& reader) {
+    const auto value = detail::parse_double(field);
+    if (!value) {
+        throw reader.error(std::string(what) + " '" + std::string(field) + "' is not a number");
+    }
+    return *value;
+}
+
+std::int64_t integer_field(std::string_view field, const char* what,
+                           const detail::LineReader& reader) {
+    const auto value = detail::parse_integer(field);
+    if (!value) {
+        throw reader.error(std::string(what) + " '" + std::string(field) + "' is not an integer");
+    }
+    return *value;
+}
+
+Particle parse_particle(const std::string& line, const Columns& columns, std::int64_t index,
+                        const detail::LineReader& reader) {
+    const auto fields = detail::split_fields(line);
+    if (static_cast<int>(fields.size()) != columns.width) {
+        throw reader.error("expected " + std::to_string(columns.width) + " columns, found " +
+                           std::to_string(fields.size()));
+    }
+    Particle particle;
+    particle.id = columns.id >= 0 ? integer_field(fields[columns.id], "id", reader) : index + 1;
+    for (int k = 0; k < 3; ++k) {
+        particle.center[k] = number_field(fields[columns.x + k], "coordinate", reader);
+    }
+    particle.radius = columns.radius >= 0
+                          ? number_field(fields[columns.radius], "radius", reader)
+                          : 0.5 * number_field(fields[columns.diameter], "diameter", reader);
+    if (columns.color >= 0) {
+        particle.color = static_cast<int>(integer_field(fields[columns.color], "color", reader));
+    }
+    return particle;
+}
+
+}  // namespace
+
+void write_xyz(std::ostream& out, const Pack& pack) {
+    out << pack.particles.size() << '\n';
+    out << "Properties=" << kProperties << " pbc=\"F F F\"";
+    for (const auto& [key, value] : pack.metadata.entries()) {
+        if (key == "Properties" || key == "pbc") {
+            continue;
+        }
+        check_value(key, value);
+        out << ' ' << key << '=';
+        if (needs_quotes(value)) {
+            out << '"' << value << '"';
+        } else {
+            out << value;
+        }
+    }
+    out << '\n';
+    for (const auto& p : pack.particles) {
+        out << p.id << ' ' << format_number(p.center.x()) << ' ' << format_number(p.center.y())
+            << ' ' << format_number(p.center.z()) << ' ' << format_number(p.radius) << ' '
+            << p.color << '\n';
+    }
+}
+
+Pack read_xyz(std::istream& in, const std::string& source) {
+    detail::LineReader reader(in, source);
+    return detail::read_xyz_lines(reader);
+}
+
+namespace detail {
+
+Pack read_xyz_lines(LineReader& reader) {
+    std::string line;
+    if (!reader.next(line) || is_blank(line)) {
+        throw InputError(reader.source(), reader.line_number(),
+                         "empty file: expected the particle count on line 1");
+    }
+    const auto fields = split_fields(line);
+    const auto count = fields.size() == 1 ? parse_integer(fields[0]) : std::nullopt;
+    if (!count || *count < 0) {
+        throw reader.error("expected the particle count, found '" + line + "'");
+    }
+    if (!reader.next(line)) {
+        throw reader.error("file ends before the header line");
+    }
+    Pack pack;
+    std::optional<Columns> columns;
+    for (auto& [key, value] : parse_comment(line, reader)) {
+        if (key == "Properties") {
+            columns = parse_properties(value, reader);
+        } else if (key != "pbc") {
+            pack.metadata.set(key, std::move(value));
+        }
+    }
+    if (!columns) {
+        throw reader.error("header lacks Properties=...");
+    }
+    pack.particles.reserve(static_cast<std::size_t>(*count));
+    ParticleValidator validator;
+    for (std::int64_t i = 0; i < *count; ++i) {
+        if (!reader.next(line)) {
+            throw reader.error("file ends after " + std::to_string(i) + " of " +
+                               std::to_string(*count) + " particle lines");
+        }
+        pack.particles.push_back(parse_particle(line, *columns, i, reader));
+        validator.check(pack.particles.back(), reader);
+    }
+    while (reader.next(line)) {
+        if (!is_blank(line)) {
+            throw reader.error("more particle lines than the count " + std::to_string(*count) +
+                               " on line 1 (one frame per file)");
+        }
+    }
+    return pack;
+}
+
+}  // namespace detail
+}  // namespace sgmp

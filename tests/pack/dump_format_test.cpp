@@ -1,1 +1,87 @@
+#include "sgmp/pack/dump_format.hpp"
+
 #include <boost/test/unit_test.hpp>
+#include <sstream>
+
+#include "test_support.hpp"
+
+using namespace sgmp;
+using sgmp::testing::input_error_of;
+
+namespace {
+
+const std::string kSnapshot0 =
+    "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS ff ff ff\n"
+    "-0.625 0.625\n-0.625 5\n-0.625 0.625\n"
+    "ITEM: ATOMS type radius z y x id vx\n"
+    "1 0.05 0.1 0.2 0.3 7 0\n1 0.05 0.4 0.5 0.6 8 0\n";
+const std::string kSnapshot1 =
+    "ITEM: TIMESTEP\n1000\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS ff ff ff\n"
+    "-0.625 0.625\n-0.625 5\n-0.625 0.625\n"
+    "ITEM: ATOMS id type x y z radius\n"
+    "7 1 0.3 -0.575 0.1 0.05\n8 1 0.6 -0.475 0.4 0.05\n";
+
+std::string read_error(const std::string& text) {
+    return input_error_of([&] {
+        std::istringstream in(text);
+        read_dump_custom(in, "pour.dump");
+    });
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(dump_format)
+
+BOOST_AUTO_TEST_CASE(columns_are_found_by_label) {
+    std::istringstream in(kSnapshot0);
+    const Pack pack = read_dump_custom(in, "pour.dump");
+    BOOST_TEST_REQUIRE(pack.particles.size() == 2u);
+    BOOST_TEST(pack.particles[0].id == 7);
+    BOOST_TEST(pack.particles[0].center.x() == 0.3);
+    BOOST_TEST(pack.particles[0].center.y() == 0.2);
+    BOOST_TEST(pack.particles[0].center.z() == 0.1);
+    BOOST_TEST(pack.particles[0].radius == 0.05);
+    BOOST_TEST(*pack.metadata.get("timestep") == "0");
+    BOOST_TEST(*pack.metadata.get("dump_box") == "-0.625 0.625 -0.625 5 -0.625 0.625");
+}
+
+BOOST_AUTO_TEST_CASE(the_last_snapshot_is_returned) {
+    std::istringstream in(kSnapshot0 + kSnapshot1);
+    const Pack pack = read_dump_custom(in, "pour.dump");
+    BOOST_TEST(*pack.metadata.get("timestep") == "1000");
+    BOOST_TEST(pack.particles[1].center.y() == -0.475);
+}
+
+BOOST_AUTO_TEST_CASE(malformed_dumps_name_the_line_and_the_reason) {
+    BOOST_TEST(read_error("") == "pour.dump: empty file: no snapshot");
+    BOOST_TEST(read_error("hello\n") == "pour.dump:1: expected 'ITEM: TIMESTEP', found 'hello'");
+    std::string missing_y = kSnapshot1;
+    missing_y.replace(missing_y.find(" y "), 3, " q ");
+    BOOST_TEST(read_error(missing_y) ==
+               "pour.dump:9: ATOMS section lacks the 'y' column (scaled coordinates are not "
+               "accepted)");
+    std::string no_radius = kSnapshot1;
+    no_radius.replace(no_radius.find("radius"), 6, "mass");
+    BOOST_TEST(read_error(no_radius) ==
+               "pour.dump:9: ATOMS section lacks a 'radius' or 'diameter' column");
+    std::string bad_number = kSnapshot1;
+    bad_number.replace(bad_number.find("-0.475"), 6, "-0.4x5");
+    BOOST_TEST(read_error(bad_number) ==
+               "pour.dump:11: column 'y' holds '-0.4x5', which is not a number");
+    const std::string truncated = kSnapshot1.substr(0, kSnapshot1.rfind("8 1"));
+    BOOST_TEST(read_error(truncated) ==
+               "pour.dump:10: file ends after 1 of 2 atom lines of timestep 1000");
+    std::string short_line = kSnapshot1;
+    short_line.replace(short_line.find(" 0.05\n8"), 5, "");
+    BOOST_TEST(read_error(short_line) == "pour.dump:10: expected 6 columns as labelled, found 5");
+    std::string nan_value = kSnapshot1;
+    nan_value.replace(nan_value.find("0.3 "), 3, "nan");
+    BOOST_TEST(read_error(nan_value) ==
+               "pour.dump:10: particle 7 has a coordinate that is not finite");
+    std::string bad_count = kSnapshot1;
+    bad_count.replace(bad_count.find("\n2\n"), 3, "\n-2\n");
+    BOOST_TEST(read_error(bad_count) ==
+               "pour.dump:4: the number of atoms must be a non-negative integer, found '-2'");
+}
+
+BOOST_AUTO_TEST_SUITE_END()

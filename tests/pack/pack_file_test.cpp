@@ -1,1 +1,120 @@
+#include "sgmp/pack/pack_file.hpp"
+
 #include <boost/test/unit_test.hpp>
+#include <stdexcept>
+
+#include "sgmp/pack/atomic_file.hpp"
+#include "test_support.hpp"
+
+using namespace sgmp;
+using namespace sgmp::testing;
+namespace fs = std::filesystem;
+
+namespace {
+
+Pack small_pack() {
+    Pack pack;
+    pack.metadata.set("generator", "sgmp");
+    pack.metadata.set_integer("seed", 3);
+    pack.particles = {Particle{1, Vec3(0.1, -0.5, 0.2), 0.05, 3},
+                      Particle{2, Vec3(-0.1, -0.5, 0.2), 0.05, 4}};
+    return pack;
+}
+
+std::size_t entries_in(const fs::path& directory) {
+    return static_cast<std::size_t>(
+        std::distance(fs::directory_iterator(directory), fs::directory_iterator()));
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(pack_file)
+
+BOOST_AUTO_TEST_CASE(plain_and_gzip_files_read_back_the_same) {
+    ScratchDirectory scratch("pack_file_round_trip");
+    const Pack pack = small_pack();
+    write_pack_file(scratch.path() / "a.xyz", pack, false);
+    write_pack_file(scratch.path() / "a.xyz.gz", pack, false);
+    const std::string gz = read_bytes(scratch.path() / "a.xyz.gz");
+    BOOST_TEST_REQUIRE(gz.size() > 2u);
+    BOOST_TEST(static_cast<unsigned char>(gz[0]) == 0x1fu);
+    const Pack plain = read_pack_file(scratch.path() / "a.xyz");
+    const Pack compressed = read_pack_file(scratch.path() / "a.xyz.gz");
+    BOOST_TEST(plain.particles.size() == 2u);
+    BOOST_TEST(compressed.particles[1].center.x() == -0.1);
+    BOOST_TEST(compressed.metadata.entries() == plain.metadata.entries());
+    // Compression is deterministic: the same pack gives the same bytes.
+    write_pack_file(scratch.path() / "b.xyz.gz", pack, false);
+    BOOST_TEST(read_bytes(scratch.path() / "b.xyz.gz") == gz);
+}
+
+BOOST_AUTO_TEST_CASE(dump_files_are_detected) {
+    ScratchDirectory scratch("pack_file_dump");
+    write_text(scratch.path() / "pour.dump",
+               "\nITEM: TIMESTEP\n5\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS ff ff ff\n"
+               "0 1\n0 1\n0 1\nITEM: ATOMS id x y z diameter\n1 0.5 0.5 0.5 0.2\n");
+    const Pack pack = read_pack_file(scratch.path() / "pour.dump");
+    BOOST_TEST(pack.particles.at(0).radius == 0.1);
+}
+
+BOOST_AUTO_TEST_CASE(unreadable_and_corrupt_files) {
+    ScratchDirectory scratch("pack_file_errors");
+    const fs::path missing = scratch.path() / "missing.xyz";
+    BOOST_TEST(input_error_of([&] { read_pack_file(missing); }) ==
+               missing.string() + ": cannot open for reading");
+    const fs::path empty = scratch.path() / "empty.xyz";
+    write_text(empty, "");
+    BOOST_TEST(input_error_of([&] { read_pack_file(empty); }) == empty.string() + ": empty file");
+    const fs::path corrupt = scratch.path() / "corrupt.xyz.gz";
+    write_text(corrupt, std::string("\x1f\x8b\x08\x00garbage", 11));
+    BOOST_TEST(input_error_of([&] {
+                   read_pack_file(corrupt);
+               }).find("corrupt or truncated gzip data") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(existing_files_are_kept_without_overwrite) {
+    ScratchDirectory scratch("pack_file_keep");
+    const fs::path target = scratch.path() / "keep.xyz";
+    write_text(target, "precious");
+    BOOST_CHECK_THROW(write_pack_file(target, small_pack(), false), std::runtime_error);
+    BOOST_TEST(read_bytes(target) == "precious");
+    write_pack_file(target, small_pack(), true);
+    BOOST_TEST(read_pack_file(target).particles.size() == 2u);
+    BOOST_TEST(entries_in(scratch.path()) == 1u);
+}
+
+BOOST_AUTO_TEST_CASE(a_failed_write_leaves_nothing_behind) {
+    ScratchDirectory scratch("pack_file_atomic");
+    const fs::path target = scratch.path() / "half.xyz";
+    BOOST_CHECK_THROW(write_file_atomically(target, false,
+                                            [](std::ostream& out) {
+                                                out << "partial";
+                                                throw std::runtime_error("simulated failure");
+                                            }),
+                      std::runtime_error);
+    BOOST_TEST(entries_in(scratch.path()) == 0u);
+
+    const fs::path report = scratch.path() / "report";
+    BOOST_CHECK_THROW(write_directory_atomically(report, false,
+                                                 [](const fs::path& directory) {
+                                                     write_text(directory / "a.txt", "x");
+                                                     throw std::runtime_error("simulated");
+                                                 }),
+                      std::runtime_error);
+    BOOST_TEST(entries_in(scratch.path()) == 0u);
+    write_directory_atomically(
+        report, false, [](const fs::path& directory) { write_text(directory / "a.txt", "x"); });
+    BOOST_TEST(read_bytes(report / "a.txt") == "x");
+    BOOST_CHECK_THROW(write_directory_atomically(report, false, [](const fs::path&) {}),
+                      std::runtime_error);
+    BOOST_TEST(fs::exists(report / "a.txt"));
+}
+
+BOOST_AUTO_TEST_CASE(unwritable_targets_are_refused_before_any_work) {
+    ScratchDirectory scratch("pack_file_unwritable");
+    const fs::path blocker = scratch.path() / "file";
+    write_text(blocker, "x");
+    BOOST_CHECK_THROW(check_writable(blocker / "sub" / "pack.xyz", false), std::runtime_error);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

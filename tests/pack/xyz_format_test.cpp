@@ -1,1 +1,103 @@
+#include "sgmp/pack/xyz_format.hpp"
+
 #include <boost/test/unit_test.hpp>
+#include <sstream>
+
+#include "sgmp/pack/random.hpp"
+#include "test_support.hpp"
+
+using namespace sgmp;
+using sgmp::testing::input_error_of;
+
+namespace {
+
+Pack random_pack(std::uint64_t seed, int count) {
+    Random random(seed);
+    Pack pack;
+    pack.metadata.set("generator", "sgmp");
+    pack.metadata.set_integer("seed", static_cast<long long>(seed));
+    pack.metadata.set("container", "-0.625 0.625 -0.625 0.625 -0.625");
+    pack.metadata.set_number("diameter", 0.1533);
+    for (int i = 0; i < count; ++i) {
+        pack.particles.push_back(Particle{
+            i + 1, Vec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1)),
+            random.uniform(0.01, 0.1), static_cast<int>(i % 10)});
+    }
+    return pack;
+}
+
+std::string read_error(const std::string& text) {
+    return input_error_of([&] {
+        std::istringstream in(text);
+        read_xyz(in, "pack.xyz");
+    });
+}
+
+const std::string kHeader = "Properties=id:I:1:pos:R:3:radius:R:1:color:I:1 pbc=\"F F F\"\n";
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(xyz_format)
+
+BOOST_AUTO_TEST_CASE(round_trip_is_bit_identical) {
+    const Pack pack = random_pack(7, 200);
+    std::ostringstream out;
+    write_xyz(out, pack);
+    std::istringstream in(out.str());
+    const Pack back = read_xyz(in, "memory");
+    BOOST_TEST_REQUIRE(back.particles.size() == pack.particles.size());
+    for (std::size_t i = 0; i < pack.particles.size(); ++i) {
+        BOOST_TEST(back.particles[i].id == pack.particles[i].id);
+        BOOST_TEST((back.particles[i].center.array() == pack.particles[i].center.array()).all());
+        BOOST_TEST(back.particles[i].radius == pack.particles[i].radius);
+        BOOST_TEST(back.particles[i].color == pack.particles[i].color);
+    }
+    BOOST_TEST(back.metadata.entries() == pack.metadata.entries());
+    // Writing what was read gives the same bytes.
+    std::ostringstream again;
+    write_xyz(again, back);
+    BOOST_TEST(again.str() == out.str());
+}
+
+BOOST_AUTO_TEST_CASE(quoted_values_and_columns_in_any_order) {
+    const std::string text =
+        "2\nProperties=pos:R:3:species:S:1:diameter:R:1:id:I:1 note=\"two words\" x=1\n"
+        "0 0 0 Fe 0.2 5\n1 1 1 Fe 0.4 9\n";
+    std::istringstream in(text);
+    const Pack pack = read_xyz(in, "ase.xyz");
+    BOOST_TEST(pack.particles.size() == 2u);
+    BOOST_TEST(pack.particles[1].id == 9);
+    BOOST_TEST(pack.particles[1].radius == 0.2);
+    BOOST_TEST(pack.particles[1].color == 0);
+    BOOST_TEST(*pack.metadata.get("note") == "two words");
+}
+
+BOOST_AUTO_TEST_CASE(malformed_files_name_the_line_and_the_reason) {
+    BOOST_TEST(read_error("") == "pack.xyz: empty file: expected the particle count on line 1");
+    BOOST_TEST(read_error("two\n") == "pack.xyz:1: expected the particle count, found 'two'");
+    BOOST_TEST(read_error("1\n") == "pack.xyz:1: file ends before the header line");
+    BOOST_TEST(read_error("1\npbc=\"F F F\"\n0 0 0 0 1 0\n") ==
+               "pack.xyz:2: header lacks Properties=...");
+    BOOST_TEST(read_error("1\nProperties=id:I:1:radius:R:1\n1 0.1\n") ==
+               "pack.xyz:2: Properties lacks the 'pos' column");
+    BOOST_TEST(read_error("2\n" + kHeader + "1 0 0 0 0.1 0\n") ==
+               "pack.xyz:3: file ends after 1 of 2 particle lines");
+    BOOST_TEST(read_error("1\n" + kHeader + "1 0 0 0 0.1 0\n2 0 0 0 0.1 0\n") ==
+               "pack.xyz:4: more particle lines than the count 1 on line 1 (one frame per file)");
+    BOOST_TEST(read_error("1\n" + kHeader + "1 0 zero 0 0.1 0\n") ==
+               "pack.xyz:3: coordinate 'zero' is not a number");
+    BOOST_TEST(read_error("1\n" + kHeader + "1 0 0 0 0.1\n") ==
+               "pack.xyz:3: expected 6 columns, found 5");
+    BOOST_TEST(read_error("1\n" + kHeader + "1 nan 0 0 0.1 0\n") ==
+               "pack.xyz:3: particle 1 has a coordinate that is not finite");
+    BOOST_TEST(read_error("1\n" + kHeader + "1 0 inf 0 0.1 0\n") ==
+               "pack.xyz:3: particle 1 has a coordinate that is not finite");
+    BOOST_TEST(read_error("1\n" + kHeader + "1 0 0 0 -0.1 0\n") ==
+               "pack.xyz:3: particle 1 has radius -0.1; a radius must be finite and > 0");
+    BOOST_TEST(read_error("2\n" + kHeader + "4 0 0 0 0.1 0\n4 1 0 0 0.1 0\n") ==
+               "pack.xyz:4: id 4 repeats the id of line 3");
+    BOOST_TEST(read_error("1\nProperties=id:I:1 \"x\n") ==
+               "pack.xyz:2: expected key=value in the header, found '\"x'");
+}
+
+BOOST_AUTO_TEST_SUITE_END()

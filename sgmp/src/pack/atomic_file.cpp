@@ -21,11 +21,13 @@ std::runtime_error path_error(const fs::path& path, const std::string& reason) {
 
 fs::path sibling_temporary(const fs::path& target, const char* kind) {
     const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-    return parent / ("." + target.filename().string() + "." + kind + "-" +
-                     std::to_string(::getpid()));
+    return parent /
+           ("." + target.filename().string() + "." + kind + "-" + std::to_string(::getpid()));
 }
 
-bool ends_with_gz(const fs::path& path) { return path.extension() == ".gz"; }
+bool ends_with_gz(const fs::path& path) {
+    return path.extension() == ".gz";
+}
 
 /// Moves `from` to `to`. Without `overwrite` this is a hard link plus unlink, which
 /// fails rather than replace a file that appeared in the meantime.

@@ -25,7 +25,8 @@ Container Container::parse(const std::string& text) {
                                     "' must be five numbers: x_min x_max z_min z_max floor");
     }
     if (!(c.x_min < c.x_max) || !(c.z_min < c.z_max)) {
-        throw std::invalid_argument("container '" + text + "' must have x_min < x_max and z_min < z_max");
+        throw std::invalid_argument("container '" + text +
+                                    "' must have x_min < x_max and z_min < z_max");
     }
     return c;
 }

@@ -23,7 +23,9 @@ void Metadata::set(std::string_view key, std::string value) {
     }
 }
 
-void Metadata::set_number(std::string_view key, double value) { set(key, format_number(value)); }
+void Metadata::set_number(std::string_view key, double value) {
+    set(key, format_number(value));
+}
 
 void Metadata::set_integer(std::string_view key, long long value) {
     set(key, std::to_string(value));

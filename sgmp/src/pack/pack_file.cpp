@@ -53,11 +53,19 @@ Pack read_pack_file(const std::filesystem::path& path) {
             boost::iostreams::filtering_istream decompressed;
             decompressed.push(boost::iostreams::gzip_decompressor());
             decompressed.push(file);
-            return read_detected(decompressed, source);
+            try {
+                return read_detected(decompressed, source);
+            } catch (const InputError&) {
+                // Decompression failures surface as a bad stream, not as gzip_error.
+                if (decompressed.bad()) {
+                    throw InputError(source, 0, "corrupt or truncated gzip data");
+                }
+                throw;
+            }
         }
         return read_detected(file, source);
     } catch (const boost::iostreams::gzip_error& error) {
-        throw InputError(source, 0, std::string("corrupt gzip data: ") + error.what());
+        throw InputError(source, 0, std::string("corrupt or truncated gzip data: ") + error.what());
     }
 }
 

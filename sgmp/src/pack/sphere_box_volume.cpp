@@ -51,9 +51,9 @@ double quadrant_area(double rho, double a, double b) {
 
 /// Position where the box clips the sphere along one axis, relative to the centre.
 struct AxisCut {
-    double lo;  // lower bound relative to the centre, clamped to [-r, r]
-    double hi;  // upper bound relative to the centre, clamped to [-r, r]
-    bool clips; // true when a bound lies strictly inside (-r, r)
+    double lo;   // lower bound relative to the centre, clamped to [-r, r]
+    double hi;   // upper bound relative to the centre, clamped to [-r, r]
+    bool clips;  // true when a bound lies strictly inside (-r, r)
 };
 
 AxisCut cut_axis(double center, double radius, double lo, double hi) {
@@ -65,7 +65,9 @@ AxisCut cut_axis(double center, double radius, double lo, double hi) {
 
 /// ∫ π(r² − u²) du over [u0, u1]: the sphere between two parallel planes.
 double slab_volume(double radius, double u0, double u1) {
-    const auto primitive = [radius](double u) { return kPi * (radius * radius * u - u * u * u / 3.0); };
+    const auto primitive = [radius](double u) {
+        return kPi * (radius * radius * u - u * u * u / 3.0);
+    };
     return primitive(u1) - primitive(u0);
 }
 

@@ -81,6 +81,8 @@ bool is_blank(std::string_view line) {
 
 #include <cmath>
 
+#include "sgmp/pack/metadata.hpp"
+
 namespace sgmp::detail {
 
 void ParticleValidator::check(const Particle& particle, const LineReader& reader) {
@@ -90,7 +92,7 @@ void ParticleValidator::check(const Particle& particle, const LineReader& reader
     }
     if (!std::isfinite(particle.radius) || particle.radius <= 0.0) {
         throw reader.error("particle " + std::to_string(particle.id) + " has radius " +
-                           std::to_string(particle.radius) + "; a radius must be finite and > 0");
+                           format_number(particle.radius) + "; a radius must be finite and > 0");
     }
     const auto [it, inserted] = line_of_id_.emplace(particle.id, reader.line_number());
     if (!inserted) {

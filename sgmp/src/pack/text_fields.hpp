@@ -15,7 +15,7 @@ namespace sgmp::detail {
 
 /// Reads lines while counting them, so every error can name source:line.
 class LineReader {
-public:
+  public:
     LineReader(std::istream& in, std::string source) : in_(in), source_(std::move(source)) {}
 
     /// Next line without its terminator (a trailing '\r' is dropped); false at the end.
@@ -31,7 +31,7 @@ public:
         return InputError(source_, line_number_, reason);
     }
 
-private:
+  private:
     std::istream& in_;
     std::string source_;
     std::size_t line_number_ = 0;
@@ -59,10 +59,10 @@ namespace sgmp::detail {
 /// Checks each particle as it is read: finite centre, finite positive radius, and an id
 /// not seen before. Throws InputError at the reader's current line.
 class ParticleValidator {
-public:
+  public:
     void check(const Particle& particle, const LineReader& reader);
 
-private:
+  private:
     std::unordered_map<std::int64_t, std::size_t> line_of_id_;
 };
 

@@ -34,8 +34,8 @@ std::vector<std::pair<std::string, std::string>> parse_comment(const std::string
         const std::size_t eq = line.find('=', pos);
         const std::size_t space = line.find_first_of(" \t", pos);
         if (eq == std::string::npos || (space != std::string::npos && space < eq)) {
-            const std::string word = line.substr(pos, space == std::string::npos ? std::string::npos
-                                                                                 : space - pos);
+            const std::string word =
+                line.substr(pos, space == std::string::npos ? std::string::npos : space - pos);
             throw reader.error("expected key=value in the header, found '" + word + "'");
         }
         std::string key = line.substr(pos, eq - pos);
@@ -73,8 +73,8 @@ Columns parse_properties(const std::string& descriptor, const detail::LineReader
     std::size_t pos = 0;
     while (pos <= descriptor.size()) {
         const std::size_t colon = descriptor.find(':', pos);
-        parts.push_back(descriptor.substr(pos, colon == std::string::npos ? std::string::npos
-                                                                           : colon - pos));
+        parts.push_back(
+            descriptor.substr(pos, colon == std::string::npos ? std::string::npos : colon - pos));
         if (colon == std::string::npos) {
             break;
         }

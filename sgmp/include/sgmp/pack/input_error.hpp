@@ -9,14 +9,14 @@
 namespace sgmp {
 
 class InputError : public std::runtime_error {
-public:
+  public:
     /// `line` is 1-based; 0 means the error concerns the file as a whole.
     InputError(const std::string& source, std::size_t line, const std::string& reason);
 
     [[nodiscard]] const std::string& source() const { return source_; }
     [[nodiscard]] std::size_t line() const { return line_; }
 
-private:
+  private:
     std::string source_;
     std::size_t line_;
 };

@@ -13,7 +13,7 @@ namespace sgmp {
 /// Ordered key/value record. Keys keep the order in which they were first set, so the
 /// same run writes the same header bytes. Keys are identifiers ([A-Za-z_][A-Za-z0-9_-]*).
 class Metadata {
-public:
+  public:
     using Entry = std::pair<std::string, std::string>;
 
     /// Sets `key` to `value`, keeping the key's position if it already exists.
@@ -29,7 +29,7 @@ public:
     [[nodiscard]] bool contains(std::string_view key) const { return get(key).has_value(); }
     [[nodiscard]] const std::vector<Entry>& entries() const { return entries_; }
 
-private:
+  private:
     std::vector<Entry> entries_;
 };
 

@@ -10,7 +10,7 @@
 namespace sgmp {
 
 class Random {
-public:
+  public:
     explicit Random(std::uint64_t seed) : engine_(seed) {}
 
     /// Uniform in [0, 1), from the top 53 bits of one draw.
@@ -21,7 +21,7 @@ public:
     std::uint64_t below(std::uint64_t n);
     std::uint64_t raw() { return engine_(); }
 
-private:
+  private:
     std::mt19937_64 engine_;
 };
 

@@ -1,0 +1,55 @@
+#pragma once
+// Helpers shared by the pack tests: scratch directories and reading files back.
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "sgmp/pack/input_error.hpp"
+
+namespace sgmp::testing {
+
+/// A fresh directory under the build tree, removed at the end of the test.
+class ScratchDirectory {
+  public:
+    explicit ScratchDirectory(const std::string& name)
+        : path_(std::filesystem::path(SGMP_BINARY_DIR) / "test-scratch" / name) {
+        std::filesystem::remove_all(path_);
+        std::filesystem::create_directories(path_);
+    }
+    ~ScratchDirectory() {
+        std::error_code ignored;
+        std::filesystem::remove_all(path_, ignored);
+    }
+    ScratchDirectory(const ScratchDirectory&) = delete;
+    ScratchDirectory& operator=(const ScratchDirectory&) = delete;
+    [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+
+  private:
+    std::filesystem::path path_;
+};
+
+inline std::string read_bytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream content;
+    content << in.rdbuf();
+    return content.str();
+}
+
+inline void write_text(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+/// The message of the InputError that `read` throws; empty if it throws none.
+template <class Read>
+std::string input_error_of(Read&& read) {
+    try {
+        read();
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    return {};
+}
+
+}  // namespace sgmp::testing

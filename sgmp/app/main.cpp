@@ -1,0 +1,260 @@
+// sgmp — packs spheres with the Spin Gap Move Protocol.
+//   sgmp pack    --count N --arrangement A --seed S --out FILE [protocol options] [--force]
+//   sgmp arrange --count N --arrangement A --seed S --out FILE [--force]
+// A thin front end: parses options, calls the engine, writes the pack atomically.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include "sgmp/engine/make_pack.hpp"
+#include "sgmp/engine/pack_checks.hpp"
+#include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/pack_file.hpp"
+#include "sgmp/pack/sphere_box_volume.hpp"
+#include "sgmp/pack/version.hpp"
+
+namespace {
+
+using namespace sgmp;
+using namespace sgmp::engine;
+
+/// Raw option values as typed; turned into a PackRequest (with one-line errors) later.
+struct Options {
+    long long count = 0;
+    std::string arrangement;
+    std::uint64_t seed = 1;
+    std::string out;
+    bool force = false;
+    double phi_target = kThesisPhiTarget;
+    double circle_factor = 50.0;
+    int sweep_positions = 120;
+    std::string sweep_stages;
+    int lower_neighbours = 10;
+    std::string gap = "largest";
+    std::string fall = "exact";
+    double fall_step = 0.001;
+    std::string contact = "none";
+    double momentum = 0.0;
+    std::string walls = "fix";
+    long max_moves = 100000;
+};
+
+struct UsageError {
+    std::string message;
+};
+
+void add_common(CLI::App& app, Options& o) {
+    app.add_option("--count", o.count, "number of particles N (1 to 10000000)")->required();
+    app.add_option("--arrangement", o.arrangement,
+                   "starting arrangement: single-column, small-dense, large-dense, loose-random")
+        ->required();
+    app.add_option("--seed", o.seed,
+                   "random seed (colours, loose-random positions, random choices)")
+        ->capture_default_str();
+    app.add_option("--out", o.out, "output pack file (extended XYZ; .gz compresses)")->required();
+    app.add_flag("--force", o.force, "overwrite an existing output file");
+    app.add_option("--phi-target", o.phi_target,
+                   "target packing fraction phi* in (0, 0.7405]; sets the diameter by "
+                   "(N/3)(pi/6)d^3 = phi*")
+        ->capture_default_str();
+}
+
+void add_protocol(CLI::App& app, Options& o) {
+    app.add_option("--circle-factor", o.circle_factor,
+                   "circle factor F > 1: sweep radius = d/F (length units of the control volume)")
+        ->capture_default_str();
+    app.add_option("--sweep-positions", o.sweep_positions,
+                   "positions tested on the sweep circle (>= 3; 120 = every 3 degrees)")
+        ->capture_default_str();
+    app.add_option("--sweep-stages", o.sweep_stages,
+                   "multi-stage sweep, increasing counts such as 8,120,720: a stage is tried "
+                   "only when the previous one found no free position (overrides "
+                   "--sweep-positions)");
+    app.add_option("--lower-neighbours", o.lower_neighbours,
+                   "size of the lower columnar neighbour list (>= 1; recorded, does not change "
+                   "results: the fall scans the whole column below)")
+        ->capture_default_str();
+    app.add_option("--gap", o.gap, "free arc to move toward: largest | random")
+        ->capture_default_str();
+    app.add_option("--fall", o.fall,
+                   "fall mode: exact (jump to the first contact; ends touching) | step (thesis "
+                   "steps of --fall-step; ends less than one step above the contact)")
+        ->capture_default_str();
+    app.add_option("--fall-step", o.fall_step,
+                   "downward increment of the step fall, 0 < step < d (control-volume units)")
+        ->capture_default_str();
+    app.add_option("--contact", o.contact,
+                   "contact model for resting particles: none | settle (drop onto the support "
+                   "and roll down over it to a second contact)")
+        ->capture_default_str();
+    app.add_option("--momentum", o.momentum,
+                   "momentum weight m in [0, 1): move toward (1-m)*bisector + m*previous move")
+        ->capture_default_str();
+    app.add_option("--walls", o.walls,
+                   "side walls: fix (a particle a move brings to a wall stops there, thesis) | "
+                   "block (walls are obstacles like particles)")
+        ->capture_default_str();
+    app.add_option("--max-moves", o.max_moves,
+                   "bound on sweep-and-move cycles per particle (>= 1); a particle reaching it "
+                   "rests where its last fall left it")
+        ->capture_default_str();
+}
+
+template <class T>
+T parse_choice(std::optional<T> parsed, const std::string& option, const std::string& value,
+               const std::string& choices) {
+    if (!parsed) {
+        throw UsageError{"--" + option + " " + value + ": must be one of " + choices};
+    }
+    return *parsed;
+}
+
+PackRequest to_request(const Options& o) {
+    if (o.count < 1 || o.count > static_cast<long long>(kMaxCount)) {
+        throw UsageError{"--count " + std::to_string(o.count) + ": must be between 1 and " +
+                         std::to_string(kMaxCount)};
+    }
+    PackRequest request;
+    request.count = static_cast<std::size_t>(o.count);
+    request.arrangement = parse_choice(parse_arrangement(o.arrangement), "arrangement",
+                                       o.arrangement, std::string(arrangement_names()));
+    request.seed = o.seed;
+    request.phi_target = o.phi_target;
+    ProtocolParams& p = request.protocol;
+    p.circle_factor = o.circle_factor;
+    p.sweep_stages = {o.sweep_positions};
+    if (!o.sweep_stages.empty()) {
+        const auto stages = parse_stages(o.sweep_stages);
+        if (!stages) {
+            throw UsageError{"--sweep-stages " + o.sweep_stages +
+                             ": must be comma-separated whole numbers, e.g. 8,120,720"};
+        }
+        p.sweep_stages = *stages;
+    }
+    p.lower_neighbours = o.lower_neighbours;
+    p.gap = parse_choice(parse_gap_rule(o.gap), "gap", o.gap, "largest, random");
+    p.fall = parse_choice(parse_fall_mode(o.fall), "fall", o.fall, "exact, step");
+    p.fall_step = o.fall_step;
+    p.contact = parse_choice(parse_contact_model(o.contact), "contact", o.contact, "none, settle");
+    p.momentum = o.momentum;
+    p.walls = parse_choice(parse_wall_rule(o.walls), "walls", o.walls, "fix, block");
+    p.max_moves = o.max_moves;
+    if (const auto error = validate(request)) {
+        throw UsageError{*error};
+    }
+    return request;
+}
+
+/// φ of the control volume: Σ exact sphere volume inside it / its volume.
+double control_volume_fraction(const Pack& pack) {
+    const Box box = control_volume();
+    double volume = 0.0;
+    for (const Particle& p : pack.particles) {
+        volume += sphere_box_volume(p.center, p.radius, box);
+    }
+    return volume / box.volume();
+}
+
+/// Progress on stderr once a run passes one second, only when stderr is a terminal.
+class Progress {
+  public:
+    Progress() : tty_(isatty(STDERR_FILENO) == 1), start_(Clock::now()) {}
+    void operator()(std::size_t done, std::size_t total) {
+        if (!tty_ || seconds() < 1.0) {
+            return;
+        }
+        std::fprintf(stderr, "\rsgmp: %zu / %zu particles dropped (%.0f s)", done, total,
+                     seconds());
+        std::fflush(stderr);
+        shown_ = true;
+    }
+    void finish() const {
+        if (shown_) {
+            std::fprintf(stderr, "\n");
+        }
+    }
+    [[nodiscard]] double seconds() const {
+        return std::chrono::duration<double>(Clock::now() - start_).count();
+    }
+
+  private:
+    using Clock = std::chrono::steady_clock;
+    bool tty_;
+    bool shown_ = false;
+    Clock::time_point start_;
+};
+
+int run_pack(const Options& o) {
+    const PackRequest request = to_request(o);
+    check_writable(o.out, o.force);
+    Progress progress;
+    const Pack pack =
+        make_pack(request, [&](std::size_t done, std::size_t total) { progress(done, total); });
+    const double seconds = progress.seconds();
+    progress.finish();
+    write_pack_file(o.out, pack, o.force);
+    const double d = *pack.metadata.get_number("diameter");
+    const PackCheck check = check_pack(pack.particles, Container{}, 1e-9 * d, 0.0);
+    std::printf(
+        "sgmp: packed %zu particles, %s, d=%.6g, %.3f s, phi(control volume)=%.4f, "
+        "overlaps=%zu -> %s\n",
+        pack.particles.size(), std::string(to_string(request.arrangement)).c_str(), d, seconds,
+        control_volume_fraction(pack), check.overlaps, o.out.c_str());
+    return 0;
+}
+
+int run_arrange(const Options& o) {
+    const PackRequest request = to_request(o);
+    check_writable(o.out, o.force);
+    const Pack pack = make_start_pack(request);
+    write_pack_file(o.out, pack, o.force);
+    std::printf("sgmp: arranged %zu particles, %s, d=%.6g, start height %.4f -> %s\n",
+                pack.particles.size(), std::string(to_string(request.arrangement)).c_str(),
+                *pack.metadata.get_number("diameter"), *pack.metadata.get_number("start_height"),
+                o.out.c_str());
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"sgmp " + std::string(sgmp::version()) +
+                 " — sphere packs by the Spin Gap Move Protocol (Y up; container x, z in "
+                 "[-0.625, 0.625], floor y = -0.625, no lid; lengths in control-volume sides)"};
+    app.set_version_flag("--version", std::string("sgmp ") + sgmp::version());
+    app.require_subcommand(1);
+    Options pack_options;
+    CLI::App* pack = app.add_subcommand("pack",
+                                        "drop the particles of a starting arrangement "
+                                        "with the protocol and write the pack");
+    add_common(*pack, pack_options);
+    add_protocol(*pack, pack_options);
+    pack->set_config("--config", "", "read options from a TOML/INI file (key = value lines)");
+    Options arrange_options;
+    CLI::App* arrange = app.add_subcommand(
+        "arrange", "write the starting arrangement itself (positions before packing)");
+    add_common(*arrange, arrange_options);
+    arrange->set_config("--config", "", "read options from a TOML/INI file (key = value lines)");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::Success& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "sgmp: " << e.what() << "\n";
+        return 2;
+    }
+    try {
+        return pack->parsed() ? run_pack(pack_options) : run_arrange(arrange_options);
+    } catch (const UsageError& e) {
+        std::cerr << "sgmp: " << e.message << "\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "sgmp: " << e.what() << "\n";
+        return 2;
+    }
+}

@@ -1,0 +1,59 @@
+#pragma once
+/// @file make_pack.hpp
+/// Building a whole pack: size the particles (thesis sizing rule), lay out the starting
+/// arrangement, drop every particle in id order with the protocol, and record full
+/// provenance. Same request ⇒ same pack, bit for bit (one `Random(seed)` stream feeds the
+/// colours, the loose-random positions and the protocol's random choices, in that order).
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "sgmp/engine/arrangement.hpp"
+#include "sgmp/engine/protocol_params.hpp"
+#include "sgmp/pack/geometry.hpp"
+#include "sgmp/pack/pack.hpp"
+
+namespace sgmp::engine {
+
+/// Largest particle count accepted.
+inline constexpr std::size_t kMaxCount = 10'000'000;
+
+struct PackRequest {
+    std::size_t count = 1002;
+    Arrangement arrangement = Arrangement::LargeDense;
+    std::uint64_t seed = 1;
+    /// φ*: N/3 spheres fill the control volume at this fraction (sets d).
+    double phi_target = kThesisPhiTarget;
+    ProtocolParams protocol;
+};
+
+/// What happened during packing (also recorded in the pack's metadata).
+struct PackStats {
+    double diameter = 0.0;
+    double start_height = 0.0;
+    long long moves = 0;         ///< sweep-and-move cycles over all particles
+    std::size_t on_floor = 0;    ///< particles fixed by the floor
+    std::size_t at_wall = 0;     ///< particles fixed by a wall
+    std::size_t resting = 0;     ///< particles left by a sweep with no free position
+    std::size_t move_limit = 0;  ///< particles that reached max_moves
+};
+
+/// Called as (particles dropped, total) now and then while packing.
+using ProgressCallback = std::function<void(std::size_t, std::size_t)>;
+
+/// One-line error naming the option, the value and the rule; nullopt when valid.
+std::optional<std::string> validate(const PackRequest& request);
+
+/// The pack made by the request, with metadata: generator=sgmp, version, count, diameter,
+/// phi_target, arrangement, seed, every protocol parameter, container, start_height and
+/// the statistics. Throws std::invalid_argument (the `validate` message) for bad requests.
+Pack make_pack(const PackRequest& request, const ProgressCallback& progress = {},
+               PackStats* stats = nullptr);
+
+/// The starting arrangement alone as a pack (ids, colours, positions before packing),
+/// with the same provenance keys minus the protocol's.
+Pack make_start_pack(const PackRequest& request);
+
+}  // namespace sgmp::engine

@@ -1,0 +1,128 @@
+#pragma once
+/// @file protocol.hpp
+/// The Spin Gap Move Protocol (thesis chapter 4) for one particle at a time, against the
+/// particles settled so far. A drop repeats four phases until the particle stops:
+///
+/// 1. **Fall** straight down to the first contact below: the highest of the floor
+///    (y = floor + r) and, for every settled sphere j with horizontal centre distance
+///    h < r + r_j, the contact height y_j + √((r + r_j)² − h²). `exact` ends there,
+///    touching; `step` ends at the last multiple of the fall step above it, as the thesis'
+///    stepping would (a colliding step is never taken, so no overlap is ever created).
+/// 2. **Sweep**: the particle is tried at n positions on a horizontal circle of radius
+///    s = d / F around its centre (same height). A position is free when it overlaps no
+///    settled sphere (|c − c_j|² < (r + r_j)², squared distances) — and, with the `block`
+///    wall rule, crosses no wall.
+/// 3. **Gap selection**: runs of consecutive free positions form free arcs (the circle
+///    wraps). The largest arc (or, with `random`, a random arc) is bisected.
+/// 4. **Move** to the point of the circle at the bisector (the half-step entry of the
+///    offset table; when that point itself is not free — possible only between two free
+///    samples — the arc's middle sample is used). Then fall again.
+///
+/// Stopping rules (thesis §4.2): touching the floor fixes a particle; with the `fix` wall
+/// rule a move that would cross a wall ends where the particle touches the wall, and fixes
+/// it; a sweep with no free position (in every stage) leaves the particle resting where
+/// its last fall put it. Choices where the thesis is silent:
+///  - every position free (the particle sits on the very top of a sphere, closer than s/2
+///    to its axis): the move goes to a uniformly random sample;
+///  - the move length is the sweep radius s (to the circle point at the bisector);
+///  - a falling particle is not stopped by a wall it slides along; only a sweep move that
+///    reaches a wall fixes it (a particle already touching a wall after a fall is fixed);
+///  - only settled particles are obstacles; particles waiting in the starting arrangement
+///    are not. A particle whose starting place a settled one has taken meanwhile is first
+///    lifted straight up to the lowest height where it is free, then falls as usual;
+///  - `max_moves` bounds the cycles per particle (it rests after its last fall).
+///
+/// Neighbour search uses a `SettledGrid`: a fall scans only the column of cells below the
+/// particle (top down, stopping once no lower cell can hold a higher contact), a sweep only
+/// the cells within r + r_max + s. Work per drop does not grow with N.
+#include <cstddef>
+#include <vector>
+
+#include "sgmp/engine/protocol_params.hpp"
+#include "sgmp/engine/settled_grid.hpp"
+#include "sgmp/engine/sweep_table.hpp"
+#include "sgmp/pack/geometry.hpp"
+#include "sgmp/pack/particle.hpp"
+#include "sgmp/pack/random.hpp"
+
+namespace sgmp::engine {
+
+/// Why a particle stopped.
+enum class StopReason {
+    Floor,      ///< touched the floor
+    Wall,       ///< a move reached a side wall (fix rule)
+    NoFreeArc,  ///< a sweep found no free position: it rests
+    MoveLimit,  ///< reached max_moves cycles: it rests
+};
+
+struct DropOutcome {
+    Vec3 center = Vec3::Zero();
+    StopReason reason = StopReason::NoFreeArc;
+    /// Sweep-and-move cycles the particle made.
+    long moves = 0;
+};
+
+class Protocol {
+  public:
+    /// `max_radius`: the largest radius of any particle that will settle (sets the grid and
+    /// the neighbour reach). Parameters must be valid (see `validate`).
+    Protocol(const Container& container, const ProtocolParams& params, double max_radius);
+
+    /// Runs the protocol for `particle` from its current centre against the settled
+    /// particles; returns where it stops. Does not settle it (call `settle`).
+    DropOutcome drop(const Particle& particle, Random& rng);
+    /// Adds a particle at its final position; it becomes an obstacle for later drops.
+    void settle(const Particle& particle);
+    [[nodiscard]] std::size_t settled_count() const { return grid_.size(); }
+
+  private:
+    /// Offset relative to the particle's centre and the squared contact distance.
+    struct Near {
+        double dx;
+        double dy;
+        double dz;
+        double contact2;
+    };
+    struct Fall {
+        double y;
+        bool on_floor;
+        Sphere support;  ///< the sphere touched first (when not on the floor)
+    };
+    struct Move {
+        double x;  ///< unit offset
+        double z;
+    };
+
+    [[nodiscard]] Fall fall_exact(const Vec3& c, double r) const;
+    [[nodiscard]] Fall fall(const Vec3& c, double r) const;
+    void gather_near(const Vec3& c, double r, double reach);
+    [[nodiscard]] bool free_at(double ox, double oz) const;
+    [[nodiscard]] bool crosses_wall(double x, double z, double r) const;
+    [[nodiscard]] bool touches_wall(const Vec3& c, double r) const;
+    /// Chooses the move direction; false when no stage has a free position.
+    bool choose_move(const Vec3& c, double r, double s, const Move& previous, Random& rng,
+                     Move& chosen);
+    bool pick_in_arc(const SweepTable& table, int start, int length, const Vec3& c, double r,
+                     double s, const Move& previous, Move& chosen) const;
+    /// Where a move from c toward `target` first touches a wall (coordinates snapped).
+    [[nodiscard]] Vec3 wall_contact(const Vec3& c, const Vec3& target, double r) const;
+    /// Applies the contact model to a resting particle.
+    DropOutcome rest(Vec3 c, double r, StopReason reason, long moves);
+    /// Rolls a particle touching `support` down over it until a second contact; returns the
+    /// new centre (or c when no contact is met before the support's equator).
+    [[nodiscard]] Vec3 roll(const Vec3& c, double r, const Sphere& support);
+
+    Container container_;
+    ProtocolParams params_;
+    double max_radius_;
+    SettledGrid grid_;
+    std::vector<SweepTable> tables_;
+    // Scratch buffers reused by every drop (no allocation in the drop loop).
+    std::vector<Near> near_;
+    std::vector<unsigned char> free_;
+    std::vector<int> arc_start_;
+    std::vector<int> arc_length_;
+    std::vector<std::pair<double, double>> lift_scratch_;
+};
+
+}  // namespace sgmp::engine

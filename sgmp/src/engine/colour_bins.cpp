@@ -1,0 +1,35 @@
+#include "sgmp/engine/colour_bins.hpp"
+
+#include <array>
+
+namespace sgmp::engine {
+
+std::vector<int> draw_colours(std::size_t count, Random& rng) {
+    std::array<std::size_t, kColourBins> left{};
+    for (int k = 0; k < kColourBins; ++k) {
+        left[k] = count / kColourBins + (static_cast<std::size_t>(k) < count % kColourBins ? 1 : 0);
+    }
+    std::vector<int> colours;
+    colours.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        int non_empty = 0;
+        for (const std::size_t n : left) {
+            non_empty += n > 0 ? 1 : 0;
+        }
+        // The `pick`-th non-empty bin, counted from bin 0.
+        auto pick = static_cast<int>(rng.below(static_cast<std::uint64_t>(non_empty)));
+        for (int k = 0; k < kColourBins; ++k) {
+            if (left[k] == 0) {
+                continue;
+            }
+            if (pick-- == 0) {
+                --left[k];
+                colours.push_back(k);
+                break;
+            }
+        }
+    }
+    return colours;
+}
+
+}  // namespace sgmp::engine

@@ -1,0 +1,292 @@
+#include "sgmp/engine/protocol.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace sgmp::engine {
+
+namespace {
+
+/// Cell side: one largest diameter, so a sweep looks at a few cells in each direction.
+double cell_side(double max_radius) {
+    return 2.0 * max_radius;
+}
+
+}  // namespace
+
+Protocol::Protocol(const Container& container, const ProtocolParams& params, double max_radius)
+    : container_(container),
+      params_(params),
+      max_radius_(max_radius),
+      grid_(container, cell_side(max_radius)) {
+    if (const auto error = validate(params, 2.0 * max_radius)) {
+        throw std::invalid_argument(*error);
+    }
+    for (const int n : params.sweep_stages) {
+        tables_.emplace_back(n);
+    }
+    const int largest = params.sweep_stages.back();
+    free_.resize(static_cast<std::size_t>(largest));
+    arc_start_.reserve(static_cast<std::size_t>(largest));
+    arc_length_.reserve(static_cast<std::size_t>(largest));
+    near_.reserve(64);
+}
+
+void Protocol::settle(const Particle& p) {
+    grid_.insert(Sphere{p.center.x(), p.center.y(), p.center.z(), p.radius});
+}
+
+Protocol::Fall Protocol::fall_exact(const Vec3& c, double r) const {
+    Fall result{container_.floor + r, true, Sphere{}};
+    if (grid_.layers() == 0) {
+        return result;
+    }
+    const double reach = r + max_radius_;
+    const CellRange xs = grid_.x_range(c.x() - reach, c.x() + reach);
+    const CellRange zs = grid_.z_range(c.z() - reach, c.z() + reach);
+    for (int l = std::min(grid_.layer_of(c.y()), grid_.layers() - 1); l >= 0; --l) {
+        // Every sphere in layer l or below has y_j < bottom(l + 1), so its contact height
+        // is below bottom(l + 1) + r + r_max: nothing lower can beat the best found.
+        if (grid_.layer_bottom(l + 1) + reach <= result.y) {
+            break;
+        }
+        grid_.for_each_in_layer(l, xs, zs, [&](const Sphere& s) {
+            if (s.y > c.y()) {
+                return;  // above the particle: never met when falling
+            }
+            const double dx = c.x() - s.x;
+            const double dz = c.z() - s.z;
+            const double h2 = dx * dx + dz * dz;
+            const double contact = r + s.r;
+            const double contact2 = contact * contact;
+            if (h2 >= contact2) {
+                return;  // not in the fall column
+            }
+            // Capped at the current height: a rounding-level overlap means "touching now".
+            const double y = std::min(s.y + std::sqrt(contact2 - h2), c.y());
+            if (y > result.y) {
+                result = Fall{y, false, s};
+            }
+        });
+    }
+    return result;
+}
+
+Protocol::Fall Protocol::fall(const Vec3& c, double r) const {
+    Fall hit = fall_exact(c, r);
+    if (params_.fall == FallMode::Exact || hit.on_floor) {
+        return hit;  // the floor is met exactly in both modes: touching it fixes a particle
+    }
+    // Thesis stepping: k whole steps fit above the contact; the (k+1)-th would collide.
+    const double step = params_.fall_step;
+    double k = std::floor((c.y() - hit.y) / step);
+    double y = c.y() - k * step;
+    while (y < hit.y && k > 0.0) {  // rounding of k·step
+        k -= 1.0;
+        y = c.y() - k * step;
+    }
+    hit.y = std::max(y, hit.y);
+    return hit;
+}
+
+void Protocol::gather_near(const Vec3& c, double r, double reach_extra) {
+    near_.clear();
+    const double reach = r + max_radius_ + reach_extra;
+    const Vec3 span(reach, reach, reach);
+    grid_.for_each_in_box(c - span, c + span, [&](const Sphere& s) {
+        const double dx = c.x() - s.x;
+        const double dy = c.y() - s.y;
+        const double dz = c.z() - s.z;
+        const double limit = r + s.r + reach_extra;
+        if (dx * dx + dy * dy + dz * dz < limit * limit) {
+            const double contact = r + s.r;
+            near_.push_back(Near{dx, dy, dz, contact * contact});
+        }
+    });
+}
+
+bool Protocol::free_at(double ox, double oz) const {
+    for (const Near& n : near_) {
+        const double x = n.dx + ox;
+        const double z = n.dz + oz;
+        if (x * x + n.dy * n.dy + z * z < n.contact2) {
+            return false;
+        }
+    }
+    return true;
+}
+
+bool Protocol::crosses_wall(double x, double z, double r) const {
+    return x - r < container_.x_min || x + r > container_.x_max || z - r < container_.z_min ||
+           z + r > container_.z_max;
+}
+
+bool Protocol::touches_wall(const Vec3& c, double r) const {
+    return c.x() - r <= container_.x_min || c.x() + r >= container_.x_max ||
+           c.z() - r <= container_.z_min || c.z() + r >= container_.z_max;
+}
+
+bool Protocol::pick_in_arc(const SweepTable& table, int start, int length, const Vec3& c, double r,
+                           double s, const Move& previous, Move& chosen) const {
+    const int n = table.positions();
+    const bool momentum = params_.momentum > 0.0 && (previous.x != 0.0 || previous.z != 0.0);
+    const int middle_half = (2 * start + length - 1) % (2 * n);
+    if (momentum) {
+        // Aim between the bisector and the previous move; take the arc's closest sample.
+        const double m = params_.momentum;
+        const double tx = (1.0 - m) * table.x(middle_half) + m * previous.x;
+        const double tz = (1.0 - m) * table.z(middle_half) + m * previous.z;
+        int best = start;
+        double best_dot = -std::numeric_limits<double>::infinity();
+        for (int i = 0; i < length; ++i) {
+            const int h = 2 * ((start + i) % n);
+            const double dot = tx * table.x(h) + tz * table.z(h);
+            if (dot > best_dot) {
+                best_dot = dot;
+                best = h;
+            }
+        }
+        chosen = Move{table.x(best), table.z(best)};
+        return true;
+    }
+    if (middle_half % 2 == 1) {
+        // The bisector lies between two free samples: use it when it is free too.
+        const double ox = s * table.x(middle_half);
+        const double oz = s * table.z(middle_half);
+        const bool wall_ok =
+            params_.walls == WallRule::Fix || !crosses_wall(c.x() + ox, c.z() + oz, r);
+        if (wall_ok && free_at(ox, oz)) {
+            chosen = Move{table.x(middle_half), table.z(middle_half)};
+            return true;
+        }
+    }
+    const int h = 2 * ((start + (length - 1) / 2) % n);
+    chosen = Move{table.x(h), table.z(h)};
+    return true;
+}
+
+bool Protocol::choose_move(const Vec3& c, double r, double s, const Move& previous, Random& rng,
+                           Move& chosen) {
+    for (const SweepTable& table : tables_) {
+        const int n = table.positions();
+        int free_count = 0;
+        int first_blocked = -1;
+        for (int k = 0; k < n; ++k) {
+            const double ox = s * table.x(2 * k);
+            const double oz = s * table.z(2 * k);
+            bool free = free_at(ox, oz);
+            if (free && params_.walls == WallRule::Block) {
+                free = !crosses_wall(c.x() + ox, c.z() + oz, r);
+            }
+            free_[k] = free ? 1 : 0;
+            free_count += free ? 1 : 0;
+            if (!free && first_blocked < 0) {
+                first_blocked = k;
+            }
+        }
+        if (free_count == 0) {
+            continue;  // next, finer stage
+        }
+        if (free_count == n) {
+            // On the very top of a sphere: every direction is downhill alike.
+            const int k = static_cast<int>(rng.below(static_cast<std::uint64_t>(n)));
+            chosen = Move{table.x(2 * k), table.z(2 * k)};
+            return true;
+        }
+        // Runs of free samples, walking once round the circle from a blocked one.
+        arc_start_.clear();
+        arc_length_.clear();
+        int run = 0;
+        for (int i = 1; i <= n; ++i) {
+            const int k = (first_blocked + i) % n;
+            if (free_[k]) {
+                ++run;
+            } else if (run > 0) {
+                arc_start_.push_back((k - run + n) % n);
+                arc_length_.push_back(run);
+                run = 0;
+            }
+        }
+        std::size_t pick = 0;
+        if (params_.gap == GapRule::Random) {
+            pick = static_cast<std::size_t>(rng.below(arc_start_.size()));
+        } else {
+            for (std::size_t a = 1; a < arc_start_.size(); ++a) {
+                const bool longer = arc_length_[a] > arc_length_[pick];
+                const bool tie_earlier =
+                    arc_length_[a] == arc_length_[pick] && arc_start_[a] < arc_start_[pick];
+                if (longer || tie_earlier) {
+                    pick = a;
+                }
+            }
+        }
+        return pick_in_arc(table, arc_start_[pick], arc_length_[pick], c, r, s, previous, chosen);
+    }
+    return false;
+}
+
+Vec3 Protocol::wall_contact(const Vec3& c, const Vec3& target, double r) const {
+    const Vec3 step = target - c;
+    double t = 1.0;
+    // Parameter at which the sphere reaches each wall it would cross.
+    const auto limit = [&](double from, double delta, double bound) {
+        if (delta != 0.0) {
+            t = std::min(t, std::max(0.0, (bound - from) / delta));
+        }
+    };
+    if (target.x() + r > container_.x_max)
+        limit(c.x(), step.x(), container_.x_max - r);
+    if (target.x() - r < container_.x_min)
+        limit(c.x(), step.x(), container_.x_min + r);
+    if (target.z() + r > container_.z_max)
+        limit(c.z(), step.z(), container_.z_max - r);
+    if (target.z() - r < container_.z_min)
+        limit(c.z(), step.z(), container_.z_min + r);
+    Vec3 p = c + t * step;
+    // Snap onto the wall(s) reached, and never beyond any wall.
+    p.x() = std::clamp(p.x(), container_.x_min + r, container_.x_max - r);
+    p.z() = std::clamp(p.z(), container_.z_min + r, container_.z_max - r);
+    return p;
+}
+
+DropOutcome Protocol::drop(const Particle& particle, Random& rng) {
+    const double r = particle.radius;
+    const double s = 2.0 * r / params_.circle_factor;
+    Vec3 c = particle.center;
+    // Particles waiting in the arrangement are no obstacles, so a settled particle may have
+    // come to rest where this one waits: it is first lifted straight up until it is free.
+    c.y() = lowest_free_height(grid_, c.x(), c.z(), r, max_radius_, c.y(), lift_scratch_);
+    Move previous{0.0, 0.0};
+    for (long moves = 0;; ++moves) {
+        const Fall hit = fall(c, r);
+        c.y() = hit.y;
+        if (hit.on_floor) {
+            return DropOutcome{c, StopReason::Floor, moves};
+        }
+        if (touches_wall(c, r)) {
+            return DropOutcome{c, StopReason::Wall, moves};
+        }
+        if (moves >= params_.max_moves) {
+            return rest(c, r, StopReason::MoveLimit, moves);
+        }
+        gather_near(c, r, s);
+        Move move{};
+        if (!choose_move(c, r, s, previous, rng, move)) {
+            return rest(c, r, StopReason::NoFreeArc, moves);
+        }
+        const Vec3 target(c.x() + s * move.x, c.y(), c.z() + s * move.z);
+        if (params_.walls == WallRule::Fix && crosses_wall(target.x(), target.z(), r)) {
+            const Vec3 at_wall = wall_contact(c, target, r);
+            if (free_at(at_wall.x() - c.x(), at_wall.z() - c.z())) {
+                return DropOutcome{at_wall, StopReason::Wall, moves + 1};
+            }
+            return rest(c, r, StopReason::NoFreeArc, moves);
+        }
+        c = target;
+        previous = move;
+    }
+}
+
+}  // namespace sgmp::engine

@@ -1,0 +1,135 @@
+#include "sgmp/engine/protocol_params.hpp"
+
+#include <charconv>
+#include <cmath>
+
+namespace sgmp::engine {
+
+namespace {
+
+std::string option_error(std::string_view option, const std::string& value, std::string_view rule) {
+    return "--" + std::string(option) + " " + value + ": " + std::string(rule);
+}
+
+}  // namespace
+
+std::optional<std::string> validate(const ProtocolParams& p, double diameter) {
+    if (!(p.circle_factor > 1.0) || !std::isfinite(p.circle_factor)) {
+        return option_error("circle-factor", format_number(p.circle_factor),
+                            "must be a number greater than 1 (sweep radius = d / factor)");
+    }
+    if (p.sweep_stages.empty()) {
+        return option_error("sweep-stages", "", "needs at least one stage");
+    }
+    for (std::size_t i = 0; i < p.sweep_stages.size(); ++i) {
+        const int n = p.sweep_stages[i];
+        if (n < 3 || n > kMaxSweepPositions) {
+            return option_error(p.sweep_stages.size() == 1 ? "sweep-positions" : "sweep-stages",
+                                stages_to_string(p.sweep_stages),
+                                "every stage needs 3 to 1000000 sweep positions");
+        }
+        if (i > 0 && n <= p.sweep_stages[i - 1]) {
+            return option_error("sweep-stages", stages_to_string(p.sweep_stages),
+                                "stages must have strictly increasing position counts");
+        }
+    }
+    if (p.lower_neighbours < 1) {
+        return option_error("lower-neighbours", std::to_string(p.lower_neighbours),
+                            "must be at least 1");
+    }
+    if (!(p.fall_step > 0.0) || !(p.fall_step < diameter)) {
+        return option_error(
+            "fall-step", format_number(p.fall_step),
+            "must be greater than 0 and less than the diameter " + format_number(diameter));
+    }
+    if (!(p.momentum >= 0.0) || !(p.momentum < 1.0)) {
+        return option_error("momentum", format_number(p.momentum), "must be in [0, 1)");
+    }
+    if (p.max_moves < 1) {
+        return option_error("max-moves", std::to_string(p.max_moves), "must be at least 1");
+    }
+    return std::nullopt;
+}
+
+std::string_view to_string(FallMode mode) {
+    return mode == FallMode::Exact ? "exact" : "step";
+}
+std::string_view to_string(GapRule rule) {
+    return rule == GapRule::Largest ? "largest" : "random";
+}
+std::string_view to_string(ContactModel model) {
+    return model == ContactModel::None ? "none" : "settle";
+}
+std::string_view to_string(WallRule rule) {
+    return rule == WallRule::Fix ? "fix" : "block";
+}
+
+std::optional<FallMode> parse_fall_mode(std::string_view text) {
+    if (text == "exact")
+        return FallMode::Exact;
+    if (text == "step")
+        return FallMode::Step;
+    return std::nullopt;
+}
+std::optional<GapRule> parse_gap_rule(std::string_view text) {
+    if (text == "largest")
+        return GapRule::Largest;
+    if (text == "random")
+        return GapRule::Random;
+    return std::nullopt;
+}
+std::optional<ContactModel> parse_contact_model(std::string_view text) {
+    if (text == "none")
+        return ContactModel::None;
+    if (text == "settle")
+        return ContactModel::Settle;
+    return std::nullopt;
+}
+std::optional<WallRule> parse_wall_rule(std::string_view text) {
+    if (text == "fix")
+        return WallRule::Fix;
+    if (text == "block")
+        return WallRule::Block;
+    return std::nullopt;
+}
+
+std::string stages_to_string(const std::vector<int>& stages) {
+    std::string text;
+    for (const int n : stages) {
+        text += (text.empty() ? "" : ",") + std::to_string(n);
+    }
+    return text;
+}
+
+std::optional<std::vector<int>> parse_stages(std::string_view text) {
+    std::vector<int> stages;
+    while (true) {
+        const std::size_t comma = text.find(',');
+        const std::string_view item = text.substr(0, comma);
+        int n = 0;
+        const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), n);
+        if (item.empty() || error != std::errc() || end != item.data() + item.size()) {
+            return std::nullopt;
+        }
+        stages.push_back(n);
+        if (comma == std::string_view::npos) {
+            return stages;
+        }
+        text.remove_prefix(comma + 1);
+    }
+}
+
+void record(const ProtocolParams& p, Metadata& m) {
+    m.set_number("circle_factor", p.circle_factor);
+    m.set("sweep_stages", stages_to_string(p.sweep_stages));
+    m.set_integer("lower_neighbours", p.lower_neighbours);
+    m.set("gap", std::string(to_string(p.gap)));
+    m.set("fall", std::string(to_string(p.fall)));
+    m.set_number("fall_step", p.fall_step);
+    m.set("contact", std::string(to_string(p.contact)));
+    m.set_number("momentum", p.momentum);
+    m.set("walls", std::string(to_string(p.walls)));
+    m.set_integer("max_moves", p.max_moves);
+}
+
+}  // namespace sgmp::engine

@@ -1,0 +1,89 @@
+#include "sgmp/engine/settled_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace sgmp::engine {
+
+namespace {
+
+int columns_for(double width, double min_cell) {
+    const double n = std::floor(width / min_cell);
+    return static_cast<int>(std::clamp(n, 1.0, 4096.0));
+}
+
+int clamp_index(double coordinate, double origin, double side, int count) {
+    const double cell = std::floor((coordinate - origin) / side);
+    return static_cast<int>(std::clamp(cell, 0.0, static_cast<double>(count - 1)));
+}
+
+}  // namespace
+
+SettledGrid::SettledGrid(const Container& container, double min_cell)
+    : x_min_(container.x_min), z_min_(container.z_min), floor_(container.floor) {
+    if (!(min_cell > 0.0)) {
+        throw std::invalid_argument("grid cell side must be positive");
+    }
+    nx_ = columns_for(container.x_max - container.x_min, min_cell);
+    nz_ = columns_for(container.z_max - container.z_min, min_cell);
+    hx_ = (container.x_max - container.x_min) / nx_;
+    hz_ = (container.z_max - container.z_min) / nz_;
+    hy_ = std::max(hx_, hz_);
+}
+
+int SettledGrid::layer_of(double y) const {
+    const double l = std::floor((y - floor_) / hy_);
+    return static_cast<int>(std::clamp(l, 0.0, 1e9));
+}
+
+CellRange SettledGrid::x_range(double lo, double hi) const {
+    return {clamp_index(lo, x_min_, hx_, nx_), clamp_index(hi, x_min_, hx_, nx_)};
+}
+
+CellRange SettledGrid::z_range(double lo, double hi) const {
+    return {clamp_index(lo, z_min_, hz_, nz_), clamp_index(hi, z_min_, hz_, nz_)};
+}
+
+void SettledGrid::insert(const Sphere& sphere) {
+    const int l = layer_of(sphere.y);
+    if (l >= layers_) {
+        layers_ = l + 1;
+        cells_.resize(static_cast<std::size_t>(layers_) * nx_ * nz_);
+    }
+    const int ix = clamp_index(sphere.x, x_min_, hx_, nx_);
+    const int iz = clamp_index(sphere.z, z_min_, hz_, nz_);
+    cells_[(static_cast<std::size_t>(l) * nx_ + ix) * nz_ + iz].push_back(sphere);
+    ++size_;
+}
+
+double lowest_free_height(const SettledGrid& grid, double x, double z, double r, double r_max,
+                          double from, std::vector<std::pair<double, double>>& blocked) {
+    blocked.clear();
+    const double reach = r + r_max;
+    const CellRange xs = grid.x_range(x - reach, x + reach);
+    const CellRange zs = grid.z_range(z - reach, z + reach);
+    for (int l = grid.layer_of(from - reach); l < grid.layers(); ++l) {
+        grid.for_each_in_layer(l, xs, zs, [&](const Sphere& s) {
+            const double dx = x - s.x;
+            const double dz = z - s.z;
+            const double contact = r + s.r;
+            const double h2 = dx * dx + dz * dz;
+            if (h2 < contact * contact) {
+                const double half = std::sqrt(contact * contact - h2);
+                blocked.emplace_back(s.y - half, s.y + half);
+            }
+        });
+    }
+    std::sort(blocked.begin(), blocked.end());
+    double y = from;
+    for (const auto& [low, high] : blocked) {
+        if (low >= y) {
+            break;  // every later interval starts at or above y too
+        }
+        y = std::max(y, high);
+    }
+    return y;
+}
+
+}  // namespace sgmp::engine

@@ -1,0 +1,238 @@
+// sgmp-reference: DEM reference packs poured with LIGGGHTS.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/metadata.hpp"
+#include "sgmp/pack/pack_file.hpp"
+#include "sgmp/pack/version.hpp"
+#include "sgmp/reference/pour.hpp"
+
+namespace {
+
+using sgmp::reference::PourPhase;
+using sgmp::reference::PourProgress;
+
+volatile std::sig_atomic_t g_interrupted = 0;
+
+extern "C" void on_signal(int) {
+    g_interrupted = 1;
+}
+
+void install_signal_handlers() {
+    struct sigaction action {};
+    action.sa_handler = on_signal;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+}
+
+/// Progress on stderr: rewritten in place on a terminal, one line every few seconds
+/// otherwise (logs of background runs stay short).
+class ProgressPrinter {
+  public:
+    explicit ProgressPrinter(bool quiet) : quiet_(quiet), tty_(isatty(STDERR_FILENO) != 0) {}
+
+    void operator()(const PourProgress& p) {
+        if (quiet_) {
+            return;
+        }
+        std::string text;
+        if (p.phase == PourPhase::falling) {
+            const double percent =
+                p.phase_steps > 0 ? 100.0 * static_cast<double>(p.step) / p.phase_steps : 0.0;
+            text = "fall: step " + std::to_string(p.step) + " of " + std::to_string(p.phase_steps) +
+                   " (" + std::to_string(static_cast<int>(percent)) + " %)";
+        } else if (p.phase == PourPhase::settling) {
+            char buffer[160];
+            std::snprintf(buffer, sizeof buffer,
+                          "settling: step %lld, KE/(m g d) = %.3g -> below %.3g (cap %lld)",
+                          static_cast<long long>(p.step), p.ke_ratio, p.threshold,
+                          static_cast<long long>(p.phase_steps));
+            text = buffer;
+        } else {
+            return;
+        }
+        const auto now = std::chrono::steady_clock::now();
+        if (tty_) {
+            std::cerr << "\r\033[K" << text << std::flush;
+            shown_ = true;
+        } else if (p.phase != last_phase_ || now - last_ > std::chrono::seconds(5)) {
+            std::cerr << text << '\n';
+            last_ = now;
+        }
+        last_phase_ = p.phase;
+    }
+    void finish() {
+        if (shown_) {
+            std::cerr << '\n';
+            shown_ = false;
+        }
+    }
+
+  private:
+    bool quiet_;
+    bool tty_;
+    bool shown_ = false;
+    PourPhase last_phase_ = PourPhase::starting;
+    std::chrono::steady_clock::time_point last_{};
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "sgmp-reference: DEM reference packs for the SGMP testbed, poured under gravity "
+        "with LIGGGHTS (units: SI, 1 project length unit = 1 m)."};
+    app.set_version_flag("--version", std::string("sgmp-reference ") + sgmp::version());
+    app.require_subcommand(1);
+    CLI::App* pour_cmd = app.add_subcommand(
+        "pour", "Pour N equal spheres into the container and write the settled pack.");
+
+    sgmp::reference::PourRequest request;
+    auto& p = request.parameters;
+    std::string out;
+    std::string keep_work;
+    std::string arrangement;
+    double timeout = 0.0;
+    bool force = false;
+    bool quiet = false;
+    pour_cmd
+        ->add_option("--count", p.count,
+                     "Number of spheres N; d follows the sizing rule "
+                     "(N/3)(pi/6)d^3 = phi_target")
+        ->required()
+        ->check(CLI::Range(1, 1000000));
+    pour_cmd
+        ->add_option("--seed", p.seed,
+                     "Seed of the LIGGGHTS insertion and the colour "
+                     "labels (integer)")
+        ->required();
+    pour_cmd
+        ->add_option("--friction", p.friction,
+                     "Sliding friction coefficient mu, particles and walls")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 10.0));
+    pour_cmd->add_option("--out", out, "Output pack file (extended XYZ; .gz compresses)")
+        ->required();
+    pour_cmd
+        ->add_option("--ranks", p.ranks,
+                     "MPI ranks; above 1 runs 'mpirun -np K' with a "
+                     "processor grid 'K 1 1' (split along x)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 64));
+    pour_cmd->add_option("--timeout", timeout, "Wall-clock limit in seconds; 0 means none")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
+    pour_cmd->add_flag("--force", force, "Overwrite an existing output file");
+    pour_cmd->add_option("--keep-work", keep_work,
+                         "Run in this directory and keep it (input script, log, dump); "
+                         "default: a temporary directory, removed afterwards");
+    pour_cmd->add_option("--restitution", p.restitution, "Normal coefficient of restitution e")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 1.0));
+    pour_cmd
+        ->add_option("--rolling-friction", p.rolling_friction,
+                     "Rolling friction coefficient (constant directional torque)")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 1.0));
+    pour_cmd
+        ->add_option("--youngs-modulus", p.youngs_modulus,
+                     "Young's modulus E in Pa (must exceed 5e6)")
+        ->capture_default_str();
+    pour_cmd->add_option("--poisson-ratio", p.poisson_ratio, "Poisson's ratio nu")
+        ->capture_default_str();
+    pour_cmd->add_option("--density", p.density, "Particle density in kg/m^3")
+        ->capture_default_str();
+    pour_cmd->add_option("--gravity", p.gravity, "Gravitational acceleration in m/s^2 (along -Y)")
+        ->capture_default_str();
+    pour_cmd
+        ->add_option("--timestep-fraction", p.timestep_fraction,
+                     "Time step as a fraction of the Rayleigh time")
+        ->capture_default_str();
+    pour_cmd
+        ->add_option("--settle-threshold", p.settle_threshold,
+                     "Settled when the translational kinetic energy per particle stays "
+                     "below this times m g d at two consecutive checks")
+        ->capture_default_str();
+    pour_cmd->add_option("--check-time", p.check_time, "Simulated seconds between settling checks")
+        ->capture_default_str();
+    pour_cmd
+        ->add_option("--max-time", p.max_time,
+                     "Simulated seconds allowed before the pour counts as not settled "
+                     "(the step cap)")
+        ->capture_default_str();
+    pour_cmd
+        ->add_option("--cloud-fraction", p.cloud_fraction,
+                     "Solid fraction of the starting cloud (sets its height)")
+        ->capture_default_str();
+    pour_cmd
+        ->add_option("--phi-target", p.phi_target,
+                     "Target packing fraction phi* of the sizing rule")
+        ->capture_default_str();
+    pour_cmd->add_option("--liggghts", request.liggghts, "LIGGGHTS program (name on PATH or path)")
+        ->capture_default_str();
+    pour_cmd->add_flag("--quiet", quiet, "No progress on stderr");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    }
+
+    try {
+        p.validate();
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "sgmp-reference: " << e.what() << '\n';
+        return 2;
+    }
+    try {
+        sgmp::check_writable(out, force);
+    } catch (const std::exception& e) {
+        std::cerr << "sgmp-reference: --out " << e.what() << '\n';
+        return 2;
+    }
+    if (timeout > 0.0) {
+        request.timeout = std::chrono::duration<double>(timeout);
+    }
+    request.work_directory = keep_work;
+    install_signal_handlers();
+    request.should_stop = [] { return g_interrupted != 0; };
+
+    ProgressPrinter printer(quiet);
+    try {
+        const auto result = sgmp::reference::pour(
+            request, [&printer](const PourProgress& progress) { printer(progress); });
+        printer.finish();
+        sgmp::write_pack_file(out, result.pack, force);
+        if (!quiet) {
+            std::cerr << "poured " << p.count << " spheres in "
+                      << sgmp::format_number(std::round(result.wall_seconds * 10) / 10) << " s, "
+                      << result.steps << " steps; max overlap "
+                      << sgmp::format_number(result.max_overlap_over_d) << " d; phi(control) "
+                      << sgmp::format_number(result.phi_control_volume) << "; wrote " << out
+                      << '\n';
+        }
+        return 0;
+    } catch (const sgmp::reference::PourError& e) {
+        printer.finish();
+        std::cerr << "sgmp-reference: " << e.what() << '\n';
+        if (!e.log_tail().empty()) {
+            std::cerr << "--- last lines of LIGGGHTS output ---\n";
+            for (const auto& line : e.log_tail()) {
+                std::cerr << "  " << line << '\n';
+            }
+        }
+        return g_interrupted != 0 ? 130 : 1;
+    } catch (const std::exception& e) {
+        printer.finish();
+        std::cerr << "sgmp-reference: " << e.what() << '\n';
+        return 1;
+    }
+}

@@ -1,0 +1,31 @@
+#pragma once
+/// @file input_script.hpp
+/// The LIGGGHTS input script of a pour, filled in from the templates of
+/// reference/templates/ (compiled into the library).
+
+#include <map>
+#include <string>
+
+#include "sgmp/reference/pour_parameters.hpp"
+
+namespace sgmp::reference {
+
+/// The text of an embedded template ("pour.in", "start-cloud.in", "start-arrangement.in").
+const std::string& embedded_template(const std::string& name);
+
+/// Replaces every `{{key}}` in `text` by `values.at(key)`. Throws std::invalid_argument
+/// for a placeholder without a value or an unterminated `{{`.
+std::string fill_template(const std::string& text,
+                          const std::map<std::string, std::string>& values);
+
+/// Top of the simulation box: room above the start for spheres thrown upwards.
+double domain_top(double start_top, double diameter);
+
+/// The complete input script. `start_top` is the top of the starting positions (the cloud
+/// top, or the highest sphere of an arrangement), which sets the box and the fall phase.
+std::string pour_script(const PourParameters& parameters, double start_top);
+
+/// The "processors" grid for `ranks` MPI ranks: split along x only ("K 1 1").
+std::string processor_grid(int ranks);
+
+}  // namespace sgmp::reference

@@ -1,0 +1,66 @@
+#pragma once
+/// @file pour.hpp
+/// One LIGGGHTS pour, from parameters to a settled pack.
+///
+/// Writes the input script (and, for an arrangement start, start.data) into a work
+/// directory, runs `liggghts -in in.pour` (or `mpirun -np K --allow-run-as-root liggghts`
+/// with a horizontal processor grid), follows its progress, and reads the final dump back
+/// into a Pack with provenance. Every failure throws PourError; nothing is printed.
+
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sgmp/pack/pack.hpp"
+#include "sgmp/reference/pour_parameters.hpp"
+#include "sgmp/reference/progress.hpp"
+
+namespace sgmp::reference {
+
+/// A pour that failed. `what()` is one line; `log_tail` holds the last lines LIGGGHTS
+/// printed when they help (empty otherwise).
+class PourError : public std::runtime_error {
+  public:
+    PourError(const std::string& message, std::vector<std::string> log_tail = {})
+        : std::runtime_error(message), log_tail_(std::move(log_tail)) {}
+    [[nodiscard]] const std::vector<std::string>& log_tail() const { return log_tail_; }
+
+  private:
+    std::vector<std::string> log_tail_;
+};
+
+/// Starting positions given by the caller (an SGMP arrangement), project units.
+struct StartPositions {
+    std::string name;
+    std::vector<Vec3> centers;
+};
+
+struct PourRequest {
+    PourParameters parameters;
+    std::optional<StartPositions> start;   ///< empty: a loose random cloud
+    std::filesystem::path work_directory;  ///< empty: a temporary, removed afterwards
+    std::string liggghts = "liggghts";     ///< program name or path
+    std::string mpirun = "mpirun";
+    std::optional<std::chrono::duration<double>> timeout;
+    std::function<bool()> should_stop;  ///< e.g. set by SIGINT
+};
+
+struct PourResult {
+    Pack pack;
+    double wall_seconds = 0.0;
+    double max_overlap_over_d = 0.0;
+    double max_wall_penetration_over_d = 0.0;
+    double phi_control_volume = 0.0;
+    std::int64_t steps = 0;
+    double ke_ratio = 0.0;
+};
+
+using PourObserver = std::function<void(const PourProgress&)>;
+
+PourResult pour(const PourRequest& request, const PourObserver& observer = {});
+
+}  // namespace sgmp::reference

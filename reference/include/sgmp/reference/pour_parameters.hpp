@@ -1,0 +1,59 @@
+#pragma once
+/// @file pour_parameters.hpp
+/// Everything that defines a LIGGGHTS pour, in SI units with 1 project length unit = 1 m.
+///
+/// The sphere diameter follows the project's sizing rule, d = (18 φ* / (π N))^(1/3), so
+/// the N spheres hold a solid volume of 3 φ* whatever N is. The starting cloud fills the
+/// container's footprint from the floor up to a height h at solid fraction `cloud_fraction`:
+///     N (π/6) d³ = cloud_fraction · (1.25 − d)² · (h − d)   (the box the centres may take).
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace sgmp::reference {
+
+/// 1 project length unit in metres. Positions pass through unchanged.
+inline constexpr double kMetresPerUnit = 1.0;
+
+struct PourParameters {
+    std::size_t count = 0;            ///< number of spheres
+    std::uint64_t seed = 1;           ///< drives LIGGGHTS' seeds and the colour labels
+    double phi_target = 0.63;         ///< φ* of the sizing rule
+    double friction = 0.5;            ///< sliding friction μ, particles and walls
+    double restitution = 0.5;         ///< normal coefficient of restitution e
+    double rolling_friction = 0.01;   ///< rolling friction μ_r (constant directional torque)
+    double youngs_modulus = 1e9;      ///< E (Pa)
+    double poisson_ratio = 0.25;      ///< ν
+    double density = 2500.0;          ///< ρ (kg/m³)
+    double gravity = 9.81;            ///< g (m/s²), along −Y
+    double timestep_fraction = 0.15;  ///< time step as a fraction of the Rayleigh time
+    double settle_threshold = 1e-6;   ///< settled when KE_trans per particle < this · m g d
+    double check_time = 0.02;         ///< simulated seconds between settling checks
+    double max_time = 30.0;           ///< simulated seconds allowed in all (the step cap)
+    double cloud_fraction = 0.3;      ///< solid fraction of the starting cloud
+    int ranks = 1;                    ///< MPI ranks (1: run liggghts directly)
+    /// Name of an SGMP starting arrangement to start from instead of the cloud.
+    std::optional<std::string> arrangement;
+
+    /// Throws std::invalid_argument naming the parameter and the rule it breaks.
+    void validate() const;
+
+    [[nodiscard]] double diameter() const;
+    /// Top of the starting cloud (project units = m).
+    [[nodiscard]] double cloud_top() const;
+};
+
+/// Prime seeds above 10000 (LIGGGHTS demands primes) derived from the pour's seed.
+struct LiggghtsSeeds {
+    std::uint64_t particle_template = 0;
+    std::uint64_t distribution = 0;
+    std::uint64_t insertion = 0;
+};
+LiggghtsSeeds liggghts_seeds(std::uint64_t seed);
+
+/// Smallest prime ≥ n (trial division; n below 2^40).
+std::uint64_t next_prime(std::uint64_t n);
+
+}  // namespace sgmp::reference

@@ -1,0 +1,351 @@
+#include "sgmp/reference/pour.hpp"
+
+#include <stdlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <fstream>
+#include <limits>
+
+#include "sgmp/pack/input_error.hpp"
+#include "sgmp/pack/pack_file.hpp"
+#include "sgmp/pack/version.hpp"
+#include "sgmp/reference/child_process.hpp"
+#include "sgmp/reference/colours.hpp"
+#include "sgmp/reference/executables.hpp"
+#include "sgmp/reference/input_script.hpp"
+#include "sgmp/reference/pack_checks.hpp"
+
+namespace sgmp::reference {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::size_t kTailLines = 25;
+
+/// The directory LIGGGHTS runs in: the caller's (kept) or a temporary (removed).
+class WorkDirectory {
+  public:
+    explicit WorkDirectory(const fs::path& requested) {
+        if (!requested.empty()) {
+            path_ = requested;
+            std::error_code ec;
+            fs::create_directories(path_, ec);
+            if (ec || !fs::is_directory(path_)) {
+                throw PourError("cannot create work directory " + path_.string() + ": " +
+                                ec.message());
+            }
+            fs::remove(path_ / "final.dump", ec);  // never read a dump of an earlier run
+            return;
+        }
+        std::string pattern = (fs::temp_directory_path() / "sgmp-reference-XXXXXX").string();
+        if (mkdtemp(pattern.data()) == nullptr) {
+            throw PourError("cannot create a temporary work directory in " +
+                            fs::temp_directory_path().string());
+        }
+        path_ = pattern;
+        temporary_ = true;
+    }
+    ~WorkDirectory() {
+        if (temporary_) {
+            std::error_code ec;
+            fs::remove_all(path_, ec);
+        }
+    }
+    WorkDirectory(const WorkDirectory&) = delete;
+    WorkDirectory& operator=(const WorkDirectory&) = delete;
+    [[nodiscard]] const fs::path& path() const { return path_; }
+
+  private:
+    fs::path path_;
+    bool temporary_ = false;
+};
+
+void write_text(const fs::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    out.close();
+    if (!out) {
+        throw PourError("cannot write " + path.string());
+    }
+}
+
+/// LIGGGHTS data file with the starting spheres (atom_style granular:
+/// id type diameter density x y z) and the simulation box.
+std::string start_data(const PourParameters& p, const StartPositions& start, double top) {
+    const Container container;
+    std::string text = "LIGGGHTS data file: SGMP arrangement " + start.name + "\n\n";
+    text += std::to_string(start.centers.size()) + " atoms\n1 atom types\n\n";
+    text += format_number(container.x_min) + " " + format_number(container.x_max) + " xlo xhi\n";
+    text += format_number(container.floor) + " " + format_number(top) + " ylo yhi\n";
+    text += format_number(container.z_min) + " " + format_number(container.z_max) + " zlo zhi\n";
+    text += "\nAtoms\n\n";
+    const std::string d = format_number(p.diameter());
+    const std::string rho = format_number(p.density);
+    for (std::size_t i = 0; i < start.centers.size(); ++i) {
+        const Vec3& c = start.centers[i];
+        text += std::to_string(i + 1) + " 1 " + d + " " + rho + " " + format_number(c.x()) + " " +
+                format_number(c.y()) + " " + format_number(c.z()) + "\n";
+    }
+    return text;
+}
+
+double start_top_of(const PourRequest& request) {
+    if (!request.start) {
+        return request.parameters.cloud_top();
+    }
+    double top = Container{}.floor;
+    for (const Vec3& c : request.start->centers) {
+        top = std::max(top, c.y());
+    }
+    return top + request.parameters.diameter() / 2.0;
+}
+
+void check_start(const PourRequest& request) {
+    if (!request.start) {
+        return;
+    }
+    const auto& centers = request.start->centers;
+    if (centers.size() != request.parameters.count) {
+        throw PourError("arrangement " + request.start->name + " has " +
+                        std::to_string(centers.size()) + " spheres, not " +
+                        std::to_string(request.parameters.count));
+    }
+    const Container container;
+    const double r = request.parameters.diameter() / 2.0;
+    for (std::size_t i = 0; i < centers.size(); ++i) {
+        if (container.penetration(centers[i], r) > 1e-9 * r) {
+            throw PourError("arrangement " + request.start->name + ": sphere " +
+                            std::to_string(i + 1) + " lies outside the container");
+        }
+    }
+}
+
+std::vector<std::string> command_line(const PourRequest& request) {
+    const auto liggghts = find_executable(request.liggghts);
+    if (!liggghts) {
+        throw PourError("'" + request.liggghts +
+                        "' not found on PATH: install the Debian package 'liggghts'");
+    }
+    std::vector<std::string> argv;
+    if (request.parameters.ranks > 1) {
+        const auto mpirun = find_executable(request.mpirun);
+        if (!mpirun) {
+            throw PourError("'" + request.mpirun + "' not found on PATH (needed for --ranks " +
+                            std::to_string(request.parameters.ranks) +
+                            "): install the Debian package 'openmpi-bin'");
+        }
+        argv = {mpirun->string(), "-np", std::to_string(request.parameters.ranks),
+                "--allow-run-as-root"};
+    }
+    // Line-buffered output: progress arrives as it happens and no message is lost when
+    // LIGGGHTS aborts.
+    if (const auto stdbuf = find_executable("stdbuf")) {
+        argv.insert(argv.end(), {stdbuf->string(), "-oL", "-eL"});
+    }
+    argv.insert(argv.end(), {liggghts->string(), "-in", "in.pour", "-log", "log.liggghts"});
+    return argv;
+}
+
+/// Follows the child's output: progress, the marker lines, and the last lines for errors.
+struct RunWatch {
+    PourLog log;
+    std::deque<std::string> tail;
+    bool short_insertion = false;
+    std::size_t expected = 0;
+
+    void take(const std::string& line, const PourObserver& observer) {
+        if (!line.empty()) {
+            tail.push_back(line);
+            if (tail.size() > kTailLines) {
+                tail.pop_front();
+            }
+        }
+        const bool changed = log.take(line);
+        if (log.inserted && static_cast<std::size_t>(*log.inserted) < expected) {
+            short_insertion = true;
+        }
+        if (changed && observer) {
+            observer(log.progress);
+        }
+    }
+    [[nodiscard]] std::vector<std::string> tail_lines() const { return {tail.begin(), tail.end()}; }
+};
+
+std::string ratio_text(double ratio) {
+    return format_number(ratio);
+}
+
+void check_run(const ChildResult& run, const RunWatch& watch, const PourRequest& request) {
+    const PourParameters& p = request.parameters;
+    if (watch.short_insertion) {
+        throw PourError("LIGGGHTS inserted only " + std::to_string(*watch.log.inserted) + " of " +
+                        std::to_string(p.count) +
+                        " spheres: the starting cloud is too dense, lower --cloud-fraction");
+    }
+    switch (run.end) {
+        case ChildEnd::stopped:
+            throw PourError("interrupted at step " + std::to_string(watch.log.steps) +
+                            ": LIGGGHTS stopped, no pack written");
+        case ChildEnd::timed_out:
+            throw PourError("timed out after " + format_number(request.timeout->count()) +
+                            " s (--timeout) at step " + std::to_string(watch.log.steps) +
+                            ": LIGGGHTS stopped, no pack written");
+        case ChildEnd::signalled:
+            throw PourError("liggghts was killed by signal " + std::to_string(run.signal),
+                            watch.tail_lines());
+        case ChildEnd::exited:
+            break;
+    }
+    if (run.exit_code != 0) {
+        const std::string reason = !watch.log.first_error.empty() ? watch.log.first_error
+                                   : watch.tail.empty()           ? "no output"
+                                                                  : watch.tail.back();
+        throw PourError(
+            "liggghts failed (exit code " + std::to_string(run.exit_code) + "): " + reason,
+            watch.tail_lines());
+    }
+    if (!watch.log.inserted || static_cast<std::size_t>(*watch.log.inserted) != p.count) {
+        throw PourError("LIGGGHTS did not report the " + std::to_string(p.count) +
+                            " spheres it should have placed",
+                        watch.tail_lines());
+    }
+    if (!watch.log.settled || !watch.log.done) {
+        throw PourError("LIGGGHTS ended before the pour finished (no result reported)",
+                        watch.tail_lines());
+    }
+    if (!*watch.log.settled) {
+        throw PourError("not settled within the step cap of " +
+                        std::to_string(watch.log.step_cap.value_or(0)) + " steps (" +
+                        format_number(p.max_time) +
+                        " s simulated): KE_trans/(m g d) = " + ratio_text(watch.log.ke_ratio) +
+                        ", threshold " + format_number(p.settle_threshold));
+    }
+}
+
+Pack read_final(const fs::path& dump, const PourParameters& p) {
+    Pack raw;
+    try {
+        raw = read_pack_file(dump);
+    } catch (const std::exception& e) {
+        throw PourError(std::string("cannot read the LIGGGHTS result: ") + e.what());
+    }
+    if (raw.particles.size() != p.count) {
+        throw PourError(dump.string() + ": holds " + std::to_string(raw.particles.size()) +
+                        " spheres, not " + std::to_string(p.count));
+    }
+    std::sort(raw.particles.begin(), raw.particles.end(),
+              [](const Particle& a, const Particle& b) { return a.id < b.id; });
+    const double r = p.diameter() / 2.0;
+    for (std::size_t i = 0; i < raw.particles.size(); ++i) {
+        Particle& particle = raw.particles[i];
+        if (particle.id != static_cast<std::int64_t>(i + 1)) {
+            throw PourError(dump.string() + ": particle ids are not 1.." + std::to_string(p.count));
+        }
+        if (std::abs(particle.radius - r) > 1e-12 * r) {
+            throw PourError(dump.string() + ": radius " + format_number(particle.radius) +
+                            " differs from d/2 = " + format_number(r));
+        }
+        particle.radius = r;                // exactly the sizing rule's d/2
+        particle.center /= kMetresPerUnit;  // metres to project units
+    }
+    Pack pack;
+    pack.particles = std::move(raw.particles);
+    return pack;
+}
+
+void record(Metadata& m, const PourRequest& request, const PourLog& log, const PourResult& r) {
+    const PourParameters& p = request.parameters;
+    const LiggghtsSeeds seeds = liggghts_seeds(p.seed);
+    m.set("generator", "liggghts");
+    m.set("version", version());
+    m.set("liggghts_version", log.liggghts_version.empty() ? "unknown" : log.liggghts_version);
+    m.set_integer("count", static_cast<long long>(p.count));
+    m.set_number("diameter", p.diameter());
+    m.set_number("phi_target", p.phi_target);
+    m.set_number("friction", p.friction);
+    m.set_integer("seed", static_cast<long long>(p.seed));
+    m.set("start", request.start ? "arrangement" : "cloud");
+    if (request.start) {
+        m.set("arrangement", request.start->name);
+    } else {
+        m.set_number("cloud_fraction", p.cloud_fraction);
+    }
+    m.set("contact_model", "hertz tangential_history rolling_friction_cdt");
+    m.set_number("restitution", p.restitution);
+    m.set_number("rolling_friction", p.rolling_friction);
+    m.set_number("youngs_modulus_pa", p.youngs_modulus);
+    m.set_number("poisson_ratio", p.poisson_ratio);
+    m.set_number("density_kg_m3", p.density);
+    m.set_number("gravity_m_s2", p.gravity);
+    m.set_number("metres_per_unit", kMetresPerUnit);
+    m.set_number("timestep_s", log.timestep.value_or(0.0));
+    m.set_number("rayleigh_time_s", log.rayleigh_time.value_or(0.0));
+    m.set_number("timestep_fraction", p.timestep_fraction);
+    m.set_number("settle_threshold", p.settle_threshold);
+    m.set_number("check_time_s", p.check_time);
+    m.set_integer("step_cap", log.step_cap.value_or(0));
+    m.set_integer("steps", log.steps);
+    m.set_number("settling_measure", log.ke_ratio);
+    m.set_number("max_overlap_over_d", r.max_overlap_over_d);
+    m.set_number("max_wall_penetration_over_d", r.max_wall_penetration_over_d);
+    m.set_number("phi_control_volume", r.phi_control_volume);
+    m.set_integer("ranks", p.ranks);
+    m.set("processor_grid", processor_grid(p.ranks));
+    m.set("liggghts_seeds", std::to_string(seeds.particle_template) + " " +
+                                std::to_string(seeds.distribution) + " " +
+                                std::to_string(seeds.insertion));
+    m.set_number("wall_seconds", std::round(r.wall_seconds * 100.0) / 100.0);
+    m.set("container", Container{}.to_string());
+}
+
+}  // namespace
+
+PourResult pour(const PourRequest& request, const PourObserver& observer) {
+    const PourParameters& p = request.parameters;
+    try {
+        p.validate();
+    } catch (const std::invalid_argument& e) {
+        throw PourError(e.what());
+    }
+    check_start(request);
+    const std::vector<std::string> argv = command_line(request);
+    const double start_top = start_top_of(request);
+
+    WorkDirectory work(request.work_directory);
+    write_text(work.path() / "in.pour", pour_script(p, start_top));
+    if (request.start) {
+        write_text(work.path() / "start.data",
+                   start_data(p, *request.start, domain_top(start_top, p.diameter())));
+    }
+
+    RunWatch watch;
+    watch.expected = p.count;
+    ChildOptions options;
+    options.argv = argv;
+    options.working_directory = work.path();
+    options.timeout = request.timeout;
+    options.should_stop = [&] {
+        return watch.short_insertion || (request.should_stop && request.should_stop());
+    };
+    const ChildResult run =
+        run_child(options, [&](const std::string& line) { watch.take(line, observer); });
+    check_run(run, watch, request);
+
+    PourResult result;
+    result.pack = read_final(work.path() / "final.dump", p);
+    result.wall_seconds = run.wall_seconds;
+    result.steps = watch.log.steps;
+    result.ke_ratio = watch.log.ke_ratio;
+    const double d = p.diameter();
+    result.max_overlap_over_d = pair_overlaps(result.pack).max_overlap / d;
+    result.max_wall_penetration_over_d = max_wall_penetration(result.pack, Container{}) / d;
+    result.phi_control_volume = packing_fraction(result.pack, control_volume());
+    Random colour_random(p.seed ^ 0xC01005ULL);  // apart from the LIGGGHTS seeds
+    assign_colours(result.pack.particles, colour_random);
+    record(result.pack.metadata, request, watch.log, result);
+    return result;
+}
+
+}  // namespace sgmp::reference

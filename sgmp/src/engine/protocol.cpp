@@ -1,7 +1,13 @@
 #include "sgmp/engine/protocol.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 
@@ -28,10 +34,13 @@ Protocol::Protocol(const Container& container, const ProtocolParams& params, dou
         tables_.emplace_back(n);
     }
     const int largest = params.sweep_stages.back();
-    free_.resize(static_cast<std::size_t>(largest));
+    margin_.resize(static_cast<std::size_t>(largest));
+    free_bits_.resize(static_cast<std::size_t>((largest + 63) / 64));
     arc_start_.reserve(static_cast<std::size_t>(largest));
     arc_length_.reserve(static_cast<std::size_t>(largest));
     near_.reserve(64);
+    local_.reserve(256);
+    skin_ = 0.5 * max_radius;
 }
 
 void Protocol::settle(const Particle& p) {
@@ -74,8 +83,59 @@ Protocol::Fall Protocol::fall_exact(const Vec3& c, double r) const {
     return result;
 }
 
-Protocol::Fall Protocol::fall(const Vec3& c, double r) const {
-    Fall hit = fall_exact(c, r);
+void Protocol::rebuild_local(const Vec3& origin, double r, double s) {
+    local_.clear();
+    const double reach = r + max_radius_ + s + skin_;
+    const Vec3 span = Vec3::Constant(reach);
+    grid_.for_each_in_box(origin - span, origin + span, [&](const Sphere& j) {
+        const double dx = origin.x() - j.x;
+        const double dy = origin.y() - j.y;
+        const double dz = origin.z() - j.z;
+        const double limit = r + j.r + s + skin_;
+        if (dx * dx + dy * dy + dz * dz < limit * limit) {
+            local_.push_back(j);
+        }
+    });
+    local_origin_ = origin;
+    local_valid_ = true;
+}
+
+// If both ends of the fall lie within the skin of the list's origin, so does every point
+// between them, and any sphere touched on the way is within r + r_j + skin of the origin:
+// it is in the list. Otherwise the grid is scanned.
+Protocol::Fall Protocol::contact_below(const Vec3& c, double r) {
+    const double s = 2.0 * r / params_.circle_factor;
+    if (!local_valid_ || (c - local_origin_).norm() > skin_) {
+        rebuild_local(c, r, s);
+    }
+    Fall result{container_.floor + r, true, Sphere{}};
+    for (const Sphere& j : local_) {
+        if (j.y > c.y()) {
+            continue;
+        }
+        const double dx = c.x() - j.x;
+        const double dz = c.z() - j.z;
+        const double h2 = dx * dx + dz * dz;
+        const double contact = r + j.r;
+        const double contact2 = contact * contact;
+        if (h2 >= contact2) {
+            continue;
+        }
+        const double y = std::min(j.y + std::sqrt(contact2 - h2), c.y());
+        if (y > result.y) {
+            result = Fall{y, false, j};
+        }
+    }
+    if ((Vec3(c.x(), result.y, c.z()) - local_origin_).norm() <= skin_) {
+        return result;
+    }
+    result = fall_exact(c, r);
+    rebuild_local(Vec3(c.x(), result.y, c.z()), r, s);
+    return result;
+}
+
+Protocol::Fall Protocol::fall(const Vec3& c, double r) {
+    Fall hit = contact_below(c, r);
     if (params_.fall == FallMode::Exact || hit.on_floor) {
         return hit;  // the floor is met exactly in both modes: touching it fixes a particle
     }
@@ -91,27 +151,33 @@ Protocol::Fall Protocol::fall(const Vec3& c, double r) const {
     return hit;
 }
 
-void Protocol::gather_near(const Vec3& c, double r, double reach_extra) {
+void Protocol::gather_near(const Vec3& c, double r, double s) {
     near_.clear();
-    const double reach = r + max_radius_ + reach_extra;
-    const Vec3 span(reach, reach, reach);
-    grid_.for_each_in_box(c - span, c + span, [&](const Sphere& s) {
-        const double dx = c.x() - s.x;
-        const double dy = c.y() - s.y;
-        const double dz = c.z() - s.z;
-        const double limit = r + s.r + reach_extra;
-        if (dx * dx + dy * dy + dz * dz < limit * limit) {
-            const double contact = r + s.r;
-            near_.push_back(Near{dx, dy, dz, contact * contact});
+    for (const Sphere& j : local_) {
+        const double dx = c.x() - j.x;
+        const double dy = c.y() - j.y;
+        const double dz = c.z() - j.z;
+        const double d2 = dx * dx + dy * dy + dz * dz;
+        const double contact = r + j.r;
+        const double q = contact * contact - d2 - s * s;
+        const double a = 2.0 * s * dx;
+        const double b = 2.0 * s * dz;
+        // Some sample can collide only if q > min over u of (a·u_x + b·u_z) = −√(a² + b²).
+        if (q >= 0.0 || q * q < a * a + b * b) {
+            near_.push_back(Near{a, b, q});
         }
-    });
+    }
 }
 
-bool Protocol::free_at(double ox, double oz) const {
-    for (const Near& n : near_) {
-        const double x = n.dx + ox;
-        const double z = n.dz + oz;
-        if (x * x + n.dy * n.dy + z * z < n.contact2) {
+bool Protocol::free_at(const Vec3& c, double r, double ox, double oz) const {
+    const double x = c.x() + ox;
+    const double z = c.z() + oz;
+    for (const Sphere& j : local_) {
+        const double dx = x - j.x;
+        const double dy = c.y() - j.y;
+        const double dz = z - j.z;
+        const double contact = r + j.r;
+        if (dx * dx + dy * dy + dz * dz < contact * contact) {
             return false;
         }
     }
@@ -157,7 +223,7 @@ bool Protocol::pick_in_arc(const SweepTable& table, int start, int length, const
         const double oz = s * table.z(middle_half);
         const bool wall_ok =
             params_.walls == WallRule::Fix || !crosses_wall(c.x() + ox, c.z() + oz, r);
-        if (wall_ok && free_at(ox, oz)) {
+        if (wall_ok && free_at(c, r, ox, oz)) {
             chosen = Move{table.x(middle_half), table.z(middle_half)};
             return true;
         }
@@ -167,25 +233,78 @@ bool Protocol::pick_in_arc(const SweepTable& table, int start, int length, const
     return true;
 }
 
+int Protocol::find_free_runs(const double* margin, int n) {
+    // Free flags packed 64 to a word, then runs found from the bit transitions.
+    const int words = (n + 63) / 64;
+    for (int w = 0; w < words; ++w) {
+        const int begin = 64 * w;
+        const int end = std::min(n, begin + 64);
+        std::uint64_t bits = 0;
+        int k = begin;
+#if defined(__SSE2__)
+        const __m128d zero = _mm_setzero_pd();
+        for (; k + 1 < end; k += 2) {
+            const int two = _mm_movemask_pd(_mm_cmpge_pd(_mm_loadu_pd(margin + k), zero));
+            bits |= static_cast<std::uint64_t>(two) << (k - begin);
+        }
+#endif
+        for (; k < end; ++k) {
+            bits |= static_cast<std::uint64_t>(margin[k] >= 0.0) << (k - begin);
+        }
+        free_bits_[w] = bits;
+    }
+    const auto next = [&](int from, bool value) {  // first sample ≥ from with this flag
+        while (from < n) {
+            const int w = from / 64;
+            std::uint64_t bits = value ? free_bits_[w] : ~free_bits_[w];
+            bits &= ~std::uint64_t{0} << (from % 64);
+            if (bits != 0) {
+                return std::min(n, 64 * w + std::countr_zero(bits));
+            }
+            from = 64 * (w + 1);
+        }
+        return n;
+    };
+    arc_start_.clear();
+    arc_length_.clear();
+    int free_count = 0;
+    for (int k = next(0, true); k < n; k = next(k, true)) {
+        const int end = next(k, false);
+        arc_start_.push_back(k);
+        arc_length_.push_back(end - k);
+        free_count += end - k;
+        k = end;
+    }
+    return free_count;
+}
+
 bool Protocol::choose_move(const Vec3& c, double r, double s, const Move& previous, Random& rng,
                            Move& chosen) {
     for (const SweepTable& table : tables_) {
         const int n = table.positions();
-        int free_count = 0;
-        int first_blocked = -1;
-        for (int k = 0; k < n; ++k) {
-            const double ox = s * table.x(2 * k);
-            const double oz = s * table.z(2 * k);
-            bool free = free_at(ox, oz);
-            if (free && params_.walls == WallRule::Block) {
-                free = !crosses_wall(c.x() + ox, c.z() + oz, r);
-            }
-            free_[k] = free ? 1 : 0;
-            free_count += free ? 1 : 0;
-            if (!free && first_blocked < 0) {
-                first_blocked = k;
+        // Vectorisable passes: margin[k] = min over blocking spheres of a·u_x + b·u_z − q;
+        // sample k is free iff margin[k] ≥ 0 (the sign of x − q is exactly that of x ≥ q).
+        double* margin = margin_.data();
+        std::fill(margin, margin + n, 1.0);
+        const double* ux = table.sample_x();
+        const double* uz = table.sample_z();
+        for (const Near& near : near_) {
+            const double a = near.a;
+            const double b = near.b;
+            const double q = near.q;
+            for (int k = 0; k < n; ++k) {
+                margin[k] = std::min(margin[k], a * ux[k] + b * uz[k] - q);
             }
         }
+        if (params_.walls == WallRule::Block) {
+            for (int k = 0; k < n; ++k) {
+                if (crosses_wall(c.x() + s * ux[k], c.z() + s * uz[k], r)) {
+                    margin[k] = -1.0;
+                }
+            }
+        }
+        // Runs of free samples; a run touching both ends wraps round angle 0.
+        const int free_count = find_free_runs(margin, n);
         if (free_count == 0) {
             continue;  // next, finer stage
         }
@@ -195,19 +314,13 @@ bool Protocol::choose_move(const Vec3& c, double r, double s, const Move& previo
             chosen = Move{table.x(2 * k), table.z(2 * k)};
             return true;
         }
-        // Runs of free samples, walking once round the circle from a blocked one.
-        arc_start_.clear();
-        arc_length_.clear();
-        int run = 0;
-        for (int i = 1; i <= n; ++i) {
-            const int k = (first_blocked + i) % n;
-            if (free_[k]) {
-                ++run;
-            } else if (run > 0) {
-                arc_start_.push_back((k - run + n) % n);
-                arc_length_.push_back(run);
-                run = 0;
-            }
+        if (arc_start_.size() >= 2 && arc_start_.front() == 0 &&
+            arc_start_.back() + arc_length_.back() == n) {
+            arc_length_.back() += arc_length_.front();
+            arc_start_.front() = arc_start_.back();
+            arc_length_.front() = arc_length_.back();
+            arc_start_.pop_back();
+            arc_length_.pop_back();
         }
         std::size_t pick = 0;
         if (params_.gap == GapRule::Random) {
@@ -255,6 +368,7 @@ DropOutcome Protocol::drop(const Particle& particle, Random& rng) {
     const double r = particle.radius;
     const double s = 2.0 * r / params_.circle_factor;
     Vec3 c = particle.center;
+    local_valid_ = false;  // the grid has changed since the last drop
     // Particles waiting in the arrangement are no obstacles, so a settled particle may have
     // come to rest where this one waits: it is first lifted straight up until it is free.
     c.y() = lowest_free_height(grid_, c.x(), c.z(), r, max_radius_, c.y(), lift_scratch_);
@@ -279,7 +393,7 @@ DropOutcome Protocol::drop(const Particle& particle, Random& rng) {
         const Vec3 target(c.x() + s * move.x, c.y(), c.z() + s * move.z);
         if (params_.walls == WallRule::Fix && crosses_wall(target.x(), target.z(), r)) {
             const Vec3 at_wall = wall_contact(c, target, r);
-            if (free_at(at_wall.x() - c.x(), at_wall.z() - c.z())) {
+            if (free_at(c, r, at_wall.x() - c.x(), at_wall.z() - c.z())) {
                 return DropOutcome{at_wall, StopReason::Wall, moves + 1};
             }
             return rest(c, r, StopReason::NoFreeArc, moves);

@@ -36,6 +36,7 @@
 /// particle (top down, stopping once no lower cell can hold a higher contact), a sweep only
 /// the cells within r + r_max + s. Work per drop does not grow with N.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "sgmp/engine/protocol_params.hpp"
@@ -76,12 +77,13 @@ class Protocol {
     [[nodiscard]] std::size_t settled_count() const { return grid_.size(); }
 
   private:
-    /// Offset relative to the particle's centre and the squared contact distance.
+    /// A sphere that can block some sweep sample: the sample at unit offset (u_x, u_z)
+    /// collides iff a·u_x + b·u_z < q, from |δ + s·u|² < D² with δ = c − c_j:
+    /// a = 2s·δ_x, b = 2s·δ_z, q = D² − |δ|² − s².
     struct Near {
-        double dx;
-        double dy;
-        double dz;
-        double contact2;
+        double a;
+        double b;
+        double q;
     };
     struct Fall {
         double y;
@@ -94,11 +96,20 @@ class Protocol {
     };
 
     [[nodiscard]] Fall fall_exact(const Vec3& c, double r) const;
-    [[nodiscard]] Fall fall(const Vec3& c, double r) const;
-    void gather_near(const Vec3& c, double r, double reach);
-    [[nodiscard]] bool free_at(double ox, double oz) const;
+    /// First contact below using the local list (falls back to the grid when the fall
+    /// leaves the list's skin).
+    [[nodiscard]] Fall contact_below(const Vec3& c, double r);
+    [[nodiscard]] Fall fall(const Vec3& c, double r);
+    /// Local (Verlet) list: every settled sphere within r + r_max + s + skin of `origin`.
+    void rebuild_local(const Vec3& origin, double r, double s);
+    void gather_near(const Vec3& c, double r, double s);
+    /// True when the centre displaced by (ox, oz) from c overlaps no settled sphere.
+    [[nodiscard]] bool free_at(const Vec3& c, double r, double ox, double oz) const;
     [[nodiscard]] bool crosses_wall(double x, double z, double r) const;
     [[nodiscard]] bool touches_wall(const Vec3& c, double r) const;
+    /// Fills arc_start_/arc_length_ with the runs of samples whose margin is ≥ 0 (not yet
+    /// merged across angle 0); returns the number of free samples.
+    int find_free_runs(const double* margin, int n);
     /// Chooses the move direction; false when no stage has a free position.
     bool choose_move(const Vec3& c, double r, double s, const Move& previous, Random& rng,
                      Move& chosen);
@@ -119,7 +130,12 @@ class Protocol {
     std::vector<SweepTable> tables_;
     // Scratch buffers reused by every drop (no allocation in the drop loop).
     std::vector<Near> near_;
-    std::vector<unsigned char> free_;
+    std::vector<Sphere> local_;
+    Vec3 local_origin_ = Vec3::Zero();
+    bool local_valid_ = false;
+    double skin_ = 0.0;
+    std::vector<double> margin_;
+    std::vector<std::uint64_t> free_bits_;
     std::vector<int> arc_start_;
     std::vector<int> arc_length_;
     std::vector<std::pair<double, double>> lift_scratch_;

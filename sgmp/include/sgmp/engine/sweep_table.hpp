@@ -21,16 +21,25 @@ class SweepTable {
             x_[h] = std::sin(theta);
             z_[h] = std::cos(theta);
         }
+        for (std::size_t k = 0; k < static_cast<std::size_t>(positions); ++k) {
+            sample_x_.push_back(x_[2 * k]);
+            sample_z_.push_back(z_[2 * k]);
+        }
     }
     [[nodiscard]] int positions() const { return positions_; }
     /// Unit offset of half-step entry h ∈ [0, 2n).
     [[nodiscard]] double x(int h) const { return x_[h]; }
     [[nodiscard]] double z(int h) const { return z_[h]; }
+    /// The n samples alone, contiguous (sample k = entry 2k), for vectorised sweeps.
+    [[nodiscard]] const double* sample_x() const { return sample_x_.data(); }
+    [[nodiscard]] const double* sample_z() const { return sample_z_.data(); }
 
   private:
     int positions_;
     std::vector<double> x_;
     std::vector<double> z_;
+    std::vector<double> sample_x_;
+    std::vector<double> sample_z_;
 };
 
 }  // namespace sgmp::engine

@@ -5,11 +5,13 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/engine/pack_checks.hpp"
@@ -41,6 +43,7 @@ struct Options {
     std::string contact = "none";
     double momentum = 0.0;
     std::string walls = "fix";
+    long stall_moves = 50;
     long max_moves = 100000;
 };
 
@@ -99,6 +102,9 @@ void add_protocol(CLI::App& app, Options& o) {
                    "side walls: fix (a particle a move brings to a wall stops there, thesis) | "
                    "block (walls are obstacles like particles)")
         ->capture_default_str();
+    app.add_option("--stall-moves", o.stall_moves,
+                   "a particle making this many consecutive moves without falling rests (>= 1)")
+        ->capture_default_str();
     app.add_option("--max-moves", o.max_moves,
                    "bound on sweep-and-move cycles per particle (>= 1); a particle reaching it "
                    "rests where its last fall left it")
@@ -143,6 +149,7 @@ PackRequest to_request(const Options& o) {
     p.contact = parse_choice(parse_contact_model(o.contact), "contact", o.contact, "none, settle");
     p.momentum = o.momentum;
     p.walls = parse_choice(parse_wall_rule(o.walls), "walls", o.walls, "fix, block");
+    p.stall_moves = o.stall_moves;
     p.max_moves = o.max_moves;
     if (const auto error = validate(request)) {
         throw UsageError{*error};
@@ -189,6 +196,45 @@ class Progress {
     Clock::time_point start_;
 };
 
+/// `--config FILE` (after the subcommand): the file's `key = value` lines (TOML/INI, keys
+/// named as the long options, optionally in a [pack] / [arrange] section) become options
+/// placed before the command line's own, so options typed on the command line win.
+std::vector<std::string> expand_config(std::vector<std::string> args) {
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        std::string path;
+        if (args[i] == "--config" && i + 1 < args.size()) {
+            path = args[i + 1];
+        } else if (args[i].rfind("--config=", 0) == 0) {
+            path = args[i].substr(9);
+        } else {
+            continue;
+        }
+        const std::string command = args.empty() ? "" : args.front();
+        std::vector<std::string> injected;
+        for (const CLI::ConfigItem& item : CLI::ConfigTOML().from_file(path)) {
+            if (item.name == "++" || item.name == "--") {
+                continue;  // section markers
+            }
+            if (!item.parents.empty() && item.parents != std::vector<std::string>{command}) {
+                throw UsageError{"--config " + path + ": key '" + item.fullname() +
+                                 "' belongs to no option of '" + command + "'"};
+            }
+            const std::string option = "--" + item.name;
+            if (item.inputs.size() == 1 &&
+                (item.inputs[0] == "true" || item.inputs[0] == "false")) {
+                if (item.inputs[0] == "true")
+                    injected.push_back(option);  // a flag
+                continue;
+            }
+            injected.push_back(option);
+            injected.insert(injected.end(), item.inputs.begin(), item.inputs.end());
+        }
+        args.insert(args.begin() + 1, injected.begin(), injected.end());
+        return args;
+    }
+    return args;
+}
+
 int run_pack(const Options& o) {
     const PackRequest request = to_request(o);
     check_writable(o.out, o.force);
@@ -228,20 +274,33 @@ int main(int argc, char** argv) {
                  "[-0.625, 0.625], floor y = -0.625, no lid; lengths in control-volume sides)"};
     app.set_version_flag("--version", std::string("sgmp ") + sgmp::version());
     app.require_subcommand(1);
+    // A repeated option keeps its last value, so the command line overrides a --config file.
+    app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
     Options pack_options;
     CLI::App* pack = app.add_subcommand("pack",
                                         "drop the particles of a starting arrangement "
                                         "with the protocol and write the pack");
     add_common(*pack, pack_options);
     add_protocol(*pack, pack_options);
-    pack->set_config("--config", "", "read options from a TOML/INI file (key = value lines)");
+    std::string config_file;
+    pack->add_option("--config", config_file,
+                     "read options from a TOML/INI file of 'option = value' lines (e.g. count = "
+                     "1002); options given on the command line win");
     Options arrange_options;
     CLI::App* arrange = app.add_subcommand(
         "arrange", "write the starting arrangement itself (positions before packing)");
     add_common(*arrange, arrange_options);
-    arrange->set_config("--config", "", "read options from a TOML/INI file (key = value lines)");
+    arrange->add_option("--config", config_file,
+                        "read options from a TOML/INI file of 'option = value' lines; options "
+                        "given on the command line win");
     try {
-        app.parse(argc, argv);
+        std::vector<std::string> args(argv + 1, argv + argc);
+        args = expand_config(std::move(args));
+        std::reverse(args.begin(), args.end());  // CLI11 takes the arguments reversed
+        app.parse(args);
+    } catch (const UsageError& e) {
+        std::cerr << "sgmp: " << e.message << "\n";
+        return 2;
     } catch (const CLI::Success& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {

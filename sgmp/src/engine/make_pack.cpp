@@ -26,7 +26,7 @@ std::optional<std::string> validate(const PackRequest& request) {
         return "--count " + std::to_string(request.count) + ": must be between 1 and " +
                std::to_string(kMaxCount);
     }
-    if (!(request.phi_target > 0.0) || !(request.phi_target <= kMaxPhiTarget)) {
+    if (!(request.phi_target > 0.0) || !(request.phi_target <= kMaxPhiTargetAccepted)) {
         return "--phi-target " + format_number(request.phi_target) +
                ": must be in (0, 0.7405] (the densest packing of equal spheres)";
     }
@@ -83,6 +83,9 @@ Pack make_pack(const PackRequest& request, const ProgressCallback& progress, Pac
             case StopReason::NoFreeArc:
                 ++local.resting;
                 break;
+            case StopReason::Stalled:
+                ++local.stalled;
+                break;
             case StopReason::MoveLimit:
                 ++local.move_limit;
                 break;
@@ -103,6 +106,7 @@ Pack make_pack(const PackRequest& request, const ProgressCallback& progress, Pac
     m.set_integer("fixed_floor", static_cast<long long>(local.on_floor));
     m.set_integer("fixed_wall", static_cast<long long>(local.at_wall));
     m.set_integer("resting", static_cast<long long>(local.resting));
+    m.set_integer("stalled", static_cast<long long>(local.stalled));
     m.set_integer("move_limit", static_cast<long long>(local.move_limit));
     if (stats != nullptr) {
         *stats = local;

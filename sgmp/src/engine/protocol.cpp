@@ -373,14 +373,19 @@ DropOutcome Protocol::drop(const Particle& particle, Random& rng) {
     // come to rest where this one waits: it is first lifted straight up until it is free.
     c.y() = lowest_free_height(grid_, c.x(), c.z(), r, max_radius_, c.y(), lift_scratch_);
     Move previous{0.0, 0.0};
+    long stalled = 0;
     for (long moves = 0;; ++moves) {
         const Fall hit = fall(c, r);
+        stalled = hit.y < c.y() ? 0 : stalled + 1;
         c.y() = hit.y;
         if (hit.on_floor) {
             return DropOutcome{c, StopReason::Floor, moves};
         }
         if (touches_wall(c, r)) {
             return DropOutcome{c, StopReason::Wall, moves};
+        }
+        if (moves > 0 && stalled > params_.stall_moves) {
+            return rest(c, r, StopReason::Stalled, moves);
         }
         if (moves >= params_.max_moves) {
             return rest(c, r, StopReason::MoveLimit, moves);

@@ -45,6 +45,9 @@ std::optional<std::string> validate(const ProtocolParams& p, double diameter) {
     if (!(p.momentum >= 0.0) || !(p.momentum < 1.0)) {
         return option_error("momentum", format_number(p.momentum), "must be in [0, 1)");
     }
+    if (p.stall_moves < 1) {
+        return option_error("stall-moves", std::to_string(p.stall_moves), "must be at least 1");
+    }
     if (p.max_moves < 1) {
         return option_error("max-moves", std::to_string(p.max_moves), "must be at least 1");
     }
@@ -129,6 +132,7 @@ void record(const ProtocolParams& p, Metadata& m) {
     m.set("contact", std::string(to_string(p.contact)));
     m.set_number("momentum", p.momentum);
     m.set("walls", std::string(to_string(p.walls)));
+    m.set_integer("stall_moves", p.stall_moves);
     m.set_integer("max_moves", p.max_moves);
 }
 

@@ -17,6 +17,10 @@
 
 namespace sgmp::engine {
 
+/// Largest φ* accepted: the densest packing of equal spheres, π/√18 ≈ 0.74048, rounded to
+/// the 0.7405 users type.
+inline constexpr double kMaxPhiTargetAccepted = 0.7405;
+
 /// Largest particle count accepted.
 inline constexpr std::size_t kMaxCount = 10'000'000;
 
@@ -37,6 +41,7 @@ struct PackStats {
     std::size_t on_floor = 0;    ///< particles fixed by the floor
     std::size_t at_wall = 0;     ///< particles fixed by a wall
     std::size_t resting = 0;     ///< particles left by a sweep with no free position
+    std::size_t stalled = 0;     ///< particles that moved stall_moves times without falling
     std::size_t move_limit = 0;  ///< particles that reached max_moves
 };
 

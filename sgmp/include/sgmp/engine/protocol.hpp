@@ -30,6 +30,8 @@
 ///  - only settled particles are obstacles; particles waiting in the starting arrangement
 ///    are not. A particle whose starting place a settled one has taken meanwhile is first
 ///    lifted straight up to the lowest height where it is free, then falls as usual;
+///  - a particle that makes `stall_moves` consecutive moves without falling at all rests
+///    (a step fall can otherwise leave a particle shuffling forever between supports);
 ///  - `max_moves` bounds the cycles per particle (it rests after its last fall).
 ///
 /// Neighbour search uses a `SettledGrid`: a fall scans only the column of cells below the
@@ -53,6 +55,7 @@ enum class StopReason {
     Floor,      ///< touched the floor
     Wall,       ///< a move reached a side wall (fix rule)
     NoFreeArc,  ///< a sweep found no free position: it rests
+    Stalled,    ///< stall_moves consecutive moves without falling: it rests
     MoveLimit,  ///< reached max_moves cycles: it rests
 };
 

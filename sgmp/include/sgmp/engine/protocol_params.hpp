@@ -68,6 +68,12 @@ struct ProtocolParams {
     /// closest in direction to (1 − m)·bisector + m·previous move. 0 is the thesis.
     double momentum = 0.0;
     WallRule walls = WallRule::Fix;
+    /// A particle that makes this many consecutive moves without falling at all rests where
+    /// it is (it is within one fall step of its support). The thesis does not say how its
+    /// step fall ends a particle that shuffles between places it cannot fall from — with a
+    /// step fall, a particle hovering between supports can oscillate forever; 50 moves
+    /// carry a particle one diameter at the thesis' circle factor.
+    long stall_moves = 50;
     /// Safety bound on sweep-and-move cycles per particle; a particle reaching it rests
     /// where its last fall left it (it is supported there).
     long max_moves = 100000;

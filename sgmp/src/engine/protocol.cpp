@@ -408,4 +408,18 @@ DropOutcome Protocol::drop(const Particle& particle, Random& rng) {
     }
 }
 
+DropOutcome drop_onto(const std::vector<Particle>& settled, const Particle& falling,
+                      const ProtocolParams& params, std::uint64_t seed, const Container& container) {
+    double max_radius = falling.radius;
+    for (const Particle& p : settled) {
+        max_radius = std::max(max_radius, p.radius);
+    }
+    Protocol protocol(container, params, max_radius);
+    for (const Particle& p : settled) {
+        protocol.settle(p);
+    }
+    Random rng(seed);
+    return protocol.drop(falling, rng);
+}
+
 }  // namespace sgmp::engine

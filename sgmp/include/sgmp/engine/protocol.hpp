@@ -144,4 +144,11 @@ class Protocol {
     std::vector<std::pair<double, double>> lift_scratch_;
 };
 
+/// Hand-made beds (tests, figures): drops `falling` from its centre onto `settled` (all
+/// fixed where they are) in `container` and returns where the protocol stops it. Random
+/// choices come from Random(seed).
+DropOutcome drop_onto(const std::vector<Particle>& settled, const Particle& falling,
+                      const ProtocolParams& params = {}, std::uint64_t seed = 1,
+                      const Container& container = {});
+
 }  // namespace sgmp::engine

@@ -1,0 +1,185 @@
+// The `sgmp` executable: errors, refusal to overwrite, determinism of the written bytes,
+// config files, the arrange subcommand.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <boost/test/unit_test.hpp>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "sgmp/pack/pack_file.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Run {
+    int status = -1;
+    std::string out;
+    std::string err;
+};
+
+std::string slurp(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+/// A fresh scratch directory per test case.
+struct Scratch {
+    fs::path dir;
+    Scratch() {
+        dir = fs::temp_directory_path() /
+              ("sgmp-cli-test-" + std::to_string(::getpid()) + "-" +
+               boost::unit_test::framework::current_test_case().p_name.get());
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    ~Scratch() { fs::remove_all(dir); }
+    [[nodiscard]] std::string path(const std::string& name) const { return (dir / name).string(); }
+
+    Run run(const std::string& args) const {
+        const std::string command = std::string("'") + SGMP_EXECUTABLE + "' " + args + " >'" +
+                                    path("stdout") + "' 2>'" + path("stderr") + "'";
+        const int raw = std::system(command.c_str());
+        Run result;
+        result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+        result.out = slurp(path("stdout"));
+        result.err = slurp(path("stderr"));
+        return result;
+    }
+};
+
+/// A usage error: exit 2, one line on stderr starting with `expected`, no output file.
+void expect_refused(const Scratch& s, const std::string& args, const std::string& expected) {
+    const Run r =
+        s.run("pack --arrangement small-dense --seed 1 --out '" + s.path("p.xyz") + "' " + args);
+    BOOST_TEST_INFO("args: " << args << "; stderr: " << r.err);
+    BOOST_TEST(r.status == 2);
+    BOOST_TEST(r.err.find("sgmp: " + expected) == 0u);
+    BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    BOOST_TEST(!fs::exists(s.path("p.xyz")));
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(cli)
+
+BOOST_AUTO_TEST_CASE(bad_values_are_refused_with_option_value_and_rule) {
+    const Scratch s;
+    expect_refused(s, "--count 0", "--count 0: must be between 1 and 10000000");
+    expect_refused(s, "--count 10000001", "--count 10000001: must be between");
+    expect_refused(s, "--count 1", "--count 1: the diameter");
+    expect_refused(s, "--count 100 --phi-target 0", "--phi-target 0: must be in (0, 0.7405]");
+    expect_refused(s, "--count 100 --phi-target 0.75", "--phi-target 0.75: must be in");
+    expect_refused(s, "--count 100 --circle-factor 1", "--circle-factor 1: must be");
+    expect_refused(s, "--count 100 --sweep-positions 2", "--sweep-positions 2: every stage");
+    expect_refused(s, "--count 100 --sweep-stages 8,4", "--sweep-stages 8,4: stages must");
+    expect_refused(s, "--count 100 --fall-step 0", "--fall-step 0: must be greater than 0");
+    expect_refused(s, "--count 100 --fall-step 0.5",
+                   "--fall-step 0.5: must be greater than 0 "
+                   "and less than the diameter");
+    expect_refused(s, "--count 100 --fall bounce", "--fall bounce: must be one of exact, step");
+    expect_refused(s, "--count 100 --gap small", "--gap small: must be one of largest, random");
+    const Run r = s.run("pack --count 100 --arrangement spiral --out '" + s.path("p.xyz") + "'");
+    BOOST_TEST(r.status == 2);
+    BOOST_TEST(r.err ==
+               "sgmp: --arrangement spiral: must be one of single-column, small-dense, "
+               "large-dense, loose-random\n");
+}
+
+BOOST_AUTO_TEST_CASE(an_unwritable_output_is_refused_before_packing) {
+    const Scratch s;
+    std::ofstream(s.path("plain-file")) << "x";
+    const Run r = s.run("pack --count 100 --arrangement small-dense --out '" +
+                        s.path("plain-file") + "/p.xyz'");
+    BOOST_TEST(r.status == 2);
+    BOOST_TEST(r.err.find(s.path("plain-file")) != std::string::npos);
+    BOOST_TEST(r.out.empty());  // refused before any packing summary
+}
+
+BOOST_AUTO_TEST_CASE(an_existing_output_is_kept_unless_forced) {
+    const Scratch s;
+    std::ofstream(s.path("p.xyz")) << "keep me";
+    const std::string args =
+        "pack --count 100 --arrangement large-dense --out '" + s.path("p.xyz") + "'";
+    const Run refused = s.run(args);
+    BOOST_TEST(refused.status == 2);
+    BOOST_TEST(slurp(s.path("p.xyz")) == "keep me");
+    const Run forced = s.run(args + " --force");
+    BOOST_TEST(forced.status == 0);
+    BOOST_TEST(sgmp::read_pack_file(s.path("p.xyz")).particles.size() == 100u);
+}
+
+BOOST_AUTO_TEST_CASE(same_arguments_write_the_same_bytes_and_a_summary_line) {
+    const Scratch s;
+    const std::string common =
+        "pack --count 400 --arrangement loose-random --seed 5 --gap "
+        "random --out ";
+    const Run a = s.run(common + "'" + s.path("a.xyz") + "'");
+    const Run b = s.run(common + "'" + s.path("b.xyz") + "'");
+    BOOST_TEST(a.status == 0);
+    BOOST_TEST(b.status == 0);
+    BOOST_TEST(slurp(s.path("a.xyz")) == slurp(s.path("b.xyz")));
+    BOOST_TEST(slurp(s.path("a.xyz")).size() > 1000u);
+    BOOST_TEST(a.out.find("sgmp: packed 400 particles, loose-random, d=") == 0u);
+    BOOST_TEST(a.out.find("phi(control volume)=0.") != std::string::npos);
+    BOOST_TEST(a.out.find("overlaps=0") != std::string::npos);
+    BOOST_TEST(a.err.empty());  // no progress line when stderr is not a terminal
+    const auto pack = sgmp::read_pack_file(s.path("a.xyz"));
+    BOOST_TEST(pack.metadata.get("generator").value_or("") == "sgmp");
+    BOOST_TEST(pack.metadata.get("seed").value_or("") == "5");
+    BOOST_TEST(pack.metadata.get("gap").value_or("") == "random");
+}
+
+BOOST_AUTO_TEST_CASE(a_config_file_repeats_a_run_and_the_command_line_wins) {
+    const Scratch s;
+    std::ofstream(s.path("run.toml")) << "count = 200\narrangement = \"single-column\"\n"
+                                         "seed = 3\nfall = \"step\"\nout = \""
+                                      << s.path("c.xyz") << "\"\n";
+    const Run a = s.run("pack --config '" + s.path("run.toml") + "'");
+    BOOST_TEST(a.status == 0);
+    const auto pack = sgmp::read_pack_file(s.path("c.xyz"));
+    BOOST_TEST(pack.particles.size() == 200u);
+    BOOST_TEST(pack.metadata.get("fall").value_or("") == "step");
+    const Run b = s.run("pack --config '" + s.path("run.toml") + "' --count 150 --out '" +
+                        s.path("d.xyz") + "'");
+    BOOST_TEST(b.status == 0);
+    BOOST_TEST(sgmp::read_pack_file(s.path("d.xyz")).particles.size() == 150u);
+}
+
+BOOST_AUTO_TEST_CASE(arrange_writes_the_starting_positions) {
+    const Scratch s;
+    const Run r = s.run("arrange --count 300 --arrangement large-dense --seed 2 --out '" +
+                        s.path("start.xyz") + "'");
+    BOOST_TEST(r.status == 0);
+    BOOST_TEST(r.out.find("start height") != std::string::npos);
+    const auto pack = sgmp::read_pack_file(s.path("start.xyz"));
+    BOOST_TEST(pack.particles.size() == 300u);
+    BOOST_TEST(pack.metadata.get("stage").value_or("") == "start");
+    BOOST_TEST(pack.particles.front().id == 1);
+    BOOST_TEST(pack.particles.back().id == 300);
+}
+
+BOOST_AUTO_TEST_CASE(help_and_version) {
+    const Scratch s;
+    const Run help = s.run("pack --help");
+    BOOST_TEST(help.status == 0);
+    for (const char* option :
+         {"--count", "--arrangement", "--seed", "--out", "--force", "--phi-target",
+          "--circle-factor", "--sweep-positions", "--sweep-stages", "--lower-neighbours", "--gap",
+          "--fall", "--fall-step", "--contact", "--momentum", "--walls", "--stall-moves",
+          "--max-moves", "--config"}) {
+        BOOST_TEST_INFO(option);
+        BOOST_TEST(help.out.find(option) != std::string::npos);
+    }
+    BOOST_TEST(help.out.find("=0.001") != std::string::npos);  // defaults are shown
+    const Run version = s.run("--version");
+    BOOST_TEST(version.status == 0);
+    BOOST_TEST(version.out.find("sgmp ") == 0u);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

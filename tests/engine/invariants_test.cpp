@@ -1,0 +1,115 @@
+// The three invariants of every pack, checked by brute force over many packs: no
+// overlapping pair, every sphere inside the container, every sphere supported.
+#include <boost/test/unit_test.hpp>
+#include <functional>
+
+#include "brute_force.hpp"
+#include "sgmp/engine/make_pack.hpp"
+#include "sgmp/engine/pack_checks.hpp"
+
+using namespace sgmp;
+using namespace sgmp::engine;
+
+namespace {
+
+struct Tally {
+    int packs = 0;
+};
+
+/// Checks one pack; returns the number of particles checked.
+void check_invariants(const PackRequest& request, Tally& tally) {
+    const Pack pack = make_pack(request);
+    const double d = *pack.metadata.get_number("diameter");
+    const auto& ps = pack.particles;
+    BOOST_TEST_INFO("count " << request.count << ", " << to_string(request.arrangement) << ", seed "
+                             << request.seed << ", fall " << to_string(request.protocol.fall));
+    BOOST_TEST_REQUIRE(ps.size() == request.count);
+    // Tolerances: 1e-9·d absorbs rounding of contact positions (they are computed to
+    // ~1e-16 relative); anything larger would be a real overlap or gap.
+    const double tolerance = 1e-9 * d;
+    BOOST_TEST(testing::worst_pair_gap(ps) >= -tolerance);
+    BOOST_TEST(testing::worst_penetration(ps, Container{}) <= tolerance);
+    // Exact fall: every sphere touches its support. Step fall: within one step of it.
+    const double support_limit =
+        request.protocol.fall == FallMode::Exact ? tolerance : request.protocol.fall_step;
+    BOOST_TEST(testing::worst_support_distance(ps, Container{}) <= support_limit);
+    // The engine's own O(N) check agrees with the brute force.
+    const PackCheck check = check_pack(ps, Container{}, tolerance, support_limit);
+    BOOST_TEST(check.overlaps == 0u);
+    BOOST_TEST(check.outside == 0u);
+    BOOST_TEST(check.unsupported == 0u);
+    ++tally.packs;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(invariants)
+
+BOOST_AUTO_TEST_CASE(thesis_protocol_packs_over_seeds_arrangements_counts_and_fall_modes) {
+    Tally tally;
+    for (const Arrangement a : {Arrangement::SingleColumn, Arrangement::SmallDense,
+                                Arrangement::LargeDense, Arrangement::LooseRandom}) {
+        for (const std::size_t count : {12u, 60u, 150u, 400u}) {
+            for (const FallMode fall : {FallMode::Exact, FallMode::Step}) {
+                for (const std::uint64_t seed : {1u, 2u, 3u, 4u}) {
+                    PackRequest request;
+                    request.count = count;
+                    request.arrangement = a;
+                    request.seed = seed;
+                    request.protocol.fall = fall;
+                    check_invariants(request, tally);
+                }
+            }
+        }
+    }
+    BOOST_TEST(tally.packs == 128);
+}
+
+BOOST_AUTO_TEST_CASE(improved_protocol_options_keep_the_invariants) {
+    Tally tally;
+    const std::vector<std::function<void(ProtocolParams&)>> variants = {
+        [](ProtocolParams& p) {
+            p.sweep_stages = {8, 120, 720};
+        },
+        [](ProtocolParams& p) { p.gap = GapRule::Random; },
+        [](ProtocolParams& p) { p.contact = ContactModel::Settle; },
+        [](ProtocolParams& p) {
+            p.contact = ContactModel::Settle;
+            p.fall = FallMode::Step;
+        },
+        [](ProtocolParams& p) { p.momentum = 0.5; },
+        [](ProtocolParams& p) { p.walls = WallRule::Block; },
+        [](ProtocolParams& p) {
+            p.circle_factor = 10;
+            p.sweep_stages = {3};
+        },
+    };
+    for (const auto& change : variants) {
+        for (const Arrangement a :
+             {Arrangement::SingleColumn, Arrangement::LargeDense, Arrangement::LooseRandom}) {
+            for (const std::uint64_t seed : {7u, 8u}) {
+                PackRequest request;
+                request.count = 300;
+                request.arrangement = a;
+                request.seed = seed;
+                change(request.protocol);
+                check_invariants(request, tally);
+            }
+        }
+    }
+    BOOST_TEST(tally.packs == 42);
+}
+
+BOOST_AUTO_TEST_CASE(a_dense_target_still_gives_valid_packs) {
+    Tally tally;
+    for (const double phi : {0.3, 0.7405}) {
+        PackRequest request;
+        request.count = 500;
+        request.phi_target = phi;
+        request.arrangement = Arrangement::SmallDense;
+        check_invariants(request, tally);
+    }
+    BOOST_TEST(tally.packs == 2);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

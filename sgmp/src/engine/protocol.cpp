@@ -34,7 +34,6 @@ Protocol::Protocol(const Container& container, const ProtocolParams& params, dou
         tables_.emplace_back(n);
     }
     const int largest = params.sweep_stages.back();
-    margin_.resize(static_cast<std::size_t>(largest));
     free_bits_.resize(static_cast<std::size_t>((largest + 63) / 64));
     arc_start_.reserve(static_cast<std::size_t>(largest));
     arc_length_.reserve(static_cast<std::size_t>(largest));
@@ -167,6 +166,19 @@ void Protocol::gather_near(const Vec3& c, double r, double s) {
             near_.push_back(Near{a, b, q});
         }
     }
+    if (params_.walls == WallRule::Block) {
+        // A wall is one more linear constraint: the sample crosses x_max iff
+        // c_x + s·u_x + r > x_max ⟺ −s·u_x < c_x + r − x_max (likewise for the others).
+        const auto wall = [&](double a, double b, double q) {
+            if (q > -std::abs(a) - std::abs(b)) {
+                near_.push_back(Near{a, b, q});
+            }
+        };
+        wall(-s, 0.0, c.x() + r - container_.x_max);
+        wall(s, 0.0, container_.x_min + r - c.x());
+        wall(0.0, -s, c.z() + r - container_.z_max);
+        wall(0.0, s, container_.z_min + r - c.z());
+    }
 }
 
 bool Protocol::free_at(const Vec3& c, double r, double ox, double oz) const {
@@ -233,8 +245,12 @@ bool Protocol::pick_in_arc(const SweepTable& table, int start, int length, const
     return true;
 }
 
-int Protocol::find_free_runs(const double* margin, int n) {
-    // Free flags packed 64 to a word, then runs found from the bit transitions.
+int Protocol::find_free_runs(const SweepTable& table) {
+    // Free flags packed 64 to a word (bit k of word w: sample 64w + k), two samples at a
+    // time. Sample k is free iff a·u_x + b·u_z ≥ q for every blocking constraint.
+    const int n = table.positions();
+    const double* ux = table.sample_x();
+    const double* uz = table.sample_z();
     const int words = (n + 63) / 64;
     for (int w = 0; w < words; ++w) {
         const int begin = 64 * w;
@@ -242,14 +258,24 @@ int Protocol::find_free_runs(const double* margin, int n) {
         std::uint64_t bits = 0;
         int k = begin;
 #if defined(__SSE2__)
-        const __m128d zero = _mm_setzero_pd();
         for (; k + 1 < end; k += 2) {
-            const int two = _mm_movemask_pd(_mm_cmpge_pd(_mm_loadu_pd(margin + k), zero));
-            bits |= static_cast<std::uint64_t>(two) << (k - begin);
+            const __m128d x = _mm_loadu_pd(ux + k);
+            const __m128d z = _mm_loadu_pd(uz + k);
+            __m128d free = _mm_cmpeq_pd(x, x);  // all ones
+            for (const Near& near : near_) {
+                const __m128d value = _mm_add_pd(_mm_mul_pd(_mm_set1_pd(near.a), x),
+                                                 _mm_mul_pd(_mm_set1_pd(near.b), z));
+                free = _mm_and_pd(free, _mm_cmpge_pd(value, _mm_set1_pd(near.q)));
+            }
+            bits |= static_cast<std::uint64_t>(_mm_movemask_pd(free)) << (k - begin);
         }
 #endif
         for (; k < end; ++k) {
-            bits |= static_cast<std::uint64_t>(margin[k] >= 0.0) << (k - begin);
+            bool free = true;
+            for (const Near& near : near_) {
+                free = free && near.a * ux[k] + near.b * uz[k] >= near.q;
+            }
+            bits |= static_cast<std::uint64_t>(free) << (k - begin);
         }
         free_bits_[w] = bits;
     }
@@ -282,29 +308,7 @@ bool Protocol::choose_move(const Vec3& c, double r, double s, const Move& previo
                            Move& chosen) {
     for (const SweepTable& table : tables_) {
         const int n = table.positions();
-        // Vectorisable passes: margin[k] = min over blocking spheres of a·u_x + b·u_z − q;
-        // sample k is free iff margin[k] ≥ 0 (the sign of x − q is exactly that of x ≥ q).
-        double* margin = margin_.data();
-        std::fill(margin, margin + n, 1.0);
-        const double* ux = table.sample_x();
-        const double* uz = table.sample_z();
-        for (const Near& near : near_) {
-            const double a = near.a;
-            const double b = near.b;
-            const double q = near.q;
-            for (int k = 0; k < n; ++k) {
-                margin[k] = std::min(margin[k], a * ux[k] + b * uz[k] - q);
-            }
-        }
-        if (params_.walls == WallRule::Block) {
-            for (int k = 0; k < n; ++k) {
-                if (crosses_wall(c.x() + s * ux[k], c.z() + s * uz[k], r)) {
-                    margin[k] = -1.0;
-                }
-            }
-        }
-        // Runs of free samples; a run touching both ends wraps round angle 0.
-        const int free_count = find_free_runs(margin, n);
+        const int free_count = find_free_runs(table);
         if (free_count == 0) {
             continue;  // next, finer stage
         }
@@ -409,7 +413,8 @@ DropOutcome Protocol::drop(const Particle& particle, Random& rng) {
 }
 
 DropOutcome drop_onto(const std::vector<Particle>& settled, const Particle& falling,
-                      const ProtocolParams& params, std::uint64_t seed, const Container& container) {
+                      const ProtocolParams& params, std::uint64_t seed,
+                      const Container& container) {
     double max_radius = falling.radius;
     for (const Particle& p : settled) {
         max_radius = std::max(max_radius, p.radius);

@@ -80,9 +80,9 @@ class Protocol {
     [[nodiscard]] std::size_t settled_count() const { return grid_.size(); }
 
   private:
-    /// A sphere that can block some sweep sample: the sample at unit offset (u_x, u_z)
-    /// collides iff a·u_x + b·u_z < q, from |δ + s·u|² < D² with δ = c − c_j:
-    /// a = 2s·δ_x, b = 2s·δ_z, q = D² − |δ|² − s².
+    /// A sphere (or, with the block rule, a wall) that can block some sweep sample: the sample at
+    /// unit offset (u_x, u_z) collides iff a·u_x + b·u_z < q, from |δ + s·u|² < D² with δ = c −
+    /// c_j: a = 2s·δ_x, b = 2s·δ_z, q = D² − |δ|² − s².
     struct Near {
         double a;
         double b;
@@ -110,9 +110,9 @@ class Protocol {
     [[nodiscard]] bool free_at(const Vec3& c, double r, double ox, double oz) const;
     [[nodiscard]] bool crosses_wall(double x, double z, double r) const;
     [[nodiscard]] bool touches_wall(const Vec3& c, double r) const;
-    /// Fills arc_start_/arc_length_ with the runs of samples whose margin is ≥ 0 (not yet
-    /// merged across angle 0); returns the number of free samples.
-    int find_free_runs(const double* margin, int n);
+    /// Tests every sample of `table` against near_ and fills arc_start_/arc_length_ with the
+    /// runs of free samples (not yet merged across angle 0); returns the free count.
+    int find_free_runs(const SweepTable& table);
     /// Chooses the move direction; false when no stage has a free position.
     bool choose_move(const Vec3& c, double r, double s, const Move& previous, Random& rng,
                      Move& chosen);
@@ -137,7 +137,6 @@ class Protocol {
     Vec3 local_origin_ = Vec3::Zero();
     bool local_valid_ = false;
     double skin_ = 0.0;
-    std::vector<double> margin_;
     std::vector<std::uint64_t> free_bits_;
     std::vector<int> arc_start_;
     std::vector<int> arc_length_;

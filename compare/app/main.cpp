@@ -1,0 +1,263 @@
+// sgmp-compare: metrics of sphere packs and agreement reports between groups of packs.
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <stdexcept>
+
+#include "sgmp/compare/agreement.hpp"
+#include "sgmp/compare/measure.hpp"
+#include "sgmp/compare/metrics_output.hpp"
+#include "sgmp/compare/parallel.hpp"
+#include "sgmp/compare/report_files.hpp"
+#include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/input_error.hpp"
+#include "sgmp/pack/pack_file.hpp"
+#include "sgmp/pack/version.hpp"
+
+namespace fs = std::filesystem;
+using namespace sgmp;
+using namespace sgmp::compare;
+
+namespace {
+
+/// A usage error: exit status 2.
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+struct CommonOptions {
+    std::vector<double> region;
+    MeasureOptions measure;
+    unsigned threads = 0;
+    bool timings = false;
+    bool force = false;
+    std::string out;
+};
+
+void add_common(CLI::App* command, CommonOptions& o) {
+    command->add_option("--out", o.out, "output directory (created atomically)")->required();
+    command->add_flag("--force", o.force, "replace an existing output directory");
+    command
+        ->add_option("--region", o.region,
+                     "box measured: xlo xhi ylo yhi zlo zhi (length units; default the control "
+                     "volume -0.5 0.5 -0.5 0.5 -0.5 0.5); must lie inside the container")
+        ->expected(6);
+    command->add_option("--slab", o.measure.slab_thickness,
+                        "phi(y) slab thickness, in mean diameters d (default 1)");
+    command->add_option("--gr-bin", o.measure.gr_bin_width, "g(r) bin width, in d (default 0.02)");
+    command->add_option("--gr-range", o.measure.gr_range, "g(r) range, in d (default 5)");
+    command->add_flag("--gr-thesis", o.measure.gr_thesis,
+                      "also the thesis' single-particle RDF (eq. 3.7-3.10), column g_thesis");
+    command->add_option("--q6-cutoff", o.measure.q6_cutoff,
+                        "Q6 bonds join centres within this x (ri + rj) (default 1.2)");
+    command->add_option("--overlap-floor", o.measure.overlap_floor,
+                        "overlaps deeper than this x d are counted (default 1e-9)");
+    command->add_option("--threads", o.threads,
+                        "worker threads (default all cores; results do not depend on it)");
+    command->add_flag("--timings", o.timings, "print the seconds of each stage to stderr");
+}
+
+void apply(CommonOptions& o) {
+    if (!o.region.empty()) {
+        o.measure.region = Box{Vec3(o.region[0], o.region[2], o.region[4]),
+                               Vec3(o.region[1], o.region[3], o.region[5])};
+    }
+    try {
+        validate(o.measure);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    }
+    set_thread_count(o.threads);
+    try {
+        check_writable(o.out, o.force);
+    } catch (const std::runtime_error& error) {
+        throw UsageError(std::string(error.what()) + (o.force ? "" : " (use --force to replace)"));
+    }
+}
+
+std::string command_line(int argc, char** argv) {
+    std::string line = "sgmp-compare";
+    for (int i = 1; i < argc; ++i) {
+        line += " ";
+        line += argv[i];
+    }
+    return line;
+}
+
+Pack read_pack(const std::string& path) {
+    Pack pack = read_pack_file(path);
+    if (pack.particles.empty()) {
+        throw InputError(path, 0, "the pack has no particles");
+    }
+    return pack;
+}
+
+Measurement measure_pack(const std::string& path, const Pack& pack, const CommonOptions& o) {
+    const auto start = std::chrono::steady_clock::now();
+    Measurement m;
+    try {
+        m = measure(pack, o.measure);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(path + ": " + error.what());
+    }
+    if (o.timings) {
+        const auto& t = last_stage_times();
+        const double total =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::cerr << "timings " << path << ": index " << t.index << " s, phi " << t.phi
+                  << " s, phi(y) " << t.phi_profile << " s, overlaps " << t.overlaps
+                  << " s, Z(delta)+g(r)+Q6 " << t.local << " s, total " << total << " s\n";
+    }
+    return m;
+}
+
+std::string stem_of(const std::string& path) {
+    fs::path p(path);
+    if (p.extension() == ".gz") {
+        p = p.stem();
+    }
+    return p.stem().string();
+}
+
+int run_measure(const std::vector<std::string>& packs, CommonOptions& o, const std::string& cmd) {
+    apply(o);
+    std::map<std::string, std::string> stems;
+    for (const auto& path : packs) {
+        const auto [it, fresh] = stems.emplace(stem_of(path), path);
+        if (!fresh) {
+            throw UsageError("packs " + it->second + " and " + path +
+                             " would write the same output names '" + it->first + ".*'");
+        }
+    }
+    write_directory_atomically(o.out, o.force, [&](const fs::path& dir) {
+        for (const auto& path : packs) {
+            const auto read_start = std::chrono::steady_clock::now();
+            const Pack pack = read_pack(path);
+            if (o.timings) {
+                std::cerr << "timings " << path << ": read "
+                          << std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                                           read_start)
+                                 .count()
+                          << " s\n";
+            }
+            const Measurement m = measure_pack(path, pack, o);
+            auto prov = provenance(path, pack, o.measure);
+            prov["command"] = cmd;
+            const std::string stem = stem_of(path);
+            std::ofstream(dir / (stem + ".metrics.json")) << metrics_json(m, prov).dump(2) << "\n";
+            std::ofstream g(dir / (stem + ".g_r.csv"));
+            write_g_r_csv(g, m, prov);
+            std::ofstream phi(dir / (stem + ".phi_y.csv"));
+            write_phi_y_csv(phi, m, prov);
+            std::ofstream pz(dir / (stem + ".p_z.csv"));
+            write_p_z_csv(pz, m, prov);
+            if (!g || !phi || !pz) {
+                throw std::runtime_error((dir / stem).string() + ": cannot write outputs");
+            }
+        }
+    });
+    return 0;
+}
+
+Group measure_group(const std::string& label, const std::vector<std::string>& packs,
+                    const CommonOptions& o) {
+    Group group;
+    group.label = label;
+    for (const auto& path : packs) {
+        const Pack pack = read_pack(path);
+        group.packs.push_back(summarise(path, pack, measure_pack(path, pack, o)));
+    }
+    return group;
+}
+
+int run_report(const std::vector<std::string>& a, const std::vector<std::string>& b,
+               const std::string& label_a, const std::string& label_b, CommonOptions& o,
+               const std::string& cmd) {
+    if (label_a == label_b) {
+        throw UsageError("--label-a and --label-b must differ (both are '" + label_a + "')");
+    }
+    for (const auto& label : {label_a, label_b}) {
+        if (label.empty() || label.find_first_of(",\n\"") != std::string::npos) {
+            throw UsageError("labels must be non-empty without commas, quotes or line breaks: '" +
+                             label + "'");
+        }
+    }
+    apply(o);
+    std::vector<Group> groups{measure_group(label_a, a, o), measure_group(label_b, b, o)};
+    const Report report = build_report(std::move(groups), {{0, 1}});
+    ReportContext context;
+    context.command = cmd;
+    context.parameters = provenance("", Pack{}, o.measure)["parameters"];
+    const auto used = write_report(o.out, o.force, report, context);
+    if (!used.plots_made) {
+        std::cerr << "sgmp-compare: plots skipped: " << used.plots_note << "\n";
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "sgmp-compare " + std::string(sgmp::version()) +
+        ": metrics of sphere packs (packing fraction, overlaps, coordination, g(r), Q6) and "
+        "agreement reports between groups of packs. Lengths are in the pack's units (the "
+        "control volume's side); *_over_d values and g(r) distances are in mean diameters d."};
+    app.set_version_flag("--version", std::string(sgmp::version()));
+    app.require_subcommand(1);
+
+    std::vector<std::string> packs;
+    CommonOptions measure_options;
+    CLI::App* measure_cmd = app.add_subcommand("measure",
+                                               "measure packs: per pack <stem>.metrics.json, "
+                                               "<stem>.g_r.csv, <stem>.phi_y.csv, <stem>.p_z.csv");
+    measure_cmd->add_option("packs", packs, "pack files (extended XYZ or LIGGGHTS dump, .gz ok)")
+        ->required();
+    add_common(measure_cmd, measure_options);
+
+    std::vector<std::string> a;
+    std::vector<std::string> b;
+    std::string label_a = "A";
+    std::string label_b = "B";
+    CommonOptions report_options;
+    CLI::App* report_cmd = app.add_subcommand(
+        "report",
+        "agreement report of packs A against reference packs B, per particle count: "
+        "report.md, report.csv, report.json, plots/*.svg, index.html");
+    report_cmd->add_option("--a", a, "candidate packs")->required();
+    report_cmd
+        ->add_option("--b", b, "reference packs (their seed-to-seed spread sets the tolerance)")
+        ->required();
+    report_cmd->add_option("--label-a", label_a, "name of the A side (default A)");
+    report_cmd->add_option("--label-b", label_b, "name of the B side (default B)");
+    add_common(report_cmd, report_options);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "sgmp-compare: " << e.what() << " (see --help)\n";
+        return 2;
+    }
+    const std::string cmd = command_line(argc, argv);
+    try {
+        if (*measure_cmd) {
+            return run_measure(packs, measure_options, cmd);
+        }
+        return run_report(a, b, label_a, label_b, report_options, cmd);
+    } catch (const UsageError& error) {
+        std::cerr << "sgmp-compare: " << error.what() << "\n";
+        return 2;
+    } catch (const std::exception& error) {
+        std::cerr << "sgmp-compare: " << error.what() << "\n";
+        return 1;
+    }
+}

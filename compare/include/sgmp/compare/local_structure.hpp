@@ -1,0 +1,56 @@
+#pragma once
+/// @file local_structure.hpp
+/// One pass over the origins (centres in the region) gathering what needs their
+/// neighbourhoods: coordination at several gap tolerances, the g(r) pair histogram and
+/// shell volumes, and the bond sums of Q6.
+///
+/// Coordination: j is a contact of i when the gap |c_i − c_j| − r_i − r_j ≤ δ·d (d the mean
+/// diameter); walls and the floor are contacts when the distance from the centre to them
+/// minus r_i is ≤ δ·d, counted apart from Z. Q6 bonds: |c_i − c_j| ≤ q6_cutoff·(r_i + r_j).
+
+#include <cstdint>
+#include <vector>
+
+#include "sgmp/compare/bond_order.hpp"
+#include "sgmp/compare/neighbour_index.hpp"
+#include "sgmp/compare/rdf.hpp"
+
+namespace sgmp::compare {
+
+struct Coordination {
+    std::vector<double> tolerances;  // δ, in units of d
+    std::int64_t origins = 0;
+    std::vector<double> z_mean;               // per tolerance
+    std::vector<std::vector<double>> p_z;     // per tolerance, P(Z = 0, 1, ...)
+    std::vector<std::int64_t> wall_contacts;  // per tolerance, total over origins
+};
+
+struct BondOrder {
+    double cutoff = 0.0;  // bonds within cutoff·(r_i + r_j)
+    double q6_global = 0.0;
+    double q6_local_mean = 0.0;
+    std::int64_t origins_with_bonds = 0;
+};
+
+struct LocalStructure {
+    Coordination coordination;
+    Rdf rdf;
+    BondOrder bond_order;
+};
+
+struct LocalStructureOptions {
+    std::vector<double> tolerances;
+    double mean_diameter = 0.0;
+    double bin_width_over_d = 0.02;
+    std::size_t bins = 250;
+    double q6_cutoff = 1.2;
+    Box space;            // of neighbour centres, for g(r)
+    Container container;  // for wall contacts
+};
+
+LocalStructure measure_local_structure(const std::vector<Particle>& particles,
+                                       const NeighbourIndex& index,
+                                       const std::vector<Index>& origins,
+                                       const LocalStructureOptions& options);
+
+}  // namespace sgmp::compare

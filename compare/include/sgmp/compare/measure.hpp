@@ -1,0 +1,70 @@
+#pragma once
+/// @file measure.hpp
+/// All metrics of one pack in one region (DESIGN §5): packing fraction and its profile,
+/// overlaps, coordination at several tolerances, g(r) and Q6.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sgmp/compare/local_structure.hpp"
+#include "sgmp/compare/overlaps.hpp"
+#include "sgmp/compare/packing_fraction.hpp"
+#include "sgmp/pack/pack.hpp"
+
+namespace sgmp::compare {
+
+/// Gap tolerances δ (units of d) at which coordination is reported, with their JSON names.
+const std::vector<double>& coordination_tolerances();
+const std::vector<std::string>& coordination_tolerance_names();  // "0", "1e-6", ...
+
+struct MeasureOptions {
+    std::optional<Box> region;     // default: the control volume
+    double slab_thickness = 1.0;   // φ(y) slabs, units of d
+    double gr_bin_width = 0.02;    // units of d
+    double gr_range = 5.0;         // units of d
+    bool gr_thesis = false;        // also the thesis' single-particle RDF
+    double q6_cutoff = 1.2;        // Q6 bonds within this·(r_i + r_j)
+    double overlap_floor = 1e-9;   // overlaps deeper than this·d are counted
+    std::size_t worst_count = 10;  // worst overlaps listed
+};
+
+/// Throws std::invalid_argument naming the option and the rule when an option is invalid.
+void validate(const MeasureOptions& options);
+
+struct Measurement {
+    std::size_t count = 0;
+    double mean_diameter = 0.0;
+    double min_radius = 0.0;
+    double max_radius = 0.0;
+    bool polydisperse = false;
+    Box region;
+    Container container;
+    std::string container_source;  // "metadata" or "thesis default"
+    double top = 0.0;              // highest sphere top, max(y + r)
+    double phi = 0.0;
+    PhiProfile phi_profile;
+    OverlapStats overlaps;
+    LocalStructure local;
+    std::optional<ThesisRdf> thesis_rdf;
+};
+
+/// The container of a pack: its `container` metadata key, else the thesis container.
+/// Throws std::invalid_argument when the key is present but malformed.
+Container container_of(const Pack& pack, std::string* source = nullptr);
+
+/// Measures `pack`. Throws std::invalid_argument for an empty pack, a region that is not
+/// inside the container or holds no centre, and invalid options.
+Measurement measure(const Pack& pack, const MeasureOptions& options);
+
+/// Seconds spent in each stage of the last measure() call on this thread (for benchmarks).
+struct StageTimes {
+    double index = 0.0;
+    double phi = 0.0;
+    double phi_profile = 0.0;
+    double overlaps = 0.0;
+    double local = 0.0;
+};
+const StageTimes& last_stage_times();
+
+}  // namespace sgmp::compare

@@ -1,0 +1,34 @@
+#pragma once
+/// @file metrics_output.hpp
+/// Per-pack outputs: the metrics JSON (DESIGN §7 keys, plus more) and the curve CSVs
+/// (g_r, phi_y, p_z), each with a header row after '#' provenance lines.
+
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <string>
+
+#include "sgmp/compare/measure.hpp"
+
+namespace sgmp::compare {
+
+/// What made an output: tool, version, input path, the input's provenance and the options.
+nlohmann::ordered_json provenance(const std::string& input, const Pack& pack,
+                                  const MeasureOptions& options);
+
+/// Metrics JSON of one pack. `provenance` is stored under "provenance".
+nlohmann::ordered_json metrics_json(const Measurement& m, const nlohmann::ordered_json& provenance);
+
+/// A box as {"lo": [x, y, z], "hi": [x, y, z]}.
+nlohmann::ordered_json box_json(const Box& box);
+
+void write_g_r_csv(std::ostream& out, const Measurement& m,
+                   const nlohmann::ordered_json& provenance);
+void write_phi_y_csv(std::ostream& out, const Measurement& m,
+                     const nlohmann::ordered_json& provenance);
+void write_p_z_csv(std::ostream& out, const Measurement& m,
+                   const nlohmann::ordered_json& provenance);
+
+/// The provenance as "# key: value" comment lines (one JSON value per line).
+void write_comment_header(std::ostream& out, const nlohmann::ordered_json& provenance);
+
+}  // namespace sgmp::compare

@@ -1,0 +1,31 @@
+#pragma once
+/// @file packing_fraction.hpp
+/// Exact packing fraction of a box region and its profile in horizontal slabs:
+///     φ(B) = Σ_i V(ball_i ∩ B) / |B|,
+/// with V from sgmp::sphere_box_volume (closed form when one axis clips the ball,
+/// tanh–sinh quadrature otherwise). Works for any radii.
+
+#include <vector>
+
+#include "sgmp/pack/geometry.hpp"
+#include "sgmp/pack/particle.hpp"
+
+namespace sgmp::compare {
+
+/// φ of `region` (volume of the spheres inside it over its volume).
+double packing_fraction(const std::vector<Particle>& particles, const Box& region);
+
+/// φ in horizontal slabs [y0 + k·t, y0 + (k+1)·t] ∩ [y0, y1] of the x–z cross-section of
+/// `cross_section` (its y bounds are ignored); the last slab is cut at y1.
+struct PhiProfile {
+    double y0 = 0.0;
+    double thickness = 0.0;
+    std::vector<double> y_lo;
+    std::vector<double> y_hi;
+    std::vector<double> phi;
+};
+PhiProfile packing_fraction_profile(const std::vector<Particle>& particles,
+                                    const Box& cross_section, double y0, double y1,
+                                    double thickness);
+
+}  // namespace sgmp::compare

@@ -1,0 +1,34 @@
+#pragma once
+/// @file report_render.hpp
+/// Text forms of an agreement report: Markdown (for people: a summary first, every number
+/// with its unit or marked as a ratio), CSV and JSON (for scripts), and the HTML page that
+/// gathers the tables and the plots.
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "sgmp/compare/agreement.hpp"
+
+namespace sgmp::compare {
+
+/// What made the report, recorded in every output.
+struct ReportContext {
+    std::string command;  // the command line
+    nlohmann::ordered_json parameters;
+    bool plots_made = false;
+    std::string plots_note;               // why plots were skipped, when they were
+    std::vector<std::string> plot_files;  // SVG names, in display order
+};
+
+std::string render_markdown(const Report& report, const ReportContext& context);
+std::string render_csv(const Report& report, const ReportContext& context);
+nlohmann::ordered_json render_json(const Report& report, const ReportContext& context);
+/// `svgs` holds the SVG texts of context.plot_files, inlined so the page stands alone.
+std::string render_html(const Report& report, const ReportContext& context,
+                        const std::vector<std::string>& svgs);
+
+/// The agreement rules in words (used by every output).
+std::vector<std::string> rule_statements();
+
+}  // namespace sgmp::compare

@@ -1,0 +1,160 @@
+#include "sgmp/compare/measure.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace sgmp::compare {
+namespace {
+
+thread_local StageTimes stage_times;
+
+class Stopwatch {
+  public:
+    double lap() {
+        const auto now = std::chrono::steady_clock::now();
+        const double seconds = std::chrono::duration<double>(now - start_).count();
+        start_ = now;
+        return seconds;
+    }
+
+  private:
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+std::string describe(const Box& b) {
+    return format_number(b.lo.x()) + " " + format_number(b.hi.x()) + " " + format_number(b.lo.y()) +
+           " " + format_number(b.hi.y()) + " " + format_number(b.lo.z()) + " " +
+           format_number(b.hi.z());
+}
+
+void check_region(const Box& region, const Container& container) {
+    if (!((region.hi - region.lo).array() > 0.0).all() || !region.lo.allFinite() ||
+        !region.hi.allFinite()) {
+        throw std::invalid_argument("--region '" + describe(region) +
+                                    "' must be finite with xlo < xhi, ylo < yhi, zlo < zhi");
+    }
+    if (region.lo.x() < container.x_min || region.hi.x() > container.x_max ||
+        region.lo.z() < container.z_min || region.hi.z() > container.z_max ||
+        region.lo.y() < container.floor) {
+        throw std::invalid_argument("--region '" + describe(region) +
+                                    "' must lie inside the container '" + container.to_string() +
+                                    "' (x_min x_max z_min z_max floor)");
+    }
+}
+
+}  // namespace
+
+const std::vector<double>& coordination_tolerances() {
+    static const std::vector<double> values{0.0, 1e-6, 1e-3, 1e-2, 2e-2, 5e-2};
+    return values;
+}
+
+const std::vector<std::string>& coordination_tolerance_names() {
+    static const std::vector<std::string> names{"0", "1e-6", "1e-3", "1e-2", "2e-2", "5e-2"};
+    return names;
+}
+
+void validate(const MeasureOptions& o) {
+    const auto positive = [](double v, const char* name) {
+        if (!(v > 0.0) || !std::isfinite(v)) {
+            throw std::invalid_argument(std::string(name) + " must be a positive number");
+        }
+    };
+    positive(o.slab_thickness, "--slab");
+    positive(o.gr_bin_width, "--gr-bin");
+    positive(o.gr_range, "--gr-range");
+    positive(o.q6_cutoff, "--q6-cutoff");
+    if (!(o.overlap_floor >= 0.0) || !std::isfinite(o.overlap_floor)) {
+        throw std::invalid_argument("--overlap-floor must be a non-negative number");
+    }
+    if (o.gr_bin_width > o.gr_range) {
+        throw std::invalid_argument("--gr-bin must not exceed --gr-range");
+    }
+    if (o.gr_range / o.gr_bin_width > 1e5) {
+        throw std::invalid_argument("--gr-range / --gr-bin must be at most 100000 bins");
+    }
+}
+
+Container container_of(const Pack& pack, std::string* source) {
+    const auto text = pack.metadata.get("container");
+    if (source != nullptr) {
+        *source = text ? "metadata" : "thesis default";
+    }
+    return text ? Container::parse(*text) : Container{};
+}
+
+Measurement measure(const Pack& pack, const MeasureOptions& options) {
+    validate(options);
+    const auto& particles = pack.particles;
+    if (particles.empty()) {
+        throw std::invalid_argument("the pack has no particles");
+    }
+    Stopwatch watch;
+    Measurement m;
+    m.count = particles.size();
+    m.mean_diameter = mean_diameter(pack);
+    const auto [lo, hi] = std::minmax_element(
+        particles.begin(), particles.end(),
+        [](const Particle& a, const Particle& b) { return a.radius < b.radius; });
+    m.min_radius = lo->radius;
+    m.max_radius = hi->radius;
+    m.polydisperse = m.min_radius != m.max_radius;
+    m.container = container_of(pack, &m.container_source);
+    m.region = options.region.value_or(control_volume());
+    check_region(m.region, m.container);
+    m.top = -std::numeric_limits<double>::infinity();
+    for (const Particle& p : particles) {
+        m.top = std::max(m.top, p.center.y() + p.radius);
+    }
+    const double d = m.mean_diameter;
+
+    std::vector<Vec3> centres;
+    centres.reserve(particles.size());
+    std::vector<Index> origins;
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        centres.push_back(particles[i].center);
+        if (m.region.contains(particles[i].center)) {
+            origins.push_back(static_cast<Index>(i));
+        }
+    }
+    if (origins.empty()) {
+        throw std::invalid_argument("--region '" + describe(m.region) +
+                                    "' holds no particle centre");
+    }
+    const NeighbourIndex index(centres);
+    std::vector<Vec3>().swap(centres);
+    stage_times.index = watch.lap();
+
+    m.phi = packing_fraction(particles, m.region);
+    stage_times.phi = watch.lap();
+    m.phi_profile =
+        packing_fraction_profile(particles, m.region, m.container.floor,
+                                 std::max(m.top, m.region.hi.y()), options.slab_thickness * d);
+    stage_times.phi_profile = watch.lap();
+    m.overlaps = measure_overlaps(particles, index, m.container, d, options.overlap_floor,
+                                  options.worst_count);
+    stage_times.overlaps = watch.lap();
+
+    LocalStructureOptions local;
+    local.tolerances = coordination_tolerances();
+    local.mean_diameter = d;
+    local.bin_width_over_d = options.gr_bin_width;
+    local.bins = static_cast<std::size_t>(std::llround(options.gr_range / options.gr_bin_width));
+    local.q6_cutoff = options.q6_cutoff;
+    local.space = centre_space(particles, m.container, 0.5 * d);
+    local.container = m.container;
+    m.local = measure_local_structure(particles, index, origins, local);
+    if (options.gr_thesis) {
+        m.thesis_rdf = thesis_rdf(particles, m.region, m.phi, options.gr_bin_width * d, local.bins);
+    }
+    stage_times.local = watch.lap();
+    return m;
+}
+
+const StageTimes& last_stage_times() {
+    return stage_times;
+}
+
+}  // namespace sgmp::compare

@@ -1,0 +1,196 @@
+#include "sgmp/compare/metrics_output.hpp"
+
+#include "sgmp/pack/version.hpp"
+
+namespace sgmp::compare {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json overlap_json(const OverlapSummary& s) {
+    Json worst = Json::array();
+    for (const auto& r : s.worst) {
+        Json entry;
+        entry["id_a"] = r.id_a;
+        if (r.id_b >= 0) {
+            entry["id_b"] = r.id_b;
+        } else {
+            entry["id_b"] = nullptr;
+        }
+        entry["depth_over_d"] = r.depth_over_d;
+        worst.push_back(entry);
+    }
+    return Json{{"count", s.count},
+                {"count_any", s.count_any},
+                {"max_over_d", s.max_over_d},
+                {"mean_over_d", s.mean_over_d},
+                {"worst", worst}};
+}
+
+std::string csv_number(double v) {
+    return format_number(v);
+}
+
+}  // namespace
+
+Json box_json(const Box& box) {
+    return Json{{"lo", {box.lo.x(), box.lo.y(), box.lo.z()}},
+                {"hi", {box.hi.x(), box.hi.y(), box.hi.z()}}};
+}
+
+Json provenance(const std::string& input, const Pack& pack, const MeasureOptions& o) {
+    Json keys = Json::object();
+    for (const auto& [key, value] : pack.metadata.entries()) {
+        keys[key] = value;
+    }
+    Json parameters;
+    if (o.region) {
+        parameters["region"] = box_json(*o.region);
+    } else {
+        parameters["region"] = "control volume";
+    }
+    parameters["slab_thickness_over_d"] = o.slab_thickness;
+    parameters["gr_bin_width_over_d"] = o.gr_bin_width;
+    parameters["gr_range_over_d"] = o.gr_range;
+    parameters["gr_thesis"] = o.gr_thesis;
+    parameters["q6_cutoff"] = o.q6_cutoff;
+    parameters["overlap_floor_over_d"] = o.overlap_floor;
+    return Json{{"tool", "sgmp-compare"},
+                {"version", sgmp::version()},
+                {"input", input},
+                {"input_metadata", keys},
+                {"parameters", parameters}};
+}
+
+Json metrics_json(const Measurement& m, const Json& prov) {
+    Json j;
+    j["count"] = m.count;
+    j["diameter"] = m.mean_diameter;
+    j["phi"] = m.phi;
+    j["overlaps"] = m.overlaps.pairs.count;
+    j["overlap_max_over_d"] = m.overlaps.pairs.max_over_d;
+    const auto& c = m.local.coordination;
+    const auto& names = coordination_tolerance_names();
+    for (std::size_t t = 0; t < c.tolerances.size(); ++t) {
+        j["z_mean_tol_" + names[t]] = c.z_mean[t];
+    }
+    j["q6_global"] = m.local.bond_order.q6_global;
+    j["q6_local_mean"] = m.local.bond_order.q6_local_mean;
+    j["region"] = box_json(m.region);
+    // Further detail.
+    j["overlap_mean_over_d"] = m.overlaps.pairs.mean_over_d;
+    j["overlaps_any"] = m.overlaps.pairs.count_any;
+    j["wall_overlaps"] = m.overlaps.walls.count;
+    j["wall_overlap_max_over_d"] = m.overlaps.walls.max_over_d;
+    j["wall_overlap_mean_over_d"] = m.overlaps.walls.mean_over_d;
+    for (std::size_t t = 0; t < c.tolerances.size(); ++t) {
+        j["wall_contacts_tol_" + names[t]] = c.wall_contacts[t];
+    }
+    j["origins"] = c.origins;
+    j["polydisperse"] = m.polydisperse;
+    j["radius_min"] = m.min_radius;
+    j["radius_max"] = m.max_radius;
+    j["container"] = m.container.to_string();
+    j["container_source"] = m.container_source;
+    j["top"] = m.top;
+    j["definitions"] = Json{
+        {"diameter", "mean diameter d = 2<r>; the length unit of every *_over_d value and of g(r)"},
+        {"phi", "exact sphere volume inside the region / region volume"},
+        {"overlaps", "pairs of the whole pack with r_i + r_j - |c_i - c_j| > overlap_floor*d"},
+        {"overlaps_any", "pairs of the whole pack with any positive overlap"},
+        {"z_mean_tol_X",
+         "mean number of particles j with |c_i-c_j| - r_i - r_j <= X*d, over centres i in the "
+         "region (walls apart)"},
+        {"wall_contacts_tol_X", "wall and floor contacts of centres in the region at gap <= X*d"},
+        {"q6", "Steinhardt Q6, bonds |c_i-c_j| <= q6_cutoff*(r_i + r_j), origins in the region"},
+        {"g_r",
+         "origins: centres in the region; neighbours: all particles; shells counted inside the "
+         "centre space (container shrunk by d/2 at walls and floor, up to the highest centre), "
+         "density N/|space|"}};
+    j["overlaps_detail"] = Json{{"floor_over_d", m.overlaps.floor},
+                                {"pairs", overlap_json(m.overlaps.pairs)},
+                                {"walls", overlap_json(m.overlaps.walls)}};
+    Json pz;
+    for (std::size_t t = 0; t < c.tolerances.size(); ++t) {
+        pz[names[t]] = c.p_z[t];
+    }
+    j["p_z"] = pz;
+    const auto& rdf = m.local.rdf;
+    j["g_r_detail"] = Json{{"bin_width_over_d", rdf.bin_width_over_d},
+                           {"bins", rdf.g.size()},
+                           {"origins", rdf.origins},
+                           {"edge_corrected_origins", rdf.corrected_origins},
+                           {"density", rdf.density},
+                           {"centre_space", box_json(rdf.space)}};
+    j["q6_detail"] = Json{{"cutoff", m.local.bond_order.cutoff},
+                          {"origins_with_bonds", m.local.bond_order.origins_with_bonds}};
+    if (m.thesis_rdf) {
+        j["g_r_thesis_detail"] = Json{{"origin_id", m.thesis_rdf->origin_id},
+                                      {"region_count", m.thesis_rdf->region_count},
+                                      {"phi_as_density", m.thesis_rdf->phi}};
+    }
+    j["phi_profile"] =
+        Json{{"y0", m.phi_profile.y0},
+             {"slab_thickness", m.phi_profile.thickness},
+             {"cross_section", "the region's x-z extent, from the floor to the pack top"}};
+    j["provenance"] = prov;
+    return j;
+}
+
+void write_comment_header(std::ostream& out, const Json& prov) {
+    for (const auto& [key, value] : prov.items()) {
+        out << "# " << key << ": " << value.dump() << '\n';
+    }
+}
+
+void write_g_r_csv(std::ostream& out, const Measurement& m, const Json& prov) {
+    write_comment_header(out, prov);
+    const auto& rdf = m.local.rdf;
+    out << "r_over_d,r_lo_over_d,r_hi_over_d,g,pairs,shell_volume";
+    if (m.thesis_rdf) {
+        out << ",g_thesis";
+    }
+    out << '\n';
+    for (std::size_t k = 0; k < rdf.g.size(); ++k) {
+        const double w = rdf.bin_width_over_d;
+        out << csv_number(rdf.r_over_d[k]) << ',' << csv_number(static_cast<double>(k) * w) << ','
+            << csv_number(static_cast<double>(k + 1) * w) << ',' << csv_number(rdf.g[k]) << ','
+            << rdf.pairs[k] << ',' << csv_number(rdf.shell_volume[k]);
+        if (m.thesis_rdf) {
+            out << ',' << csv_number(m.thesis_rdf->g[k]);
+        }
+        out << '\n';
+    }
+}
+
+void write_phi_y_csv(std::ostream& out, const Measurement& m, const Json& prov) {
+    write_comment_header(out, prov);
+    const auto& p = m.phi_profile;
+    out << "y_mid,y_lo,y_hi,phi\n";
+    for (std::size_t k = 0; k < p.phi.size(); ++k) {
+        out << csv_number(0.5 * (p.y_lo[k] + p.y_hi[k])) << ',' << csv_number(p.y_lo[k]) << ','
+            << csv_number(p.y_hi[k]) << ',' << csv_number(p.phi[k]) << '\n';
+    }
+}
+
+void write_p_z_csv(std::ostream& out, const Measurement& m, const Json& prov) {
+    write_comment_header(out, prov);
+    const auto& c = m.local.coordination;
+    const auto& names = coordination_tolerance_names();
+    std::size_t rows = 0;
+    out << "z";
+    for (std::size_t t = 0; t < c.tolerances.size(); ++t) {
+        out << ",p_tol_" << names[t];
+        rows = std::max(rows, c.p_z[t].size());
+    }
+    out << '\n';
+    for (std::size_t z = 0; z < rows; ++z) {
+        out << z;
+        for (std::size_t t = 0; t < c.tolerances.size(); ++t) {
+            out << ',' << csv_number(z < c.p_z[t].size() ? c.p_z[t][z] : 0.0);
+        }
+        out << '\n';
+    }
+}
+
+}  // namespace sgmp::compare

@@ -1,0 +1,57 @@
+#include "sgmp/compare/report_files.hpp"
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "sgmp/compare/report_plots.hpp"
+#include "sgmp/pack/atomic_file.hpp"
+
+namespace sgmp::compare {
+namespace fs = std::filesystem;
+namespace {
+
+void write_text(const fs::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    out.flush();
+    if (!out) {
+        throw std::runtime_error(path.string() + ": cannot write");
+    }
+}
+
+std::string read_text(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+/// The SVG element of a file, without the XML prolog and doctype, for inlining in HTML.
+std::string svg_element(const std::string& svg) {
+    const auto start = svg.find("<svg");
+    return start == std::string::npos ? svg : svg.substr(start);
+}
+
+}  // namespace
+
+ReportContext write_report(const fs::path& directory, bool overwrite, const Report& report,
+                           ReportContext context) {
+    write_directory_atomically(directory, overwrite, [&](const fs::path& temporary) {
+        const PlotResult plots = make_plots(report, temporary);
+        context.plots_made = plots.made;
+        context.plots_note = plots.note;
+        context.plot_files = plots.files;
+        std::vector<std::string> svgs;
+        for (const auto& file : plots.files) {
+            svgs.push_back(svg_element(read_text(temporary / file)));
+        }
+        write_text(temporary / "report.md", render_markdown(report, context));
+        write_text(temporary / "report.csv", render_csv(report, context));
+        write_text(temporary / "report.json", render_json(report, context).dump(2) + "\n");
+        write_text(temporary / "index.html", render_html(report, context, svgs));
+    });
+    return context;
+}
+
+}  // namespace sgmp::compare

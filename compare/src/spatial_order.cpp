@@ -1,0 +1,90 @@
+#include "sgmp/compare/spatial_order.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace sgmp::compare {
+namespace {
+
+/// Spreads the low 21 bits of v so that two zero bits separate consecutive bits.
+std::uint64_t spread_bits(std::uint64_t v) {
+    v &= 0x1fffff;
+    v = (v | v << 32) & 0x1f00000000ffffULL;
+    v = (v | v << 16) & 0x1f0000ff0000ffULL;
+    v = (v | v << 8) & 0x100f00f00f00f00fULL;
+    v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
+    v = (v | v << 2) & 0x1249249249249249ULL;
+    return v;
+}
+
+}  // namespace
+
+std::vector<Index> spatial_order(const std::vector<Particle>& points, std::vector<Index> subset,
+                                 double cell) {
+    if (subset.empty()) {
+        return subset;
+    }
+    Vec3 lo = points[subset.front()].center;
+    for (const Index i : subset) {
+        lo = lo.cwiseMin(points[i].center);
+    }
+    std::vector<std::pair<std::uint64_t, Index>> keyed;
+    keyed.reserve(subset.size());
+    for (const Index i : subset) {
+        std::uint64_t code = 0;
+        for (int axis = 0; axis < 3; ++axis) {
+            const double c = std::floor((points[i].center[axis] - lo[axis]) / cell);
+            const auto bits = static_cast<std::uint64_t>(std::clamp(c, 0.0, 2097151.0));
+            code |= spread_bits(bits) << axis;
+        }
+        keyed.emplace_back(code, i);
+    }
+    std::sort(keyed.begin(), keyed.end());
+    for (std::size_t k = 0; k < keyed.size(); ++k) {
+        subset[k] = keyed[k].second;
+    }
+    return subset;
+}
+
+std::vector<QueryGroup> query_groups(const std::vector<Particle>& points,
+                                     const std::vector<Index>& ordered, std::size_t size) {
+    std::vector<QueryGroup> groups;
+    for (std::size_t begin = 0; begin < ordered.size(); begin += size) {
+        QueryGroup g;
+        g.begin = begin;
+        g.end = std::min(ordered.size(), begin + size);
+        Vec3 lo = points[ordered[begin]].center;
+        Vec3 hi = lo;
+        for (std::size_t k = begin; k < g.end; ++k) {
+            lo = lo.cwiseMin(points[ordered[k]].center);
+            hi = hi.cwiseMax(points[ordered[k]].center);
+        }
+        g.center = 0.5 * (lo + hi);
+        g.half_diagonal = 0.5 * (hi - lo).norm();
+        groups.push_back(g);
+    }
+    return groups;
+}
+
+void Candidates::gather(const NeighbourIndex& tree, const std::vector<Particle>& points,
+                        const QueryGroup& group, double radius) {
+    // Every member lies within half_diagonal of the centre; a small widening covers the
+    // rounding of that bound.
+    tree.within(group.center, (radius + group.half_diagonal) * (1.0 + 1e-12), index);
+    std::sort(index.begin(), index.end());
+    const std::size_t n = index.size();
+    x.resize(n);
+    y.resize(n);
+    z.resize(n);
+    r.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const Particle& p = points[index[k]];
+        x[k] = p.center.x();
+        y[k] = p.center.y();
+        z[k] = p.center.z();
+        r[k] = p.radius;
+    }
+}
+
+}  // namespace sgmp::compare

@@ -1,6 +1,7 @@
 # --- SGMP packing engine: arrangements, the protocol, whole packs; the `sgmp` CLI. -----
 add_library(sgmp_engine
     src/engine/colour_bins.cpp
+    src/engine/size_modes.cpp
     src/engine/arrangement.cpp
     src/engine/settled_grid.cpp
     src/engine/protocol_params.cpp

@@ -33,6 +33,7 @@ struct Options {
     std::string out;
     bool force = false;
     double phi_target = kThesisPhiTarget;
+    std::string size_modes = "1:1";
     double circle_factor = 50.0;
     int sweep_positions = 120;
     std::string sweep_stages;
@@ -64,6 +65,10 @@ void add_common(CLI::App& app, Options& o) {
     app.add_option("--phi-target", o.phi_target,
                    "target packing fraction phi* in (0, 0.7405]; sets the diameter by "
                    "(N/3)(pi/6)d^3 = phi*")
+        ->capture_default_str();
+    app.add_option("--size-modes", o.size_modes,
+                   "particle sizes as relative-diameter:number-fraction pairs, e.g. 1:0.7,0.5:0.3; "
+                   "the scale s solves (N/3)(pi/6) sum f_i (a_i s)^3 = phi*")
         ->capture_default_str();
 }
 
@@ -131,6 +136,12 @@ PackRequest to_request(const Options& o) {
                                        o.arrangement, std::string(arrangement_names()));
     request.seed = o.seed;
     request.phi_target = o.phi_target;
+    const auto modes = parse_size_modes(o.size_modes);
+    if (!modes) {
+        throw UsageError{"--size-modes " + o.size_modes +
+                         ": must be positive diameter:fraction pairs, e.g. 1:0.7,0.5:0.3"};
+    }
+    request.size_modes = *modes;
     ProtocolParams& p = request.protocol;
     p.circle_factor = o.circle_factor;
     p.sweep_stages = {o.sweep_positions};

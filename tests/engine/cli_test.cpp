@@ -84,6 +84,7 @@ BOOST_AUTO_TEST_CASE(bad_values_are_refused_with_option_value_and_rule) {
                    "and less than the diameter");
     expect_refused(s, "--count 100 --fall bounce", "--fall bounce: must be one of exact, step");
     expect_refused(s, "--count 100 --gap small", "--gap small: must be one of largest, random");
+    expect_refused(s, "--count 100 --size-modes 1:0.5,x", "--size-modes 1:0.5,x: must be");
     const Run r = s.run("pack --count 100 --arrangement spiral --out '" + s.path("p.xyz") + "'");
     BOOST_TEST(r.status == 2);
     BOOST_TEST(r.err ==
@@ -169,10 +170,11 @@ BOOST_AUTO_TEST_CASE(help_and_version) {
     const Run help = s.run("pack --help");
     BOOST_TEST(help.status == 0);
     for (const char* option :
-         {"--count", "--arrangement", "--seed", "--out", "--force", "--phi-target",
-          "--circle-factor", "--sweep-positions", "--sweep-stages", "--lower-neighbours", "--gap",
-          "--fall", "--fall-step", "--contact", "--momentum", "--walls", "--stall-moves",
-          "--max-moves", "--config"}) {
+         {"--count",        "--arrangement",      "--seed",          "--out",
+          "--force",        "--phi-target",       "--circle-factor", "--sweep-positions",
+          "--sweep-stages", "--lower-neighbours", "--gap",           "--fall",
+          "--fall-step",    "--contact",          "--momentum",      "--walls",
+          "--stall-moves",  "--max-moves",        "--config",        "--size-modes"}) {
         BOOST_TEST_INFO(option);
         BOOST_TEST(help.out.find(option) != std::string::npos);
     }

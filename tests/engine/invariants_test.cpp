@@ -100,6 +100,25 @@ BOOST_AUTO_TEST_CASE(improved_protocol_options_keep_the_invariants) {
     BOOST_TEST(tally.packs == 42);
 }
 
+BOOST_AUTO_TEST_CASE(multi_modal_packs_keep_the_invariants) {
+    Tally tally;
+    for (const Arrangement a : {Arrangement::SingleColumn, Arrangement::SmallDense,
+                                Arrangement::LargeDense, Arrangement::LooseRandom}) {
+        for (const FallMode fall : {FallMode::Exact, FallMode::Step}) {
+            for (const std::uint64_t seed : {1u, 2u}) {
+                PackRequest request;
+                request.count = 300;
+                request.arrangement = a;
+                request.seed = seed;
+                request.protocol.fall = fall;
+                request.size_modes = {SizeMode{1.0, 0.5}, SizeMode{0.5, 0.3}, SizeMode{0.3, 0.2}};
+                check_invariants(request, tally);
+            }
+        }
+    }
+    BOOST_TEST(tally.packs == 16);
+}
+
 BOOST_AUTO_TEST_CASE(a_dense_target_still_gives_valid_packs) {
     Tally tally;
     for (const double phi : {0.3, 0.7405}) {

@@ -19,49 +19,61 @@ Particle make_particle(std::size_t index, const Vec3& center, double diameter, i
     return Particle{static_cast<std::int64_t>(index + 1), center, 0.5 * diameter, colour};
 }
 
-std::vector<Particle> single_column(std::size_t count, double d, const std::vector<int>& colours,
+/// Centres 0.2 of the two diameters' mean apart (1.2·d apart for equal spheres).
+std::vector<Particle> single_column(const std::vector<double>& d, const std::vector<int>& colours,
                                     const Container& box) {
     std::vector<Particle> out;
-    out.reserve(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        const double y = box.floor + 0.5 * d + 1.2 * d * static_cast<double>(i);
-        out.push_back(make_particle(i, Vec3(0.0, y, 0.0), d, colours[i]));
+    out.reserve(d.size());
+    double y = box.floor + 0.5 * d.front();
+    for (std::size_t i = 0; i < d.size(); ++i) {
+        if (i > 0) {
+            y += 0.6 * (d[i - 1] + d[i]);
+        }
+        out.push_back(make_particle(i, Vec3(0.0, y, 0.0), d[i], colours[i]));
     }
     return out;
 }
 
-/// n × n layers with centres at lo + (i + ½)·width/n, layers d apart from the floor up.
-std::vector<Particle> layers(std::size_t count, double d, int n, double lo, double width,
-                             const std::vector<int>& colours, const Container& box) {
+/// n × n layers with centres at lo + (i + ½)·width/n; layer L spans
+/// [floor + L·d_max, floor + (L+1)·d_max) and its spheres rest on its bottom.
+std::vector<Particle> layers(const std::vector<double>& d, double d_max, int n, double lo,
+                             double width, const std::vector<int>& colours, const Container& box) {
     std::vector<Particle> out;
-    out.reserve(count);
+    out.reserve(d.size());
     const double spacing = width / n;
     const std::size_t per_layer = static_cast<std::size_t>(n) * n;
-    for (std::size_t i = 0; i < count; ++i) {
+    for (std::size_t i = 0; i < d.size(); ++i) {
         const std::size_t layer = i / per_layer;
         const std::size_t in_layer = i % per_layer;
         const double x = lo + (static_cast<double>(in_layer % n) + 0.5) * spacing;
         const double z = lo + (static_cast<double>(in_layer / n) + 0.5) * spacing;
-        const double y = box.floor + 0.5 * d + d * static_cast<double>(layer);
-        out.push_back(make_particle(i, Vec3(x, y, z), d, colours[i]));
+        const double y = box.floor + 0.5 * d[i] + d_max * static_cast<double>(layer);
+        out.push_back(make_particle(i, Vec3(x, y, z), d[i], colours[i]));
     }
     return out;
 }
 
-std::vector<Particle> loose_random(std::size_t count, double d, const std::vector<int>& colours,
-                                   const Container& box, Random& rng) {
+std::vector<Particle> loose_random(const std::vector<double>& d, double d_max,
+                                   const std::vector<int>& colours, const Container& box,
+                                   Random& rng) {
     std::vector<Particle> out;
-    out.reserve(count);
-    const double r = 0.5 * d;
-    SettledGrid grid(box, d);
+    out.reserve(d.size());
+    SettledGrid grid(box, d_max);
     std::vector<std::pair<double, double>> blocked;
-    double level = box.floor + r;
-    for (std::size_t i = 0; i < count; ++i) {
+    // The level is that of the sphere bottoms: the previous centre y_p and radius r_p give
+    // the next start y_p − r_p + r (exactly y_p for equal sizes).
+    double y_previous = box.floor + 0.5 * d.front();
+    double r_previous = 0.5 * d.front();
+    for (std::size_t i = 0; i < d.size(); ++i) {
+        const double r = 0.5 * d[i];
         const double x = rng.uniform(box.x_min + r, box.x_max - r);
         const double z = rng.uniform(box.z_min + r, box.z_max - r);
-        level = lowest_free_height(grid, x, z, r, r, level, blocked);
-        out.push_back(make_particle(i, Vec3(x, level, z), d, colours[i]));
-        grid.insert(Sphere{x, level, z, r});
+        const double from = r == r_previous ? y_previous : y_previous - r_previous + r;
+        const double y = lowest_free_height(grid, x, z, r, 0.5 * d_max, from, blocked);
+        y_previous = y;
+        r_previous = r;
+        out.push_back(make_particle(i, Vec3(x, y, z), d[i], colours[i]));
+        grid.insert(Sphere{x, y, z, r});
     }
     return out;
 }
@@ -104,22 +116,30 @@ int grid_columns(Arrangement arrangement, double diameter) {
 
 std::vector<Particle> make_arrangement(Arrangement arrangement, std::size_t count, double diameter,
                                        Random& rng) {
-    if (!(diameter > 0.0) || !(diameter < kContainerSide)) {
-        throw std::invalid_argument("diameter " + std::to_string(diameter) +
-                                    " must be in (0, 1.25)");
+    return make_arrangement(arrangement, std::vector<double>(count, diameter), rng);
+}
+
+std::vector<Particle> make_arrangement(Arrangement arrangement,
+                                       const std::vector<double>& diameters, Random& rng) {
+    if (diameters.empty()) {
+        return {};
+    }
+    const auto [d_min, d_max] = std::minmax_element(diameters.begin(), diameters.end());
+    if (!(*d_min > 0.0) || !(*d_max < kContainerSide)) {
+        throw std::invalid_argument("diameters must be in (0, 1.25)");
     }
     const Container box;
-    const std::vector<int> colours = draw_colours(count, rng);
-    const int n = grid_columns(arrangement, diameter);
+    const std::vector<int> colours = draw_colours(diameters.size(), rng);
+    const int n = grid_columns(arrangement, *d_max);
     switch (arrangement) {
         case Arrangement::SingleColumn:
-            return single_column(count, diameter, colours, box);
+            return single_column(diameters, colours, box);
         case Arrangement::SmallDense:
-            return layers(count, diameter, n, -0.5 * kControlSide, kControlSide, colours, box);
+            return layers(diameters, *d_max, n, -0.5 * kControlSide, kControlSide, colours, box);
         case Arrangement::LargeDense:
-            return layers(count, diameter, n, box.x_min, box.x_max - box.x_min, colours, box);
+            return layers(diameters, *d_max, n, box.x_min, box.x_max - box.x_min, colours, box);
         case Arrangement::LooseRandom:
-            return loose_random(count, diameter, colours, box, rng);
+            return loose_random(diameters, *d_max, colours, box, rng);
     }
     return {};
 }

@@ -1,5 +1,7 @@
 #include "sgmp/engine/make_pack.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "sgmp/engine/protocol.hpp"
@@ -9,6 +11,28 @@ namespace sgmp::engine {
 
 namespace {
 
+struct Sizes {
+    double scale;
+    double smallest;
+    double largest;
+};
+
+Sizes sizes_of(const PackRequest& request) {
+    const double scale = diameter_scale(request.count, request.phi_target, request.size_modes);
+    Sizes sizes{scale, INFINITY, 0.0};
+    for (const SizeMode& m : request.size_modes) {
+        sizes.smallest = std::min(sizes.smallest, m.relative_diameter * scale);
+        sizes.largest = std::max(sizes.largest, m.relative_diameter * scale);
+    }
+    return sizes;
+}
+
+std::vector<Particle> starting_particles(const PackRequest& request, Random& rng) {
+    const std::vector<double> diameters =
+        draw_diameters(request.count, request.phi_target, request.size_modes, rng);
+    return make_arrangement(request.arrangement, diameters, rng);
+}
+
 void record_request(const PackRequest& request, double diameter, Metadata& m) {
     m.set("generator", "sgmp");
     m.set("version", version());
@@ -17,6 +41,7 @@ void record_request(const PackRequest& request, double diameter, Metadata& m) {
     m.set_number("phi_target", request.phi_target);
     m.set("arrangement", std::string(to_string(request.arrangement)));
     m.set("seed", std::to_string(request.seed));
+    m.set("size_modes", size_modes_to_string(request.size_modes));
 }
 
 }  // namespace
@@ -30,24 +55,33 @@ std::optional<std::string> validate(const PackRequest& request) {
         return "--phi-target " + format_number(request.phi_target) +
                ": must be in (0, 0.7405] (the densest packing of equal spheres)";
     }
-    const double d = diameter_for_count(request.count, request.phi_target);
-    if (!(d < kContainerSide)) {
-        return "--count " + std::to_string(request.count) + ": the diameter " + format_number(d) +
-               " it gives at phi-target " + format_number(request.phi_target) +
-               " does not fit the 1.25-wide container";
+    if (request.size_modes.empty()) {
+        return std::string("--size-modes: needs at least one mode");
     }
-    return validate(request.protocol, d);
+    for (const SizeMode& m : request.size_modes) {
+        if (!(m.relative_diameter > 0.0) || !(m.fraction > 0.0) ||
+            !std::isfinite(m.relative_diameter) || !std::isfinite(m.fraction)) {
+            return "--size-modes " + size_modes_to_string(request.size_modes) +
+                   ": relative diameters and fractions must be positive";
+        }
+    }
+    const Sizes sizes = sizes_of(request);
+    if (!(sizes.largest < kContainerSide)) {
+        return "--count " + std::to_string(request.count) + ": the diameter " +
+               format_number(sizes.largest) + " it gives at phi-target " +
+               format_number(request.phi_target) + " does not fit the 1.25-wide container";
+    }
+    return validate(request.protocol, sizes.smallest);
 }
 
 Pack make_start_pack(const PackRequest& request) {
     if (const auto error = validate(request)) {
         throw std::invalid_argument(*error);
     }
-    const double d = diameter_for_count(request.count, request.phi_target);
     Random rng(request.seed);
     Pack pack;
-    pack.particles = make_arrangement(request.arrangement, request.count, d, rng);
-    record_request(request, d, pack.metadata);
+    pack.particles = starting_particles(request, rng);
+    record_request(request, sizes_of(request).scale, pack.metadata);
     pack.metadata.set("stage", "start");
     pack.metadata.set("container", Container{}.to_string());
     pack.metadata.set_number("start_height", starting_height(pack.particles));
@@ -59,14 +93,15 @@ Pack make_pack(const PackRequest& request, const ProgressCallback& progress, Pac
         throw std::invalid_argument(*error);
     }
     const Container container;
-    const double d = diameter_for_count(request.count, request.phi_target);
+    const Sizes sizes = sizes_of(request);
+    const double d = sizes.scale;
     Random rng(request.seed);
-    std::vector<Particle> particles = make_arrangement(request.arrangement, request.count, d, rng);
+    std::vector<Particle> particles = starting_particles(request, rng);
     PackStats local;
     local.diameter = d;
     local.start_height = starting_height(particles, container);
 
-    Protocol protocol(container, request.protocol, 0.5 * d);
+    Protocol protocol(container, request.protocol, 0.5 * sizes.largest);
     const std::size_t report_every = 1000;
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const DropOutcome outcome = protocol.drop(particles[i], rng);

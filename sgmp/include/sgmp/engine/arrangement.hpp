@@ -52,6 +52,13 @@ int grid_columns(Arrangement arrangement, double diameter);
 std::vector<Particle> make_arrangement(Arrangement arrangement, std::size_t count, double diameter,
                                        Random& rng);
 
+/// The same for particles of several sizes (diameters in drop order, each in (0, 1.25)):
+/// the grids use the largest diameter for their columns and layer height (each sphere rests
+/// on the bottom of its layer), the single column keeps gaps of 0.2 × the mean diameter of
+/// neighbours, and the loose cloud's level is that of the sphere bottoms.
+std::vector<Particle> make_arrangement(Arrangement arrangement,
+                                       const std::vector<double>& diameters, Random& rng);
+
 /// Height of a set of particles above the floor: max(y + r) − floor (0 when empty). This
 /// is the "height of starting pack" reported beside the thesis' Tables 6.2, 7.2 and 8.2.
 double starting_height(const std::vector<Particle>& particles, const Container& container = {});

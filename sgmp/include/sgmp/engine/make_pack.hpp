@@ -12,6 +12,7 @@
 
 #include "sgmp/engine/arrangement.hpp"
 #include "sgmp/engine/protocol_params.hpp"
+#include "sgmp/engine/size_modes.hpp"
 #include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/pack.hpp"
 
@@ -31,6 +32,9 @@ struct PackRequest {
     /// φ*: N/3 spheres fill the control volume at this fraction (sets d).
     double phi_target = kThesisPhiTarget;
     ProtocolParams protocol;
+    /// Size distribution (size_modes.hpp); the default single mode is the thesis' equal
+    /// spheres. The header's `diameter` is the scale s (the diameter of relative size 1).
+    std::vector<SizeMode> size_modes = std::vector<SizeMode>(1);
 };
 
 /// What happened during packing (also recorded in the pack's metadata).

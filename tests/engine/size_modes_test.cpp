@@ -1,0 +1,80 @@
+#include <algorithm>
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+#include <numbers>
+
+#include "sgmp/engine/make_pack.hpp"
+#include "sgmp/engine/size_modes.hpp"
+
+using namespace sgmp;
+using namespace sgmp::engine;
+namespace tt = boost::test_tools;
+
+BOOST_AUTO_TEST_SUITE(size_modes)
+
+BOOST_AUTO_TEST_CASE(modes_parse_and_print) {
+    const auto modes = parse_size_modes("1:0.7,0.5:0.3");
+    BOOST_TEST_REQUIRE(modes.has_value());
+    BOOST_TEST(modes->size() == 2u);
+    BOOST_TEST((*modes)[1].relative_diameter == 0.5);
+    BOOST_TEST((*modes)[1].fraction == 0.3);
+    BOOST_TEST(size_modes_to_string(*modes) == "1:0.7,0.5:0.3");
+    BOOST_TEST(is_monodisperse(*parse_size_modes("1:1")));
+    BOOST_TEST(!is_monodisperse(*modes));
+    for (const char* bad : {"", "1", "1:", ":1", "1:0", "-1:1", "1:1,", "1:1;2:1", "a:1"}) {
+        BOOST_TEST_INFO(bad);
+        BOOST_TEST(!parse_size_modes(bad).has_value());
+    }
+}
+
+BOOST_AUTO_TEST_CASE(the_scale_fills_a_third_into_the_control_volume) {
+    // Monodisperse: the thesis rule.
+    BOOST_TEST(diameter_scale(1002, 0.63, {SizeMode{}}) == diameter_for_count(1002, 0.63),
+               tt::tolerance(1e-14));
+    // Bimodal: (N/3)(π/6) Σ f_i (a_i s)³ = φ*, fractions normalised (0.7 + 0.3 = 1 here
+    // written as 7:3).
+    const std::vector<SizeMode> modes = {SizeMode{1.0, 7.0}, SizeMode{0.5, 3.0}};
+    const double s = diameter_scale(900, 0.6, modes);
+    const double volume =
+        300.0 * std::numbers::pi / 6.0 * (0.7 * s * s * s + 0.3 * std::pow(0.5 * s, 3));
+    BOOST_TEST(volume == 0.6, tt::tolerance(1e-13));
+}
+
+BOOST_AUTO_TEST_CASE(diameters_follow_the_fractions_in_random_order) {
+    const std::vector<SizeMode> modes = {SizeMode{1.0, 0.5}, SizeMode{0.5, 0.3},
+                                         SizeMode{0.25, 0.2}};
+    Random rng(1);
+    const auto d = draw_diameters(1001, 0.63, modes, rng);
+    const double s = diameter_scale(1001, 0.63, modes);
+    BOOST_TEST(d.size() == 1001u);
+    // Shares 500.5, 300.3, 200.2: floors 500, 300, 200, the last one to the largest remainder.
+    BOOST_TEST(std::count(d.begin(), d.end(), s) == 501);
+    BOOST_TEST(std::count(d.begin(), d.end(), 0.5 * s) == 300);
+    BOOST_TEST(std::count(d.begin(), d.end(), 0.25 * s) == 200);
+    BOOST_TEST(!std::is_sorted(d.begin(), d.end()));
+    // A single mode draws nothing from the generator.
+    Random a(9);
+    Random b(9);
+    draw_diameters(50, 0.63, {SizeMode{}}, a);
+    BOOST_TEST(a.raw() == b.raw());
+}
+
+BOOST_AUTO_TEST_CASE(a_multi_modal_pack_records_its_modes_and_sizes) {
+    PackRequest request;
+    request.count = 400;
+    request.arrangement = Arrangement::LooseRandom;
+    request.size_modes = {SizeMode{1.0, 0.5}, SizeMode{0.4, 0.5}};
+    const Pack pack = make_pack(request);
+    BOOST_TEST(pack.metadata.get("size_modes").value_or("") == "1:0.5,0.4:0.5");
+    const double s = *pack.metadata.get_number("diameter");
+    std::size_t small = 0;
+    for (const Particle& p : pack.particles) {
+        BOOST_TEST((p.radius == s / 2 || p.radius == 0.2 * s));
+        small += p.radius < s / 2 ? 1 : 0;
+    }
+    BOOST_TEST(small == 200u);
+    request.size_modes = {SizeMode{1.0, 0.5}, SizeMode{0.0, 0.5}};
+    BOOST_TEST(validate(request).value_or("").find("--size-modes") == 0u);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -283,6 +283,7 @@ int main(int argc, char** argv) {
     CLI::App app{"sgmp " + std::string(sgmp::version()) +
                  " — sphere packs by the Spin Gap Move Protocol (Y up; container x, z in "
                  "[-0.625, 0.625], floor y = -0.625, no lid; lengths in control-volume sides)"};
+    app.name("sgmp");
     app.set_version_flag("--version", std::string("sgmp ") + sgmp::version());
     app.require_subcommand(1);
     // A repeated option keeps its last value, so the command line overrides a --config file.

@@ -58,8 +58,15 @@ std::vector<Particle> loose_random(const std::vector<double>& d, double d_max,
                                    Random& rng) {
     std::vector<Particle> out;
     out.reserve(d.size());
-    SettledGrid grid(box, d_max);
+    // The level only rises, and a sphere more than d_max below it can never block a later
+    // one, so the grid holds only a window of the cloud: when it grows past kWindowLayers
+    // layers it is rebuilt from the spheres still within reach, its floor moved up. Memory
+    // and time then stay proportional to N however tall the cloud gets.
+    constexpr int kWindowLayers = 64;
+    Container window = box;
+    SettledGrid grid(window, d_max);
     std::vector<std::pair<double, double>> blocked;
+    std::size_t window_first = 0;  // first particle that may still be in reach
     // The level is that of the sphere bottoms: the previous centre y_p and radius r_p give
     // the next start y_p − r_p + r (exactly y_p for equal sizes).
     double y_previous = box.floor + 0.5 * d.front();
@@ -74,6 +81,20 @@ std::vector<Particle> loose_random(const std::vector<double>& d, double d_max,
         r_previous = r;
         out.push_back(make_particle(i, Vec3(x, y, z), d[i], colours[i]));
         grid.insert(Sphere{x, y, z, r});
+        if (grid.layers() > kWindowLayers) {
+            window.floor = y - r - 2.0 * d_max;
+            grid = SettledGrid(window, d_max);
+            while (window_first < out.size() &&
+                   out[window_first].center.y() + out[window_first].radius < window.floor) {
+                ++window_first;
+            }
+            for (std::size_t j = window_first; j < out.size(); ++j) {
+                const Particle& p = out[j];
+                if (p.center.y() + p.radius >= window.floor) {
+                    grid.insert(Sphere{p.center.x(), p.center.y(), p.center.z(), p.radius});
+                }
+            }
+        }
     }
     return out;
 }

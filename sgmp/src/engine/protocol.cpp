@@ -385,7 +385,7 @@ DropOutcome Protocol::drop(const Particle& particle, Random& rng) {
         if (hit.on_floor) {
             return DropOutcome{c, StopReason::Floor, moves};
         }
-        if (touches_wall(c, r)) {
+        if (params_.walls == WallRule::Fix && touches_wall(c, r)) {
             return DropOutcome{c, StopReason::Wall, moves};
         }
         if (moves > 0 && stalled > params_.stall_moves) {

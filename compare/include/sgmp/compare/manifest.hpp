@@ -1,0 +1,34 @@
+#pragma once
+/// @file manifest.hpp
+/// The list of packs a cross-validation reads: a CSV file with the header
+/// `role,group,count,seed,seconds,path`, one pack per line. `role` is `candidate` (packs
+/// under test, e.g. one SGMP arrangement per group) or `reference` (packs whose
+/// seed-to-seed spread sets the tolerances, e.g. one DEM friction class per group);
+/// `seconds` is the wall time that made the pack (empty when unknown).
+
+#include <cstddef>
+#include <cstdint>
+#include <istream>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sgmp::compare {
+
+enum class Role { Candidate, Reference };
+
+struct ManifestEntry {
+    Role role = Role::Candidate;
+    std::string group;
+    std::size_t count = 0;
+    std::uint64_t seed = 0;
+    std::optional<double> seconds;
+    std::string path;
+};
+
+/// Reads a manifest strictly; throws sgmp::InputError ("source:line: reason") on a wrong
+/// header, a wrong number of fields, an unknown role, a non-numeric count, seed or seconds,
+/// an empty group or path, or a path listed twice.
+std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& source);
+
+}  // namespace sgmp::compare

@@ -1,0 +1,143 @@
+#include "sgmp/compare/baseline.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+#include "sgmp/pack/input_error.hpp"
+
+namespace sgmp::compare {
+namespace {
+
+using Key = std::tuple<std::string, std::size_t, std::string>;
+
+Key key_of(const BaselineEntry& e) { return {e.group, e.count, e.metric}; }
+
+std::string number(double value) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.6g", value);
+    return buffer;
+}
+
+}  // namespace
+
+std::vector<BaselineEntry> baseline_entries(const Report& report) {
+    std::map<Key, BaselineEntry> entries;
+    std::vector<Key> order;
+    for (const auto& c : report.comparisons) {
+        for (const auto& row : c.rows) {
+            const Key key{c.candidate, c.count, row.name};
+            const std::string source =
+                row.tolerance_rule == "floor"
+                    ? "floor"
+                    : "2 sd of " + c.reference + " (" + std::to_string(c.reference_packs) + " packs)";
+            auto found = entries.find(key);
+            if (found == entries.end()) {
+                order.push_back(key);
+                entries.emplace(key, BaselineEntry{c.candidate, c.count, row.name, row.unit,
+                                                   row.candidate_mean, row.tolerance, source});
+            } else if (row.tolerance < found->second.tolerance) {
+                found->second.tolerance = row.tolerance;
+                found->second.tolerance_source = source;
+            }
+        }
+    }
+    std::vector<BaselineEntry> result;
+    for (const auto& key : order) {
+        result.push_back(entries.at(key));
+    }
+    return result;
+}
+
+nlohmann::ordered_json baseline_json(const std::vector<BaselineEntry>& entries,
+                                     const nlohmann::ordered_json& provenance) {
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const auto& e : entries) {
+        list.push_back({{"group", e.group},
+                        {"count", e.count},
+                        {"metric", e.metric},
+                        {"unit", e.unit},
+                        {"value", e.value},
+                        {"tolerance", e.tolerance},
+                        {"tolerance_source", e.tolerance_source}});
+    }
+    return {{"provenance", provenance},
+            {"rule",
+             "value: the candidate group's mean over its seeds; tolerance: the smallest over "
+             "reference groups of max(2 sd of the reference's seeds, floor of the metric); a "
+             "later run passes when |current - value| <= tolerance"},
+            {"entries", list}};
+}
+
+std::vector<BaselineEntry> parse_baseline(const nlohmann::json& json, const std::string& source) {
+    if (!json.is_object() || !json.contains("entries") || !json["entries"].is_array()) {
+        throw InputError(source, 0, "not a baseline: no \"entries\" array");
+    }
+    std::vector<BaselineEntry> entries;
+    std::size_t index = 0;
+    for (const auto& item : json["entries"]) {
+        try {
+            BaselineEntry e;
+            e.group = item.at("group").get<std::string>();
+            e.count = item.at("count").get<std::size_t>();
+            e.metric = item.at("metric").get<std::string>();
+            e.unit = item.value("unit", "");
+            e.value = item.at("value").get<double>();
+            e.tolerance = item.at("tolerance").get<double>();
+            e.tolerance_source = item.value("tolerance_source", "");
+            if (!std::isfinite(e.value) || !std::isfinite(e.tolerance) || e.tolerance < 0.0) {
+                throw std::invalid_argument("value and tolerance must be finite, tolerance >= 0");
+            }
+            entries.push_back(std::move(e));
+        } catch (const std::exception& error) {
+            throw InputError(source, 0, "entry " + std::to_string(index) + " is malformed: " + error.what());
+        }
+        ++index;
+    }
+    return entries;
+}
+
+std::vector<RegressionRow> regress(const std::vector<BaselineEntry>& baseline,
+                                   const std::vector<BaselineEntry>& current) {
+    std::map<Key, const BaselineEntry*> now;
+    for (const auto& e : current) {
+        now[key_of(e)] = &e;
+    }
+    std::vector<RegressionRow> rows;
+    for (const auto& e : baseline) {
+        RegressionRow row;
+        row.baseline = e;
+        const auto found = now.find(key_of(e));
+        if (found != now.end()) {
+            row.current = found->second->value;
+            row.pass = std::abs(*row.current - e.value) <= e.tolerance;
+        }
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+std::string render_regression_table(const std::vector<RegressionRow>& rows, bool failures_only) {
+    std::ostringstream out;
+    char line[320];
+    std::snprintf(line, sizeof line, "%-16s %6s %-20s %12s %12s %12s %12s  %s\n", "group", "N",
+                  "metric", "baseline", "current", "change", "tolerance", "verdict");
+    out << line;
+    for (const auto& row : rows) {
+        if (failures_only && row.pass) {
+            continue;
+        }
+        const auto& b = row.baseline;
+        std::snprintf(line, sizeof line, "%-16s %6zu %-20s %12s %12s %12s %12s  %s\n",
+                      b.group.c_str(), b.count, b.metric.c_str(), number(b.value).c_str(),
+                      row.current ? number(*row.current).c_str() : "missing",
+                      row.current ? number(*row.current - b.value).c_str() : "-",
+                      number(b.tolerance).c_str(), row.pass ? "pass" : "FAIL");
+        out << line;
+    }
+    return out.str();
+}
+
+}  // namespace sgmp::compare

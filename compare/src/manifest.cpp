@@ -1,0 +1,95 @@
+#include "sgmp/compare/manifest.hpp"
+
+#include <charconv>
+#include <set>
+
+#include "csv_line.hpp"
+#include "sgmp/pack/input_error.hpp"
+
+namespace sgmp::compare {
+namespace {
+
+constexpr const char* kHeader = "role,group,count,seed,seconds,path";
+
+template <class Number>
+std::optional<Number> parse_number(const std::string& text) {
+    Number value{};
+    const auto* end = text.data() + text.size();
+    const auto result = std::from_chars(text.data(), end, value);
+    if (text.empty() || result.ec != std::errc() || result.ptr != end) {
+        return std::nullopt;
+    }
+    return value;
+}
+
+}  // namespace
+
+std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& source) {
+    std::string line;
+    std::size_t number = 0;
+    if (!std::getline(in, line)) {
+        throw InputError(source, 0, "empty manifest: expected the header '" + std::string(kHeader) + "'");
+    }
+    ++number;
+    if (!line.empty() && line.back() == '\r') {
+        line.pop_back();
+    }
+    if (line != kHeader) {
+        throw InputError(source, number, "expected the header '" + std::string(kHeader) + "', found '" + line + "'");
+    }
+    std::vector<ManifestEntry> entries;
+    std::set<std::string> paths;
+    while (std::getline(in, line)) {
+        ++number;
+        if (line.find_first_not_of(" \t\r") == std::string::npos) {
+            continue;
+        }
+        const auto fields = detail::split_csv_line(line);
+        if (fields.size() != 6) {
+            throw InputError(source, number, "expected 6 comma-separated fields, found " + std::to_string(fields.size()));
+        }
+        ManifestEntry entry;
+        if (fields[0] == "candidate") {
+            entry.role = Role::Candidate;
+        } else if (fields[0] == "reference") {
+            entry.role = Role::Reference;
+        } else {
+            throw InputError(source, number, "role '" + fields[0] + "' must be 'candidate' or 'reference'");
+        }
+        entry.group = fields[1];
+        if (entry.group.empty()) {
+            throw InputError(source, number, "the group is empty");
+        }
+        const auto count = parse_number<std::size_t>(fields[2]);
+        if (!count || *count == 0) {
+            throw InputError(source, number, "count '" + fields[2] + "' must be a positive integer");
+        }
+        entry.count = *count;
+        const auto seed = parse_number<std::uint64_t>(fields[3]);
+        if (!seed) {
+            throw InputError(source, number, "seed '" + fields[3] + "' must be a non-negative integer");
+        }
+        entry.seed = *seed;
+        if (!fields[4].empty()) {
+            const auto seconds = parse_number<double>(fields[4]);
+            if (!seconds || *seconds < 0.0) {
+                throw InputError(source, number, "seconds '" + fields[4] + "' must be a number >= 0 or empty");
+            }
+            entry.seconds = *seconds;
+        }
+        entry.path = fields[5];
+        if (entry.path.empty()) {
+            throw InputError(source, number, "the path is empty");
+        }
+        if (!paths.insert(entry.path).second) {
+            throw InputError(source, number, "path '" + entry.path + "' is listed twice");
+        }
+        entries.push_back(std::move(entry));
+    }
+    if (entries.empty()) {
+        throw InputError(source, number, "the manifest lists no packs");
+    }
+    return entries;
+}
+
+}  // namespace sgmp::compare

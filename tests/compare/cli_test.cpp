@@ -1,0 +1,152 @@
+// The command line: bad input gives one line on stderr and a non-zero status (2 for usage),
+// and never leaves a half-written output directory.
+#include <sys/wait.h>
+
+#include <boost/test/unit_test.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "sgmp/pack/pack_file.hpp"
+#include "synthetic_packs.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kTool = fs::path(SGMP_BINARY_DIR) / "compare" / "sgmp-compare";
+
+fs::path scratch() {
+    static const fs::path dir = [] {
+        const fs::path d = fs::path(SGMP_BINARY_DIR) / "compare-test-scratch" / "cli";
+        fs::remove_all(d);
+        fs::create_directories(d);
+        return d;
+    }();
+    return dir;
+}
+
+struct Result {
+    int status = -1;
+    std::string err;
+};
+
+Result run(const std::string& arguments) {
+    const fs::path err = scratch() / "stderr.txt";
+    const std::string command = "cd '" + scratch().string() + "' && '" + kTool.string() + "' " +
+                                arguments + " >/dev/null 2>'" + err.string() + "'";
+    const int raw = std::system(command.c_str());
+    Result result;
+    result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    std::ifstream in(err);
+    result.err.assign(std::istreambuf_iterator<char>(in), {});
+    return result;
+}
+
+void write(const std::string& name, const std::string& text) {
+    std::ofstream(scratch() / name) << text;
+}
+
+std::size_t lines(const std::string& text) {
+    std::size_t n = 0;
+    for (const char c : text) {
+        n += c == '\n' ? 1 : 0;
+    }
+    return n;
+}
+
+const std::string kHeader =
+    "Properties=id:I:1:pos:R:3:radius:R:1:color:I:1 pbc=\"F F F\" generator=test\n";
+
+void good_pack(const std::string& name, std::uint64_t seed) {
+    sgmp::write_pack_file(scratch() / name, sgmp::testing::jittered_fcc_pack(300, 1.05, 0.02, seed),
+                          true);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(cli)
+
+BOOST_AUTO_TEST_CASE(bad_pack_files_give_one_line_and_status_1) {
+    write("empty.xyz", "");
+    write("short.xyz", "3\n" + kHeader + "1 0 0 0 0.05 0\n2 0.2 0 0 0.05 0\n");
+    write("word.xyz", "1\n" + kHeader + "1 0 zero 0 0.05 0\n");
+    write("columns.xyz", "1\n" + kHeader + "1 0 0 0 0.05\n");
+    write("nan.xyz", "1\n" + kHeader + "1 0 nan 0 0.05 0\n");
+    write("inf.xyz", "1\n" + kHeader + "1 0 inf 0 0.05 0\n");
+    write("radius.xyz", "1\n" + kHeader + "1 0 0 0 -0.05 0\n");
+    write("zero.xyz", "1\n" + kHeader + "1 0 0 0 0 0\n");
+    for (const char* file : {"empty.xyz", "short.xyz", "word.xyz", "columns.xyz", "nan.xyz",
+                             "inf.xyz", "radius.xyz", "zero.xyz", "missing.xyz"}) {
+        const Result r = run(std::string("measure ") + file + " --out out-bad");
+        BOOST_TEST(r.status == 1, file << ": " << r.err);
+        BOOST_TEST(lines(r.err) == 1u, file << ": " << r.err);
+        BOOST_TEST(r.err.find(file) != std::string::npos, r.err);
+        BOOST_TEST(!fs::exists(scratch() / "out-bad"));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(usage_errors_give_status_2) {
+    good_pack("a.xyz", 1);
+    good_pack("b.xyz", 2);
+    const std::vector<std::string> bad{
+        "measure a.xyz",                                               // no --out
+        "measure a.xyz --out o --region 0 1 0 1",                      // 4 numbers
+        "measure a.xyz --out o --region -0.7 0.5 -0.5 0.5 -0.5 0.5",   // through a wall
+        "measure a.xyz --out o --region 0.5 -0.5 -0.5 0.5 -0.5 0.5",   // inverted
+        "measure a.xyz --out o --gr-bin 0",                            // not positive
+        "measure a.xyz --out o --gr-bin 6",                            // wider than range
+        "measure a.xyz --out o --slab x",                              // not a number
+        "measure a.xyz dir/a.xyz --out o",                             // same output names
+        "report --a a.xyz --b b.xyz --label-a X --label-b X --out o",  // same labels
+        "report --a a.xyz --out o",                                    // no --b
+        "frobnicate",
+    };
+    for (const auto& arguments : bad) {
+        const Result r = run(arguments);
+        BOOST_TEST(r.status == 2, arguments << ": " << r.err);
+        BOOST_TEST(lines(r.err) == 1u, arguments << ": " << r.err);
+        BOOST_TEST(!fs::exists(scratch() / "o"), arguments);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(measure_and_report_write_complete_directories) {
+    good_pack("a.xyz", 1);
+    good_pack("b.xyz", 2);
+    good_pack("c.xyz", 3);
+    BOOST_TEST(run("measure a.xyz b.xyz --out m").status == 0);
+    for (const char* file :
+         {"a.metrics.json", "a.g_r.csv", "a.phi_y.csv", "a.p_z.csv", "b.metrics.json"}) {
+        BOOST_TEST(fs::exists(scratch() / "m" / file), file);
+    }
+    std::ifstream json(scratch() / "m" / "a.metrics.json");
+    const std::string text{std::istreambuf_iterator<char>(json), {}};
+    for (const char* key :
+         {"\"count\"", "\"diameter\"", "\"phi\"", "\"overlaps\"", "\"overlap_max_over_d\"",
+          "\"z_mean_tol_0\"", "\"z_mean_tol_1e-6\"", "\"z_mean_tol_1e-3\"", "\"z_mean_tol_1e-2\"",
+          "\"z_mean_tol_2e-2\"", "\"z_mean_tol_5e-2\"", "\"q6_global\"", "\"q6_local_mean\"",
+          "\"region\"", "\"sgmp-compare\""}) {
+        BOOST_TEST(text.find(key) != std::string::npos, key);
+    }
+    // Kept without --force, replaced with it; same inputs give the same bytes.
+    BOOST_TEST(run("measure a.xyz --out m").status == 2);
+    BOOST_TEST(run("measure a.xyz b.xyz --out m2 --threads 1").status == 0);
+    std::ifstream again(scratch() / "m2" / "a.metrics.json");
+    const std::string text2{std::istreambuf_iterator<char>(again), {}};
+    BOOST_TEST(text2.find("\"phi\"") != std::string::npos);
+    BOOST_TEST(run("measure a.xyz --out m --force").status == 0);
+    BOOST_TEST(!fs::exists(scratch() / "m" / "b.metrics.json"));
+
+    // A failing report leaves nothing behind.
+    write("bad.xyz", "1\n" + kHeader + "1 0 nan 0 0.05 0\n");
+    BOOST_TEST(run("report --a a.xyz --b b.xyz bad.xyz --out r").status == 1);
+    BOOST_TEST(!fs::exists(scratch() / "r"));
+    const Result ok = run("report --a a.xyz --b b.xyz c.xyz --label-a SGMP --label-b DEM --out r");
+    BOOST_TEST(ok.status == 0, ok.err);
+    for (const char* file : {"report.md", "report.csv", "report.json", "index.html"}) {
+        BOOST_TEST(fs::exists(scratch() / "r" / file), file);
+    }
+}
+
+BOOST_AUTO_TEST_SUITE_END()

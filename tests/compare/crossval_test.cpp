@@ -1,0 +1,169 @@
+#include <boost/test/unit_test.hpp>
+#include <sstream>
+
+#include "sgmp/compare/baseline.hpp"
+#include "sgmp/compare/crossval.hpp"
+#include "sgmp/compare/manifest.hpp"
+#include "sgmp/compare/thesis_table.hpp"
+#include "sgmp/pack/input_error.hpp"
+
+using namespace sgmp;
+using namespace sgmp::compare;
+
+namespace {
+
+std::string manifest_error(const std::string& text) {
+    std::istringstream in(text);
+    try {
+        read_manifest(in, "m.csv");
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    return {};
+}
+
+const std::string kManifestHeader = "role,group,count,seed,seconds,path\n";
+
+MetricRow metric(const std::string& name, double candidate, double reference, double tolerance,
+                 const std::string& rule = "2 sd") {
+    MetricRow row;
+    row.name = name;
+    row.unit = name == "phi" ? "ratio" : "contacts/particle";
+    row.candidate_mean = candidate;
+    row.reference_mean = reference;
+    row.difference = candidate - reference;
+    row.tolerance = tolerance;
+    row.tolerance_rule = rule;
+    row.agree = std::abs(row.difference) <= tolerance;
+    return row;
+}
+
+Comparison comparison(const std::string& candidate, const std::string& reference, std::size_t count,
+                      double phi_c, double phi_r, double tol, double gr_ratio) {
+    Comparison c;
+    c.candidate = candidate;
+    c.reference = reference;
+    c.count = count;
+    c.candidate_packs = 3;
+    c.reference_packs = 3;
+    c.rows = {metric("phi", phi_c, phi_r, tol), metric("z_mean_tol_1e-2", 5.0, 6.0, 0.3)};
+    c.gr_ratio = gr_ratio;
+    c.gr_ratio_defined = true;
+    c.gr_agree = gr_ratio <= 1.0;
+    return c;
+}
+
+/// Two arrangements against two friction classes at one count.
+Report sample_report() {
+    Report report;
+    report.comparisons = {comparison("single-column", "DEM mu=0.5", 150, 0.60, 0.61, 0.02, 0.8),
+                          comparison("single-column", "DEM mu=0.01", 150, 0.60, 0.64, 0.01, 2.5),
+                          comparison("loose-random", "DEM mu=0.5", 150, 0.58, 0.61, 0.02, 1.5),
+                          comparison("loose-random", "DEM mu=0.01", 150, 0.58, 0.64, 0.01, 3.0)};
+    return report;
+}
+
+std::vector<ManifestEntry> sample_manifest() {
+    std::istringstream in(kManifestHeader +
+                          "candidate,single-column,150,1,0.002,a1.xyz\n"
+                          "candidate,single-column,150,2,0.004,a2.xyz\n"
+                          "candidate,loose-random,150,1,0.010,b1.xyz\n"
+                          "reference,DEM mu=0.5,150,1,1.5,r1.xyz.gz\n"
+                          "reference,DEM mu=0.01,150,1,2.5,r2.xyz.gz\n");
+    return read_manifest(in, "m.csv");
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(crossval)
+
+BOOST_AUTO_TEST_CASE(manifest_is_read_strictly) {
+    const auto entries = sample_manifest();
+    BOOST_TEST(entries.size() == 5u);
+    BOOST_TEST(entries[4].group == "DEM mu=0.01");
+    BOOST_TEST(*entries[0].seconds == 0.002);
+    BOOST_TEST(manifest_error("") ==
+               "m.csv: empty manifest: expected the header 'role,group,count,seed,seconds,path'");
+    BOOST_TEST(manifest_error(kManifestHeader) == "m.csv:1: the manifest lists no packs");
+    BOOST_TEST(manifest_error(kManifestHeader + "judge,a,150,1,,p\n") ==
+               "m.csv:2: role 'judge' must be 'candidate' or 'reference'");
+    BOOST_TEST(manifest_error(kManifestHeader + "candidate,a,many,1,,p\n") ==
+               "m.csv:2: count 'many' must be a positive integer");
+    BOOST_TEST(manifest_error(kManifestHeader + "candidate,a,150,1,-3,p\n") ==
+               "m.csv:2: seconds '-3' must be a number >= 0 or empty");
+    BOOST_TEST(manifest_error(kManifestHeader + "candidate,a,150,1,,p\ncandidate,a,150,2,,p\n") ==
+               "m.csv:3: path 'p' is listed twice");
+    BOOST_TEST(manifest_error(kManifestHeader + "candidate,a,150,1\n") ==
+               "m.csv:2: expected 6 comma-separated fields, found 4");
+}
+
+BOOST_AUTO_TEST_CASE(groups_are_planned_every_candidate_against_every_reference) {
+    const GroupPlan plan = plan_groups(sample_manifest());
+    BOOST_TEST(plan.labels.size() == 4u);
+    BOOST_TEST(plan.comparisons.size() == 4u);
+    BOOST_TEST(plan.paths[0].size() == 2u);
+    std::istringstream only_candidates(kManifestHeader + "candidate,a,150,1,,p\n");
+    BOOST_CHECK_THROW(plan_groups(read_manifest(only_candidates, "m")), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(headline_carries_verdicts_and_the_thesis_beside_us) {
+    std::istringstream thesis_csv(
+        "arrangement,count,runtime_s,packing_fraction,table\nsingle-column,150,138,0.6160,5.1\n");
+    const auto thesis = read_thesis_results(thesis_csv, "results.csv");
+    const CrossValidation cv = cross_validate(sample_report(), sample_manifest(), thesis);
+    BOOST_TEST_REQUIRE(cv.rows.size() == 2u);
+    const HeadlineRow& column = cv.rows[0];
+    BOOST_TEST(column.group == "single-column");
+    BOOST_TEST(*column.seconds == 0.003, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(*column.speedup == 46000.0, boost::test_tools::tolerance(1e-9));
+    BOOST_TEST_REQUIRE(column.against.size() == 2u);
+    BOOST_TEST(column.against[0].reference == "DEM mu=0.5");
+    BOOST_TEST(column.against[0].phi_agree);        // |0.60 − 0.61| ≤ 0.02
+    BOOST_TEST(!column.against[1].phi_agree);       // |0.60 − 0.64| > 0.01
+    BOOST_TEST(column.against[0].gr_agree);
+    BOOST_TEST(!column.against[1].gr_agree);
+    BOOST_TEST(!cv.rows[1].thesis.has_value());
+    const std::string md = render_crossval_markdown(cv);
+    BOOST_TEST(md.find("**single-column vs DEM mu=0.01**: φ agrees at 0 of 1 counts; differs at "
+                       "N = 150 (SGMP − DEM -0.0400 (ratio))") != std::string::npos);
+    BOOST_TEST(md.find("| 150 | single-column | 5.1 | 138 | 0.003 | 46000× | 0.6160 | 0.6000 | -0.0160 |") !=
+               std::string::npos);
+    const auto json = crossval_json(cv);
+    BOOST_TEST(json["headline"][0]["against"][1]["phi_agree"] == false);
+    BOOST_TEST(render_headline_csv(cv).find("150,single-column,DEM mu=0.01,") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(baseline_takes_the_strictest_reference_tolerance) {
+    const auto entries = baseline_entries(sample_report());
+    BOOST_TEST_REQUIRE(entries.size() == 4u);  // 2 groups × 2 metrics
+    BOOST_TEST(entries[0].metric == "phi");
+    BOOST_TEST(entries[0].value == 0.60);
+    BOOST_TEST(entries[0].tolerance == 0.01);
+    BOOST_TEST(entries[0].tolerance_source == "2 sd of DEM mu=0.01 (3 packs)");
+}
+
+BOOST_AUTO_TEST_CASE(regression_passes_identical_runs_and_flags_moved_metrics) {
+    const auto baseline = baseline_entries(sample_report());
+    const auto round_trip =
+        parse_baseline(nlohmann::json::parse(baseline_json(baseline, {{"tool", "t"}}).dump()), "b.json");
+    BOOST_TEST(round_trip.size() == baseline.size());
+    for (const auto& row : regress(round_trip, baseline)) {
+        BOOST_TEST(row.pass);
+    }
+    auto moved = baseline;
+    moved[0].value += 0.011;   // beyond the 0.01 tolerance
+    moved[1].value += 0.29;    // within the 0.3 tolerance
+    moved.pop_back();          // an entry disappears
+    const auto rows = regress(baseline, moved);
+    BOOST_TEST(!rows[0].pass);
+    BOOST_TEST(rows[1].pass);
+    BOOST_TEST(!rows[3].pass);
+    BOOST_TEST(!rows[3].current.has_value());
+    const std::string table = render_regression_table(rows, true);
+    BOOST_TEST(table.find("missing") != std::string::npos);
+    BOOST_TEST(table.find("FAIL") != std::string::npos);
+    BOOST_CHECK_THROW(parse_baseline(nlohmann::json::parse("{\"entries\": [{\"group\": 1}]}"), "b.json"),
+                      InputError);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -208,8 +208,9 @@ class Progress {
 };
 
 /// `--config FILE` (after the subcommand): the file's `key = value` lines (TOML/INI, keys
-/// named as the long options, optionally in a [pack] / [arrange] section) become options
-/// placed before the command line's own, so options typed on the command line win.
+/// named as the long options — `phi-target` or, as pack headers write it, `phi_target` —
+/// optionally in a [pack] / [arrange] section) become options placed before the command
+/// line's own, so options typed on the command line win.
 std::vector<std::string> expand_config(std::vector<std::string> args) {
     for (std::size_t i = 0; i < args.size(); ++i) {
         std::string path;
@@ -230,7 +231,10 @@ std::vector<std::string> expand_config(std::vector<std::string> args) {
                 throw UsageError{"--config " + path + ": key '" + item.fullname() +
                                  "' belongs to no option of '" + command + "'"};
             }
-            const std::string option = "--" + item.name;
+            // Pack headers record parameters in snake_case: accept those names too.
+            std::string name = item.name;
+            std::replace(name.begin(), name.end(), '_', '-');
+            const std::string option = "--" + name;
             if (item.inputs.size() == 1 &&
                 (item.inputs[0] == "true" || item.inputs[0] == "false")) {
                 if (item.inputs[0] == "true")

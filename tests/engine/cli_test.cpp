@@ -150,6 +150,17 @@ BOOST_AUTO_TEST_CASE(a_config_file_repeats_a_run_and_the_command_line_wins) {
                         s.path("d.xyz") + "'");
     BOOST_TEST(b.status == 0);
     BOOST_TEST(sgmp::read_pack_file(s.path("d.xyz")).particles.size() == 150u);
+    // Keys as pack headers write them (snake_case) are accepted too.
+    std::ofstream(s.path("header.toml")) << "count = 120\narrangement = \"large-dense\"\n"
+                                            "phi_target = 0.6\nfall_step = 0.002\n"
+                                            "sweep_stages = \"8,120\"\n";
+    const Run c =
+        s.run("pack --config '" + s.path("header.toml") + "' --out '" + s.path("e.xyz") + "'");
+    BOOST_TEST(c.status == 0);
+    const auto e = sgmp::read_pack_file(s.path("e.xyz"));
+    BOOST_TEST(e.metadata.get("phi_target").value_or("") == "0.6");
+    BOOST_TEST(e.metadata.get("fall_step").value_or("") == "0.002");
+    BOOST_TEST(e.metadata.get("sweep_stages").value_or("") == "8,120");
 }
 
 BOOST_AUTO_TEST_CASE(arrange_writes_the_starting_positions) {

@@ -9,9 +9,11 @@
 ///    touching; `step` ends at the last multiple of the fall step above it, as the thesis'
 ///    stepping would (a colliding step is never taken, so no overlap is ever created).
 /// 2. **Sweep**: the particle is tried at n positions on a horizontal circle of radius
-///    s = d / F around its centre (same height). A position is free when it overlaps no
-///    settled sphere (|c − c_j|² < (r + r_j)², squared distances) — and, with the `block`
-///    wall rule, crosses no wall.
+///    s = d / F around its centre (same height), at the angles of the precomputed offset
+///    table (sweep_table.hpp). A position is free when it overlaps no settled sphere
+///    (overlap: |c − c_j|² < (r + r_j)²; touching is free) — and, with the `block` wall
+///    rule, crosses no wall. With several stages (e.g. 8,120,720) the next stage is swept
+///    only when the previous one found no free position at all.
 /// 3. **Gap selection**: runs of consecutive free positions form free arcs (the circle
 ///    wraps). The largest arc (or, with `random`, a random arc) is bisected.
 /// 4. **Move** to the point of the circle at the bisector (the half-step entry of the
@@ -32,11 +34,18 @@
 ///    lifted straight up to the lowest height where it is free, then falls as usual;
 ///  - a particle that makes `stall_moves` consecutive moves without falling at all rests
 ///    (a step fall can otherwise leave a particle shuffling forever between supports);
-///  - `max_moves` bounds the cycles per particle (it rests after its last fall).
+///  - `max_moves` bounds the cycles per particle (it rests after its last fall);
+///  - particles are dropped one at a time in id order (the arrangement's drop order); the
+///    thesis' 10-particle lower neighbour list is replaced by the exact column scan below,
+///    so `lower_neighbours` never changes a result (a list that misses a sphere is one
+///    likely cause of the overlaps the thesis reports in §5.4).
 ///
-/// Neighbour search uses a `SettledGrid`: a fall scans only the column of cells below the
-/// particle (top down, stopping once no lower cell can hold a higher contact), a sweep only
-/// the cells within r + r_max + s. Work per drop does not grow with N.
+/// Neighbour search uses a `SettledGrid` (cells of one largest diameter): a long fall
+/// scans only the column of cells below the particle, top down, stopping once no lower
+/// cell can hold a higher contact. Around the moving particle a local list holds every
+/// settled sphere within r + r_max + s + skin (skin = r_max/2) of where it was built; the
+/// sweep and short falls use it until the particle has moved more than the skin. Work per
+/// drop does not grow with N, and the drop loop allocates nothing once buffers are warm.
 #include <cstddef>
 #include <cstdint>
 #include <vector>

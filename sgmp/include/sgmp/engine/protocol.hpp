@@ -32,6 +32,10 @@
 ///  - only settled particles are obstacles; particles waiting in the starting arrangement
 ///    are not. A particle whose starting place a settled one has taken meanwhile is first
 ///    lifted straight up to the lowest height where it is free, then falls as usual;
+///  - with the step fall the sweep is made at the last free step, less than a step above
+///    the contact (sweeping at the colliding step, one step lower, would leave almost every
+///    particle stuck on its first contact: a d/50 sideways move cannot undo a 0.001 overlap
+///    near the top of a sphere, giving φ ≈ 0.45 where the thesis reports ≈ 0.59);
 ///  - a particle that makes `stall_moves` consecutive moves without falling at all rests
 ///    (a step fall can otherwise leave a particle shuffling forever between supports);
 ///  - `max_moves` bounds the cycles per particle (it rests after its last fall);

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <string>
 
+#include "sgmp/engine/arrangement.hpp"
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/metadata.hpp"
 #include "sgmp/pack/pack_file.hpp"
@@ -84,6 +85,21 @@ class ProgressPrinter {
     std::chrono::steady_clock::time_point last_{};
 };
 
+/// The engine's starting arrangement for this pour (same count, diameter and seed).
+sgmp::reference::StartPositions start_positions(const std::string& name,
+                                                const sgmp::reference::PourParameters& p) {
+    const auto kind = sgmp::engine::parse_arrangement(name);
+    sgmp::Random random(p.seed);
+    const auto particles = sgmp::engine::make_arrangement(*kind, p.count, p.diameter(), random);
+    sgmp::reference::StartPositions start;
+    start.name = std::string(sgmp::engine::to_string(*kind));
+    for (const auto& particle : particles) {
+        start.centers.push_back(particle.center);
+        start.colours.push_back(particle.color);
+    }
+    return start;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -130,6 +146,16 @@ int main(int argc, char** argv) {
     pour_cmd->add_option("--timeout", timeout, "Wall-clock limit in seconds; 0 means none")
         ->capture_default_str()
         ->check(CLI::NonNegativeNumber);
+    pour_cmd
+        ->add_option("--from-arrangement", arrangement,
+                     std::string("Start from an SGMP starting arrangement (") +
+                         std::string(sgmp::engine::arrangement_names()) +
+                         ", made with --seed) instead of a loose random cloud")
+        ->check([](const std::string& name) {
+            return sgmp::engine::parse_arrangement(name)
+                       ? std::string()
+                       : "must be one of " + std::string(sgmp::engine::arrangement_names());
+        });
     pour_cmd->add_flag("--force", force, "Overwrite an existing output file");
     pour_cmd->add_option("--keep-work", keep_work,
                          "Run in this directory and keep it (input script, log, dump); "
@@ -183,7 +209,8 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        // Help and --version exit 0; every usage error exits 2.
+        return app.exit(e) == 0 ? 0 : 2;
     }
 
     try {
@@ -202,6 +229,10 @@ int main(int argc, char** argv) {
         request.timeout = std::chrono::duration<double>(timeout);
     }
     request.work_directory = keep_work;
+    if (!arrangement.empty()) {
+        request.start = start_positions(arrangement, p);
+        p.arrangement = arrangement;
+    }
     install_signal_handlers();
     request.should_stop = [] { return g_interrupted != 0; };
 

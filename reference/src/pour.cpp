@@ -342,8 +342,14 @@ PourResult pour(const PourRequest& request, const PourObserver& observer) {
     result.max_overlap_over_d = pair_overlaps(result.pack).max_overlap / d;
     result.max_wall_penetration_over_d = max_wall_penetration(result.pack, Container{}) / d;
     result.phi_control_volume = packing_fraction(result.pack, control_volume());
-    Random colour_random(p.seed ^ 0xC01005ULL);  // apart from the LIGGGHTS seeds
-    assign_colours(result.pack.particles, colour_random);
+    if (request.start && request.start->colours.size() == p.count) {
+        for (std::size_t i = 0; i < p.count; ++i) {
+            result.pack.particles[i].color = request.start->colours[i];
+        }
+    } else {
+        Random colour_random(p.seed ^ 0xC01005ULL);  // apart from the LIGGGHTS seeds
+        assign_colours(result.pack.particles, colour_random);
+    }
     record(result.pack.metadata, request, watch.log, result);
     return result;
 }

@@ -33,10 +33,12 @@ class PourError : public std::runtime_error {
     std::vector<std::string> log_tail_;
 };
 
-/// Starting positions given by the caller (an SGMP arrangement), project units.
+/// Starting positions given by the caller (an SGMP arrangement), project units. Sphere i
+/// gets id i + 1 and keeps colour `colours[i]` when colours are given.
 struct StartPositions {
     std::string name;
     std::vector<Vec3> centers;
+    std::vector<int> colours;  ///< empty: colours drawn from the ten bins
 };
 
 struct PourRequest {

@@ -1,0 +1,207 @@
+// Faults of `sgmp-reference pour`, through the real executable with fake `liggghts`
+// programs first on PATH. Each fault must give a one-line message, a non-zero exit and
+// no pack file.
+#include <signal.h>
+
+#include <boost/test/unit_test.hpp>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+
+#include "run_program.hpp"
+
+namespace fs = std::filesystem;
+using namespace sgmp::reference::testing;
+
+namespace {
+
+const std::string kExe = SGMP_REFERENCE_EXE;
+const std::string kBanner = "echo 'LIGGGHTS (Version LIGGGHTS-PUBLIC 3.8.0, fake for tests)'\n";
+
+/// A directory holding a fake `liggghts`, put first on PATH, and where outputs go.
+struct FakeLiggghts {
+    fs::path dir = fresh_directory("sgmp-ref-fake");
+    fs::path out = dir / "pack.xyz";
+
+    explicit FakeLiggghts(const std::string& body) {
+        fs::create_directory(dir / "bin");
+        write_script(dir / "bin" / "liggghts", body);
+    }
+    ~FakeLiggghts() {
+        std::error_code ec;
+        fs::remove_all(dir, ec);
+    }
+    [[nodiscard]] std::string path() const {
+        const char* system_path = std::getenv("PATH");
+        return (dir / "bin").string() + ":" + (system_path ? system_path : "/usr/bin:/bin");
+    }
+    ProgramRun pour(std::vector<std::string> extra = {}) const {
+        ProgramOptions options;
+        options.args = {"pour", "--count", "150", "--seed", "1", "--out", out.string()};
+        options.args.insert(options.args.end(), extra.begin(), extra.end());
+        options.path = path();
+        return run_program(kExe, options);
+    }
+};
+
+std::string first_line(const std::string& text) {
+    return text.substr(0, text.find('\n'));
+}
+
+/// True once process `pid` has ended (gone, or a zombie awaiting its reaper). Polls up to
+/// ten seconds: the group is sent SIGTERM and, three seconds later, SIGKILL.
+bool process_ended(const std::string& pid_file) {
+    std::ifstream in(pid_file);
+    long pid = 0;
+    in >> pid;
+    BOOST_TEST_REQUIRE(pid > 0);
+    for (int i = 0; i < 200; ++i) {
+        std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+        std::string pid_text, name, state;
+        if (!(stat >> pid_text >> name >> state) || state == "Z") {
+            return true;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    return false;
+}
+
+/// A fake that starts and then hangs; its `sleep` child records its pid.
+std::string hanging_fake(const fs::path& dir, const std::string& before = "") {
+    return kBanner + before + "sleep 600 &\necho $! > '" + (dir / "sleep.pid").string() +
+           "'\ntouch '" + (dir / "started").string() + "'\nwait\n";
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(cli_faults)
+
+BOOST_AUTO_TEST_CASE(a_liggghts_error_is_shown_with_the_log_tail) {
+    FakeLiggghts fake(kBanner +
+                      "echo 'ERROR: Illegal fix wall/gran command (./src/fix_wall_gran.cpp:123)'\n"
+                      "exit 1\n");
+    const fs::path work = fake.dir / "work";
+    const ProgramRun run = fake.pour({"--keep-work", work.string(), "--quiet"});
+    BOOST_TEST(run.exit_code == 1);
+    BOOST_TEST(first_line(run.stderr_text) ==
+               "sgmp-reference: liggghts failed (exit code 1): ERROR: Illegal fix wall/gran "
+               "command (./src/fix_wall_gran.cpp:123)");
+    BOOST_TEST(run.stderr_text.find("--- last lines of LIGGGHTS output ---") != std::string::npos);
+    BOOST_TEST(!fs::exists(fake.out));
+    BOOST_TEST(fs::exists(work / "in.pour"));  // kept for inspection
+}
+
+BOOST_AUTO_TEST_CASE(a_hanging_run_ends_at_the_timeout) {
+    FakeLiggghts fake("");
+    write_script(fake.dir / "bin" / "liggghts", hanging_fake(fake.dir, "echo SGMP-INSERTED 150\n"));
+    const ProgramRun run = fake.pour({"--timeout", "1", "--quiet"});
+    BOOST_TEST(run.exit_code == 1);
+    BOOST_TEST(first_line(run.stderr_text) ==
+               "sgmp-reference: timed out after 1 s (--timeout) at step 0: LIGGGHTS stopped, no "
+               "pack written");
+    BOOST_TEST(!fs::exists(fake.out));
+    BOOST_TEST(process_ended((fake.dir / "sleep.pid").string()));
+}
+
+BOOST_AUTO_TEST_CASE(sigint_stops_the_child_and_leaves_no_file) {
+    FakeLiggghts fake("");
+    write_script(fake.dir / "bin" / "liggghts", hanging_fake(fake.dir));
+    ProgramOptions options;
+    options.args = {"pour", "--count", "150", "--seed", "1", "--out", fake.out.string(), "--quiet"};
+    options.path = fake.path();
+    options.signal_when_exists = fake.dir / "started";
+    options.signal = SIGINT;
+    const ProgramRun run = run_program(kExe, options);
+    BOOST_TEST(run.exit_code == 130);
+    BOOST_TEST(first_line(run.stderr_text) ==
+               "sgmp-reference: interrupted at step 0: LIGGGHTS stopped, no pack written");
+    BOOST_TEST(!fs::exists(fake.out));
+    BOOST_TEST(process_ended((fake.dir / "sleep.pid").string()));
+}
+
+BOOST_AUTO_TEST_CASE(fewer_spheres_than_asked_stop_the_run) {
+    FakeLiggghts fake("");
+    write_script(fake.dir / "bin" / "liggghts", hanging_fake(fake.dir, "echo SGMP-INSERTED 140\n"));
+    const ProgramRun run = fake.pour({"--timeout", "60", "--quiet"});
+    BOOST_TEST(run.exit_code == 1);
+    BOOST_TEST(first_line(run.stderr_text) ==
+               "sgmp-reference: LIGGGHTS inserted only 140 of 150 spheres: the starting cloud is "
+               "too dense, lower --cloud-fraction");
+    BOOST_TEST(!fs::exists(fake.out));
+}
+
+BOOST_AUTO_TEST_CASE(an_unsettled_pour_is_an_error) {
+    FakeLiggghts fake(kBanner +
+                      "echo 'SGMP-PARAMETERS timestep 1e-4 rayleigh_time 1e-3 step_cap 1000'\n"
+                      "echo 'SGMP-INSERTED 150'\necho 'SGMP-SETTLE 1000 0.02 1e-06'\n"
+                      "echo 'SGMP-RESULT unsettled 1000 0.02'\necho SGMP-DONE\n");
+    const ProgramRun run = fake.pour({"--quiet"});
+    BOOST_TEST(run.exit_code == 1);
+    BOOST_TEST(first_line(run.stderr_text) ==
+               "sgmp-reference: not settled within the step cap of 1000 steps (30 s simulated): "
+               "KE_trans/(m g d) = 0.02, threshold 1e-06");
+    BOOST_TEST(!fs::exists(fake.out));
+}
+
+BOOST_AUTO_TEST_CASE(a_missing_liggghts_names_the_package) {
+    FakeLiggghts fake("");
+    ProgramOptions options;
+    options.args = {"pour", "--count", "150", "--seed", "1", "--out", fake.out.string()};
+    options.path = (fake.dir / "nothing-here").string();
+    const ProgramRun run = run_program(kExe, options);
+    BOOST_TEST(run.exit_code == 1);
+    BOOST_TEST(first_line(run.stderr_text) ==
+               "sgmp-reference: 'liggghts' not found on PATH: install the Debian package "
+               "'liggghts'");
+    BOOST_TEST(!fs::exists(fake.out));
+}
+
+BOOST_AUTO_TEST_CASE(a_missing_mpirun_names_the_package) {
+    FakeLiggghts fake(kBanner);
+    ProgramOptions options;
+    options.args = {"pour",    "--count", "150",   "--seed",         "1",
+                    "--ranks", "2",       "--out", fake.out.string()};
+    options.path = (fake.dir / "bin").string();  // the fake liggghts and nothing else
+    const ProgramRun run = run_program(kExe, options);
+    BOOST_TEST(run.exit_code == 1);
+    BOOST_TEST(first_line(run.stderr_text) ==
+               "sgmp-reference: 'mpirun' not found on PATH (needed for --ranks 2): install the "
+               "Debian package 'openmpi-bin'");
+}
+
+BOOST_AUTO_TEST_CASE(an_existing_output_is_kept_without_force) {
+    FakeLiggghts fake(kBanner + "exit 1\n");
+    { std::ofstream(fake.out) << "keep me\n"; }
+    const ProgramRun run = fake.pour();
+    BOOST_TEST(run.exit_code == 2);
+    BOOST_TEST(run.stderr_text.find("--out") != std::string::npos);
+    std::ifstream in(fake.out);
+    std::string content;
+    std::getline(in, content);
+    BOOST_TEST(content == "keep me");
+}
+
+BOOST_AUTO_TEST_CASE(usage_errors_exit_with_2) {
+    FakeLiggghts fake(kBanner);
+    BOOST_TEST(fake.pour({"--friction", "-1"}).exit_code == 2);
+    BOOST_TEST(fake.pour({"--from-arrangement", "pyramid"}).exit_code == 2);
+    BOOST_TEST(fake.pour({"--youngs-modulus", "1e6"}).exit_code == 2);
+    ProgramOptions options;
+    options.args = {"pour", "--count", "0", "--seed", "1", "--out", fake.out.string()};
+    BOOST_TEST(run_program(kExe, options).exit_code == 2);
+    BOOST_TEST(!fs::exists(fake.out));
+}
+
+BOOST_AUTO_TEST_CASE(help_documents_the_options) {
+    ProgramOptions options;
+    options.args = {"pour", "--help"};
+    // CLI11 prints help on stdout; the exit code says it was help, not an error.
+    BOOST_TEST(run_program(kExe, options).exit_code == 0);
+    options.args = {"--version"};
+    BOOST_TEST(run_program(kExe, options).exit_code == 0);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

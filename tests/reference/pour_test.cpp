@@ -1,0 +1,83 @@
+// Real pours with LIGGGHTS: 150 spheres, settled in about a second of computing each.
+#include <boost/test/unit_test.hpp>
+#include <filesystem>
+
+#include "run_program.hpp"
+#include "sgmp/pack/geometry.hpp"
+#include "sgmp/pack/pack_file.hpp"
+#include "sgmp/reference/pack_checks.hpp"
+#include "sgmp/reference/pour.hpp"
+
+namespace fs = std::filesystem;
+using namespace sgmp;
+using namespace sgmp::reference;
+
+namespace {
+
+/// What every settled pour must satisfy. Tolerances: overlaps and wall penetrations
+/// below 1 % of d (the stiffness was chosen for about 0.5 %); the control volume's packing
+/// fraction between 0.50 and 0.68 (random packs of 150 spheres 0.29 wide, walls included,
+/// measured 0.57-0.64; loose random packing is about 0.55, random close packing 0.64).
+void check_settled_pack(const Pack& pack, std::size_t count, double threshold) {
+    BOOST_TEST_REQUIRE(pack.particles.size() == count);
+    const double d = diameter_for_count(count);
+    for (std::size_t i = 0; i < pack.particles.size(); ++i) {
+        BOOST_TEST(pack.particles[i].id == static_cast<std::int64_t>(i + 1));
+        BOOST_TEST(pack.particles[i].radius == d / 2.0);
+    }
+    BOOST_TEST(max_wall_penetration(pack, Container{}) < 0.01 * d);
+    BOOST_TEST(pair_overlaps(pack).max_overlap < 0.01 * d);
+    BOOST_TEST(*pack.metadata.get_number("settling_measure") < threshold);
+    const double phi = packing_fraction(pack, control_volume());
+    BOOST_TEST(phi > 0.50);
+    BOOST_TEST(phi < 0.68);
+    BOOST_TEST(*pack.metadata.get("generator") == "liggghts");
+    BOOST_TEST(*pack.metadata.get("liggghts_version") == "3.8.0");
+    BOOST_TEST(*pack.metadata.get("container") == Container{}.to_string());
+    BOOST_TEST(*pack.metadata.get_number("diameter") == d);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(liggghts_pours)
+
+BOOST_AUTO_TEST_CASE(a_frictional_pour_of_150_settles_inside_the_container) {
+    PourRequest request;
+    request.parameters.count = 150;
+    request.parameters.seed = 1;
+    request.parameters.friction = 0.5;
+    int fall_reports = 0;
+    int settle_reports = 0;
+    double last_ratio = 0.0;
+    const PourResult result = pour(request, [&](const PourProgress& progress) {
+        fall_reports += progress.phase == PourPhase::falling ? 1 : 0;
+        settle_reports += progress.phase == PourPhase::settling ? 1 : 0;
+        if (progress.phase == PourPhase::settling) {
+            last_ratio = progress.ke_ratio;
+        }
+    });
+    check_settled_pack(result.pack, 150, request.parameters.settle_threshold);
+    BOOST_TEST(fall_reports == 20);   // the fall phase runs in 20 chunks
+    BOOST_TEST(settle_reports >= 2);  // settled means calm at two consecutive checks
+    BOOST_TEST(last_ratio < request.parameters.settle_threshold);
+    BOOST_TEST(result.max_overlap_over_d == *result.pack.metadata.get_number("max_overlap_over_d"));
+}
+
+BOOST_AUTO_TEST_CASE(a_two_rank_near_frictionless_pour_from_an_arrangement) {
+    const fs::path dir = testing::fresh_directory("sgmp-ref-pour");
+    const fs::path out = dir / "pack.xyz.gz";
+    testing::ProgramOptions options;
+    options.args = {"pour",         "--count", "150",        "--seed", "2",
+                    "--friction",   "0.01",    "--ranks",    "2",      "--from-arrangement",
+                    "loose-random", "--out",   out.string(), "--quiet"};
+    const testing::ProgramRun run = testing::run_program(SGMP_REFERENCE_EXE, options);
+    BOOST_TEST_REQUIRE(run.exit_code == 0, run.stderr_text);
+    const Pack pack = read_pack_file(out);
+    check_settled_pack(pack, 150, 1e-6);
+    BOOST_TEST(*pack.metadata.get("processor_grid") == "2 1 1");
+    BOOST_TEST(*pack.metadata.get("arrangement") == "loose-random");
+    BOOST_TEST(*pack.metadata.get_number("friction") == 0.01);
+    fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -1,0 +1,138 @@
+// The LIGGGHTS input script: template filling, parameters, seeds, processor grid.
+#include <boost/test/unit_test.hpp>
+#include <charconv>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "sgmp/pack/geometry.hpp"
+#include "sgmp/reference/input_script.hpp"
+#include "sgmp/reference/pour_parameters.hpp"
+
+using namespace sgmp::reference;
+
+namespace {
+
+bool is_prime(std::uint64_t n) {
+    if (n < 2) {
+        return false;
+    }
+    for (std::uint64_t f = 2; f * f <= n; ++f) {
+        if (n % f == 0) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/// The value of `variable <name> string <value>` in the script.
+std::string script_variable(const std::string& script, const std::string& name) {
+    const std::string key = "\nvariable " + name + " ";
+    const auto at = script.find(key);
+    BOOST_TEST_REQUIRE(at != std::string::npos, "no variable " << name);
+    const auto line_end = script.find('\n', at + 1);
+    const std::string line = script.substr(at + 1, line_end - at - 1);
+    const auto string_at = line.find(" string ");
+    BOOST_TEST_REQUIRE(string_at != std::string::npos);
+    std::string rest = line.substr(string_at + 8);
+    rest.erase(0, rest.find_first_not_of(' '));
+    return rest.substr(0, rest.find(' '));
+}
+
+double number(const std::string& text) {
+    double value = 0.0;
+    std::from_chars(text.data(), text.data() + text.size(), value);
+    return value;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(input_script)
+
+BOOST_AUTO_TEST_CASE(placeholders_are_filled_and_unknown_ones_refused) {
+    BOOST_TEST(fill_template("a {{x}} b {{y}}{{x}}", {{"x", "1"}, {"y", "2"}}) == "a 1 b 21");
+    BOOST_CHECK_THROW(fill_template("a {{z}}", {{"x", "1"}}), std::invalid_argument);
+    BOOST_CHECK_THROW(fill_template("a {{x", {{"x", "1"}}), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(the_script_carries_every_parameter_exactly) {
+    PourParameters p;
+    p.count = 1002;
+    p.seed = 7;
+    p.friction = 0.01;
+    p.ranks = 2;
+    const std::string script = pour_script(p, p.cloud_top());
+    BOOST_TEST(script.find("{{") == std::string::npos);
+    BOOST_TEST(script_variable(script, "count") == "1002");
+    BOOST_TEST(script_variable(script, "friction") == "0.01");
+    BOOST_TEST(script_variable(script, "youngs_modulus") == "1e+09");
+    // The radius is written in the shortest form that reads back to exactly d/2, so the
+    // dump (written with %.17g) gives back the sizing rule's radius bit for bit.
+    BOOST_TEST(number(script_variable(script, "radius")) == p.diameter() / 2.0);
+    BOOST_TEST(number(script_variable(script, "diameter")) == sgmp::diameter_for_count(1002));
+    BOOST_TEST(script.find("processors      2 1 1") != std::string::npos);
+    BOOST_TEST(script.find("pair_style  gran model hertz tangential history") != std::string::npos);
+    BOOST_TEST(script.find("insert/pack") != std::string::npos);
+    BOOST_TEST(script.find("read_data") == std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(an_arrangement_start_reads_a_data_file) {
+    PourParameters p;
+    p.count = 150;
+    p.arrangement = "small-dense";
+    const std::string script = pour_script(p, 0.5);
+    BOOST_TEST(script.find("read_data       start.data") != std::string::npos);
+    BOOST_TEST(script.find("insert/pack") == std::string::npos);
+    BOOST_TEST(script_variable(script, "start_top") == "0.5");
+}
+
+BOOST_AUTO_TEST_CASE(liggghts_seeds_are_primes_above_10000_fixed_by_the_seed) {
+    for (std::uint64_t seed : {0ULL, 1ULL, 2ULL, 12345678901ULL}) {
+        const LiggghtsSeeds s = liggghts_seeds(seed);
+        for (std::uint64_t prime : {s.particle_template, s.distribution, s.insertion}) {
+            BOOST_TEST(prime > 10000u);
+            BOOST_TEST(is_prime(prime));
+        }
+        BOOST_TEST(liggghts_seeds(seed).insertion == s.insertion);
+    }
+    BOOST_TEST(liggghts_seeds(1).insertion != liggghts_seeds(2).insertion);
+    BOOST_TEST(next_prime(10000) == 10007u);
+    BOOST_TEST(next_prime(10007) == 10007u);
+}
+
+BOOST_AUTO_TEST_CASE(the_cloud_holds_the_spheres_at_the_asked_fraction) {
+    // N (π/6) d³ = f (L − d)² (h − d), h measured from the floor.
+    for (std::size_t n : {150u, 9000u}) {
+        PourParameters p;
+        p.count = n;
+        const double d = p.diameter();
+        const double h = p.cloud_top() + 0.625;
+        const double solid = static_cast<double>(n) * std::numbers::pi / 6.0 * d * d * d;
+        BOOST_TEST(solid / ((1.25 - d) * (1.25 - d) * (h - d)) == p.cloud_fraction,
+                   boost::test_tools::tolerance(1e-12));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(parameters_outside_their_range_are_refused_by_name) {
+    PourParameters p;
+    p.count = 150;
+    p.validate();
+    p.youngs_modulus = 5e6;  // LIGGGHTS refuses 5e6 Pa and softer
+    try {
+        p.validate();
+        BOOST_FAIL("a Young's modulus of 5e6 Pa was accepted");
+    } catch (const std::invalid_argument& e) {
+        BOOST_TEST(std::string(e.what()) == "youngs_modulus = 5e+06: must be above 5e6 Pa");
+    }
+    p.youngs_modulus = 1e9;
+    p.restitution = 1.0;
+    BOOST_CHECK_THROW(p.validate(), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(the_processor_grid_splits_horizontally) {
+    BOOST_TEST(processor_grid(1) == "1 1 1");
+    BOOST_TEST(processor_grid(4) == "4 1 1");
+}
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -147,14 +147,19 @@ int run_measure(const std::vector<std::string>& packs, CommonOptions& o, const s
             auto prov = provenance(path, pack, o.measure);
             prov["command"] = cmd;
             const std::string stem = stem_of(path);
-            std::ofstream(dir / (stem + ".metrics.json")) << metrics_json(m, prov).dump(2) << "\n";
+            std::ofstream json(dir / (stem + ".metrics.json"));
+            json << metrics_json(m, prov).dump(2) << "\n";
             std::ofstream g(dir / (stem + ".g_r.csv"));
             write_g_r_csv(g, m, prov);
             std::ofstream phi(dir / (stem + ".phi_y.csv"));
             write_phi_y_csv(phi, m, prov);
             std::ofstream pz(dir / (stem + ".p_z.csv"));
             write_p_z_csv(pz, m, prov);
-            if (!g || !phi || !pz) {
+            json.flush();
+            g.flush();
+            phi.flush();
+            pz.flush();
+            if (!json || !g || !phi || !pz) {
                 throw std::runtime_error((dir / stem).string() + ": cannot write outputs");
             }
         }

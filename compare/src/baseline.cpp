@@ -13,7 +13,9 @@ namespace {
 
 using Key = std::tuple<std::string, std::size_t, std::string>;
 
-Key key_of(const BaselineEntry& e) { return {e.group, e.count, e.metric}; }
+Key key_of(const BaselineEntry& e) {
+    return {e.group, e.count, e.metric};
+}
 
 std::string number(double value) {
     char buffer[64];
@@ -29,10 +31,10 @@ std::vector<BaselineEntry> baseline_entries(const Report& report) {
     for (const auto& c : report.comparisons) {
         for (const auto& row : c.rows) {
             const Key key{c.candidate, c.count, row.name};
-            const std::string source =
-                row.tolerance_rule == "floor"
-                    ? "floor"
-                    : "2 sd of " + c.reference + " (" + std::to_string(c.reference_packs) + " packs)";
+            const std::string source = row.tolerance_rule == "floor"
+                                           ? "floor"
+                                           : "2 sd of " + c.reference + " (" +
+                                                 std::to_string(c.reference_packs) + " packs)";
             auto found = entries.find(key);
             if (found == entries.end()) {
                 order.push_back(key);
@@ -92,7 +94,8 @@ std::vector<BaselineEntry> parse_baseline(const nlohmann::json& json, const std:
             }
             entries.push_back(std::move(e));
         } catch (const std::exception& error) {
-            throw InputError(source, 0, "entry " + std::to_string(index) + " is malformed: " + error.what());
+            throw InputError(source, 0,
+                             "entry " + std::to_string(index) + " is malformed: " + error.what());
         }
         ++index;
     }

@@ -29,7 +29,9 @@ const MetricRow& row_named(const Comparison& c, const std::string& name) {
     throw std::logic_error("comparison lacks metric " + name);
 }
 
-std::string verdict(bool agree) { return agree ? "agree" : "DIFFER"; }
+std::string verdict(bool agree) {
+    return agree ? "agree" : "DIFFER";
+}
 
 /// Mean wall seconds of the manifest's packs of `group` at `count`.
 std::optional<double> mean_seconds(const std::vector<ManifestEntry>& manifest,
@@ -235,9 +237,10 @@ std::string render_headline_text(const CrossValidation& cv) {
         out << head;
         for (const auto& v : row.against) {
             char cell[160];
-            std::snprintf(cell, sizeof cell, " | %.4f %-6s / %5.2f %-6s / %5s %-6s", v.phi_reference,
-                          verdict(v.phi_agree).c_str(), v.z_reference, verdict(v.z_agree).c_str(),
-                          optional_fixed(v.gr_ratio, 2).c_str(), verdict(v.gr_agree).c_str());
+            std::snprintf(cell, sizeof cell, " | %.4f %-6s / %5.2f %-6s / %5s %-6s",
+                          v.phi_reference, verdict(v.phi_agree).c_str(), v.z_reference,
+                          verdict(v.z_agree).c_str(), optional_fixed(v.gr_ratio, 2).c_str(),
+                          verdict(v.gr_agree).c_str());
             out << cell;
         }
         out << "\n";
@@ -262,11 +265,12 @@ std::string render_crossval_markdown(const CrossValidation& cv) {
             MetricSpread phi;
             MetricSpread z;
             for (const auto* row : rows) {
-                phi.add(row->count, row->against[r].phi_agree, row->phi - row->against[r].phi_reference);
+                phi.add(row->count, row->against[r].phi_agree,
+                        row->phi - row->against[r].phi_reference);
                 z.add(row->count, row->against[r].z_agree, row->z - row->against[r].z_reference);
             }
-            md << "- **" << candidate << " vs " << cv.references[r] << "**: "
-               << describe("φ", phi, "(ratio)", 4) << ". "
+            md << "- **" << candidate << " vs " << cv.references[r]
+               << "**: " << describe("φ", phi, "(ratio)", 4) << ". "
                << describe("Z(δ=10⁻²)", z, "contacts/particle", 2) << ". " << describe_gr(rows, r)
                << ".\n";
         }
@@ -278,7 +282,8 @@ std::string render_crossval_markdown(const CrossValidation& cv) {
           "Seconds: mean wall time per SGMP pack.\n\n";
     md << "| N | arrangement | SGMP s | SGMP φ | SGMP Z |";
     for (const auto& ref : cv.references) {
-        md << " " << ref << " φ | φ verdict | " << ref << " Z | Z verdict | g(r) ratio | g(r) verdict |";
+        md << " " << ref << " φ | φ verdict | " << ref
+           << " Z | Z verdict | g(r) ratio | g(r) verdict |";
     }
     md << "\n| ---: | --- | ---: | ---: | ---: |";
     for (std::size_t r = 0; r < cv.references.size(); ++r) {
@@ -304,7 +309,8 @@ std::string render_crossval_markdown(const CrossValidation& cv) {
     for (const auto& row : cv.rows) {
         if (!row.thesis) {
             md << "| " << row.count << " | " << row.group << " | — | — | "
-               << optional_fixed(row.seconds, 3) << " | — | — | " << fixed(row.phi, 4) << " | — |\n";
+               << optional_fixed(row.seconds, 3) << " | — | — | " << fixed(row.phi, 4)
+               << " | — |\n";
             continue;
         }
         md << "| " << row.count << " | " << row.group << " | " << row.thesis->table << " | "
@@ -368,8 +374,8 @@ nlohmann::ordered_json crossval_json(const CrossValidation& cv) {
             item["thesis"] = {{"table", row.thesis->table},
                               {"runtime_seconds", row.thesis->runtime_seconds},
                               {"phi", row.thesis->packing_fraction}};
-            item["speedup"] = row.speedup ? nlohmann::ordered_json(*row.speedup)
-                                          : nlohmann::ordered_json();
+            item["speedup"] =
+                row.speedup ? nlohmann::ordered_json(*row.speedup) : nlohmann::ordered_json();
         }
         rows.push_back(item);
     }

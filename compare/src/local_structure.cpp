@@ -87,6 +87,7 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
     const double reach = std::max(
         {outer, 2.0 * max_radius + max_tolerance * d, options.q6_cutoff * 2.0 * max_radius});
     const double reach_squared = reach * reach;
+    const double per_width = 1.0 / width;
     const std::vector<Index> ordered = spatial_order(particles, origins, d);
     const std::vector<QueryGroup> groups = query_groups(particles, ordered, kGroupSize);
 
@@ -119,7 +120,7 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
                             continue;
                         }
                         const double distance = std::sqrt(squared[k]);
-                        const auto bin = static_cast<std::size_t>(distance / width);
+                        const auto bin = static_cast<std::size_t>(distance * per_width);
                         if (bin < options.bins) {
                             ++part.pairs[bin];
                         }

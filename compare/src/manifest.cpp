@@ -28,14 +28,17 @@ std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& so
     std::string line;
     std::size_t number = 0;
     if (!std::getline(in, line)) {
-        throw InputError(source, 0, "empty manifest: expected the header '" + std::string(kHeader) + "'");
+        throw InputError(source, 0,
+                         "empty manifest: expected the header '" + std::string(kHeader) + "'");
     }
     ++number;
     if (!line.empty() && line.back() == '\r') {
         line.pop_back();
     }
     if (line != kHeader) {
-        throw InputError(source, number, "expected the header '" + std::string(kHeader) + "', found '" + line + "'");
+        throw InputError(
+            source, number,
+            "expected the header '" + std::string(kHeader) + "', found '" + line + "'");
     }
     std::vector<ManifestEntry> entries;
     std::set<std::string> paths;
@@ -46,7 +49,9 @@ std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& so
         }
         const auto fields = detail::split_csv_line(line);
         if (fields.size() != 6) {
-            throw InputError(source, number, "expected 6 comma-separated fields, found " + std::to_string(fields.size()));
+            throw InputError(
+                source, number,
+                "expected 6 comma-separated fields, found " + std::to_string(fields.size()));
         }
         ManifestEntry entry;
         if (fields[0] == "candidate") {
@@ -54,7 +59,8 @@ std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& so
         } else if (fields[0] == "reference") {
             entry.role = Role::Reference;
         } else {
-            throw InputError(source, number, "role '" + fields[0] + "' must be 'candidate' or 'reference'");
+            throw InputError(source, number,
+                             "role '" + fields[0] + "' must be 'candidate' or 'reference'");
         }
         entry.group = fields[1];
         if (entry.group.empty()) {
@@ -62,18 +68,21 @@ std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& so
         }
         const auto count = parse_number<std::size_t>(fields[2]);
         if (!count || *count == 0) {
-            throw InputError(source, number, "count '" + fields[2] + "' must be a positive integer");
+            throw InputError(source, number,
+                             "count '" + fields[2] + "' must be a positive integer");
         }
         entry.count = *count;
         const auto seed = parse_number<std::uint64_t>(fields[3]);
         if (!seed) {
-            throw InputError(source, number, "seed '" + fields[3] + "' must be a non-negative integer");
+            throw InputError(source, number,
+                             "seed '" + fields[3] + "' must be a non-negative integer");
         }
         entry.seed = *seed;
         if (!fields[4].empty()) {
             const auto seconds = parse_number<double>(fields[4]);
             if (!seconds || *seconds < 0.0) {
-                throw InputError(source, number, "seconds '" + fields[4] + "' must be a number >= 0 or empty");
+                throw InputError(source, number,
+                                 "seconds '" + fields[4] + "' must be a number >= 0 or empty");
             }
             entry.seconds = *seconds;
         }

@@ -72,7 +72,8 @@ void Candidates::gather(const NeighbourIndex& tree, const std::vector<Particle>&
     // Every member lies within half_diagonal of the centre; a small widening covers the
     // rounding of that bound.
     tree.within(group.center, (radius + group.half_diagonal) * (1.0 + 1e-12), index);
-    std::sort(index.begin(), index.end());
+    // The tree reports in a fixed order for a given query, so no sort is needed for
+    // determinism.
     const std::size_t n = index.size();
     x.resize(n);
     y.resize(n);

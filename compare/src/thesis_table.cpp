@@ -26,7 +26,8 @@ double number_field(const std::string& text, const char* what, const std::string
 std::vector<ThesisResult> read_thesis_results(std::istream& in, const std::string& source) {
     std::string line;
     std::size_t number = 1;
-    if (!std::getline(in, line) || detail::split_csv_line(line) != detail::split_csv_line(kHeader)) {
+    if (!std::getline(in, line) ||
+        detail::split_csv_line(line) != detail::split_csv_line(kHeader)) {
         throw InputError(source, number, "expected the header '" + std::string(kHeader) + "'");
     }
     std::vector<ThesisResult> results;
@@ -37,13 +38,16 @@ std::vector<ThesisResult> read_thesis_results(std::istream& in, const std::strin
         }
         const auto fields = detail::split_csv_line(line);
         if (fields.size() != 5) {
-            throw InputError(source, number, "expected 5 comma-separated fields, found " + std::to_string(fields.size()));
+            throw InputError(
+                source, number,
+                "expected 5 comma-separated fields, found " + std::to_string(fields.size()));
         }
         ThesisResult row;
         row.arrangement = fields[0];
         const double count = number_field(fields[1], "count", source, number);
         if (count < 1.0 || count != static_cast<double>(static_cast<std::size_t>(count))) {
-            throw InputError(source, number, "count '" + fields[1] + "' must be a positive integer");
+            throw InputError(source, number,
+                             "count '" + fields[1] + "' must be a positive integer");
         }
         row.count = static_cast<std::size_t>(count);
         row.runtime_seconds = number_field(fields[2], "runtime_s", source, number);

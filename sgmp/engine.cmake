@@ -5,6 +5,7 @@ add_library(sgmp_engine
     src/engine/arrangement.cpp
     src/engine/settled_grid.cpp
     src/engine/protocol_params.cpp
+    src/engine/free_arcs.cpp
     src/engine/protocol.cpp
     src/engine/contact_model.cpp
     src/engine/make_pack.cpp

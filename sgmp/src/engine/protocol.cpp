@@ -1,11 +1,6 @@
 #include "sgmp/engine/protocol.hpp"
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -34,9 +29,10 @@ Protocol::Protocol(const Container& container, const ProtocolParams& params, dou
         tables_.emplace_back(n);
     }
     const int largest = params.sweep_stages.back();
-    free_bits_.resize(static_cast<std::size_t>((largest + 63) / 64));
-    arc_start_.reserve(static_cast<std::size_t>(largest));
-    arc_length_.reserve(static_cast<std::size_t>(largest));
+    runs_.start.reserve(static_cast<std::size_t>(largest));
+    runs_.length.reserve(static_cast<std::size_t>(largest));
+    runs_.bits.reserve(static_cast<std::size_t>((largest + 63) / 64));
+    runs_.blocked.reserve(64);
     near_.reserve(64);
     local_.reserve(256);
     skin_ = 0.5 * max_radius;
@@ -163,7 +159,7 @@ void Protocol::gather_near(const Vec3& c, double r, double s) {
         const double b = 2.0 * s * dz;
         // Some sample can collide only if q > min over u of (a·u_x + b·u_z) = −√(a² + b²).
         if (q >= 0.0 || q * q < a * a + b * b) {
-            near_.push_back(Near{a, b, q});
+            near_.push_back(Blocker{a, b, q});
         }
     }
     if (params_.walls == WallRule::Block) {
@@ -171,7 +167,7 @@ void Protocol::gather_near(const Vec3& c, double r, double s) {
         // c_x + s·u_x + r > x_max ⟺ −s·u_x < c_x + r − x_max (likewise for the others).
         const auto wall = [&](double a, double b, double q) {
             if (q > -std::abs(a) - std::abs(b)) {
-                near_.push_back(Near{a, b, q});
+                near_.push_back(Blocker{a, b, q});
             }
         };
         wall(-s, 0.0, c.x() + r - container_.x_max);
@@ -245,70 +241,14 @@ bool Protocol::pick_in_arc(const SweepTable& table, int start, int length, const
     return true;
 }
 
-int Protocol::find_free_runs(const SweepTable& table) {
-    // Free flags packed 64 to a word (bit k of word w: sample 64w + k), two samples at a
-    // time. Sample k is free iff a·u_x + b·u_z ≥ q for every blocking constraint.
-    const int n = table.positions();
-    const double* ux = table.sample_x();
-    const double* uz = table.sample_z();
-    const int words = (n + 63) / 64;
-    for (int w = 0; w < words; ++w) {
-        const int begin = 64 * w;
-        const int end = std::min(n, begin + 64);
-        std::uint64_t bits = 0;
-        int k = begin;
-#if defined(__SSE2__)
-        for (; k + 1 < end; k += 2) {
-            const __m128d x = _mm_loadu_pd(ux + k);
-            const __m128d z = _mm_loadu_pd(uz + k);
-            __m128d free = _mm_cmpeq_pd(x, x);  // all ones
-            for (const Near& near : near_) {
-                const __m128d value = _mm_add_pd(_mm_mul_pd(_mm_set1_pd(near.a), x),
-                                                 _mm_mul_pd(_mm_set1_pd(near.b), z));
-                free = _mm_and_pd(free, _mm_cmpge_pd(value, _mm_set1_pd(near.q)));
-            }
-            bits |= static_cast<std::uint64_t>(_mm_movemask_pd(free)) << (k - begin);
-        }
-#endif
-        for (; k < end; ++k) {
-            bool free = true;
-            for (const Near& near : near_) {
-                free = free && near.a * ux[k] + near.b * uz[k] >= near.q;
-            }
-            bits |= static_cast<std::uint64_t>(free) << (k - begin);
-        }
-        free_bits_[w] = bits;
-    }
-    const auto next = [&](int from, bool value) {  // first sample ≥ from with this flag
-        while (from < n) {
-            const int w = from / 64;
-            std::uint64_t bits = value ? free_bits_[w] : ~free_bits_[w];
-            bits &= ~std::uint64_t{0} << (from % 64);
-            if (bits != 0) {
-                return std::min(n, 64 * w + std::countr_zero(bits));
-            }
-            from = 64 * (w + 1);
-        }
-        return n;
-    };
-    arc_start_.clear();
-    arc_length_.clear();
-    int free_count = 0;
-    for (int k = next(0, true); k < n; k = next(k, true)) {
-        const int end = next(k, false);
-        arc_start_.push_back(k);
-        arc_length_.push_back(end - k);
-        free_count += end - k;
-        k = end;
-    }
-    return free_count;
-}
-
 bool Protocol::choose_move(const Vec3& c, double r, double s, const Move& previous, Random& rng,
                            Move& chosen) {
     for (const SweepTable& table : tables_) {
         const int n = table.positions();
-        const int free_count = find_free_runs(table);
+        free_runs(table, near_, runs_);
+        const int free_count = runs_.free_count;
+        std::vector<int>& arc_start_ = runs_.start;
+        std::vector<int>& arc_length_ = runs_.length;
         if (free_count == 0) {
             continue;  // next, finer stage
         }

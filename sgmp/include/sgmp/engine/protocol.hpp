@@ -54,6 +54,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "sgmp/engine/free_arcs.hpp"
 #include "sgmp/engine/protocol_params.hpp"
 #include "sgmp/engine/settled_grid.hpp"
 #include "sgmp/engine/sweep_table.hpp"
@@ -93,14 +94,6 @@ class Protocol {
     [[nodiscard]] std::size_t settled_count() const { return grid_.size(); }
 
   private:
-    /// A sphere (or, with the block rule, a wall) that can block some sweep sample: the sample at
-    /// unit offset (u_x, u_z) collides iff a·u_x + b·u_z < q, from |δ + s·u|² < D² with δ = c −
-    /// c_j: a = 2s·δ_x, b = 2s·δ_z, q = D² − |δ|² − s².
-    struct Near {
-        double a;
-        double b;
-        double q;
-    };
     struct Fall {
         double y;
         bool on_floor;
@@ -123,9 +116,6 @@ class Protocol {
     [[nodiscard]] bool free_at(const Vec3& c, double r, double ox, double oz) const;
     [[nodiscard]] bool crosses_wall(double x, double z, double r) const;
     [[nodiscard]] bool touches_wall(const Vec3& c, double r) const;
-    /// Tests every sample of `table` against near_ and fills arc_start_/arc_length_ with the
-    /// runs of free samples (not yet merged across angle 0); returns the free count.
-    int find_free_runs(const SweepTable& table);
     /// Chooses the move direction; false when no stage has a free position.
     bool choose_move(const Vec3& c, double r, double s, const Move& previous, Random& rng,
                      Move& chosen);
@@ -145,14 +135,13 @@ class Protocol {
     SettledGrid grid_;
     std::vector<SweepTable> tables_;
     // Scratch buffers reused by every drop (no allocation in the drop loop).
-    std::vector<Near> near_;
+    /// Obstacles of the current sweep as linear constraints (free_arcs.hpp).
+    std::vector<Blocker> near_;
+    FreeRuns runs_;
     std::vector<Sphere> local_;
     Vec3 local_origin_ = Vec3::Zero();
     bool local_valid_ = false;
     double skin_ = 0.0;
-    std::vector<std::uint64_t> free_bits_;
-    std::vector<int> arc_start_;
-    std::vector<int> arc_length_;
     std::vector<std::pair<double, double>> lift_scratch_;
 };
 

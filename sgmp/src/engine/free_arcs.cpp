@@ -1,0 +1,212 @@
+#include "sgmp/engine/free_arcs.hpp"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <numbers>
+
+namespace sgmp::engine {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+/// atan2 to ~3e-5 rad (only used to locate run ends, which are then settled exactly).
+double rough_atan2(double y, double x) {
+    const double ax = std::abs(x);
+    const double ay = std::abs(y);
+    const double big = std::max(ax, ay);
+    if (big == 0.0) {
+        return 0.0;
+    }
+    const double t = std::min(ax, ay) / big;
+    const double s = t * t;
+    double angle = ((-0.0464964749 * s + 0.15931422) * s - 0.327622764) * s * t + t;
+    if (ay > ax)
+        angle = 0.5 * kPi - angle;
+    if (x < 0.0)
+        angle = kPi - angle;
+    return y < 0.0 ? -angle : angle;
+}
+
+/// acos to ~2e-8 rad (Abramowitz & Stegun 4.4.46).
+double rough_acos(double x) {
+    const double ax = std::abs(x);
+    double p = -0.0012624911;
+    p = p * ax + 0.0066700901;
+    p = p * ax - 0.0170881256;
+    p = p * ax + 0.0308918810;
+    p = p * ax - 0.0501743046;
+    p = p * ax + 0.0889789874;
+    p = p * ax - 0.2145988016;
+    p = p * ax + 1.5707963050;
+    const double angle = std::sqrt(1.0 - ax) * p;
+    return x >= 0.0 ? angle : kPi - angle;
+}
+
+/// Collects runs of set bits of out.bits (n samples) into out.start/length.
+void runs_from_bits(int n, FreeRuns& out) {
+    const auto next = [&](int from, bool value) {  // first sample ≥ from with this flag
+        while (from < n) {
+            const int w = from / 64;
+            std::uint64_t word = value ? out.bits[w] : ~out.bits[w];
+            word &= ~std::uint64_t{0} << (from % 64);
+            if (word != 0) {
+                return std::min(n, 64 * w + std::countr_zero(word));
+            }
+            from = 64 * (w + 1);
+        }
+        return n;
+    };
+    for (int k = next(0, true); k < n; k = next(k, true)) {
+        const int end = next(k, false);
+        out.start.push_back(k);
+        out.length.push_back(end - k);
+        out.free_count += end - k;
+        k = end;
+    }
+}
+
+enum class Run { Found, Empty, Undecided };
+
+/// The run of samples one constraint blocks, as unwrapped indices [lo, hi].
+Run blocked_run(const SweepTable& table, const Blocker& c, long& lo, long& hi) {
+    const int n = table.positions();
+    const double* ux = table.sample_x();
+    const double* uz = table.sample_z();
+    const auto blocked = [&](long k) {
+        const long i = ((k % n) + n) % n;
+        return c.a * ux[i] + c.b * uz[i] < c.q;
+    };
+    const double radius = std::sqrt(c.a * c.a + c.b * c.b);
+    if (radius == 0.0 || std::abs(c.q) >= (1.0 - 1e-6) * radius) {
+        return Run::Undecided;  // constant or near tangency: test every sample
+    }
+    const double psi = rough_atan2(c.a, c.b);
+    const double beta = rough_acos(c.q / radius);
+    const double per_radian = n / (2.0 * kPi);
+    lo = static_cast<long>(std::ceil((psi + beta) * per_radian));
+    hi = static_cast<long>(std::floor((psi + 2.0 * kPi - beta) * per_radian));
+    constexpr int kMaxSteps = 64;  // the estimates are off by far less than this
+    int steps = 0;
+    if (lo > hi || !blocked(lo) || !blocked(hi)) {
+        // Shrink onto blocked samples (or find the one nearest the arc's middle).
+        while (lo <= hi && !blocked(lo) && ++steps < kMaxSteps)
+            ++lo;
+        while (hi >= lo && !blocked(hi) && ++steps < kMaxSteps)
+            --hi;
+        if (lo > hi) {
+            const long middle = std::lround((psi + kPi) * per_radian);
+            lo = hi = middle;
+            if (!blocked(middle)) {
+                return blocked(middle - 1) || blocked(middle + 1) ? Run::Undecided : Run::Empty;
+            }
+        }
+        if (steps >= kMaxSteps)
+            return Run::Undecided;
+    }
+    // Grow to the true ends.
+    while (hi - lo + 1 < n && blocked(lo - 1) && ++steps < kMaxSteps)
+        --lo;
+    while (hi - lo + 1 < n && blocked(hi + 1) && ++steps < kMaxSteps)
+        ++hi;
+    return steps >= kMaxSteps ? Run::Undecided : Run::Found;
+}
+
+}  // namespace
+
+void free_runs_by_samples(const SweepTable& table, const std::vector<Blocker>& blockers,
+                          FreeRuns& out) {
+    // Free flags packed 64 to a word (bit k of word w: sample 64w + k), two samples at a
+    // time. Sample k is free iff a·u_x + b·u_z ≥ q for every constraint.
+    const int n = table.positions();
+    const double* ux = table.sample_x();
+    const double* uz = table.sample_z();
+    const int words = (n + 63) / 64;
+    out.bits.resize(static_cast<std::size_t>(words));
+    for (int w = 0; w < words; ++w) {
+        const int begin = 64 * w;
+        const int end = std::min(n, begin + 64);
+        std::uint64_t bits = 0;
+        int k = begin;
+#if defined(__SSE2__)
+        for (; k + 1 < end; k += 2) {
+            const __m128d x = _mm_loadu_pd(ux + k);
+            const __m128d z = _mm_loadu_pd(uz + k);
+            __m128d free = _mm_cmpeq_pd(x, x);  // all ones
+            for (const Blocker& c : blockers) {
+                const __m128d value =
+                    _mm_add_pd(_mm_mul_pd(_mm_set1_pd(c.a), x), _mm_mul_pd(_mm_set1_pd(c.b), z));
+                free = _mm_and_pd(free, _mm_cmpge_pd(value, _mm_set1_pd(c.q)));
+            }
+            bits |= static_cast<std::uint64_t>(_mm_movemask_pd(free)) << (k - begin);
+        }
+#endif
+        for (; k < end; ++k) {
+            bool free = true;
+            for (const Blocker& c : blockers) {
+                free = free && c.a * ux[k] + c.b * uz[k] >= c.q;
+            }
+            bits |= static_cast<std::uint64_t>(free) << (k - begin);
+        }
+        out.bits[w] = bits;
+    }
+    out.start.clear();
+    out.length.clear();
+    out.free_count = 0;
+    runs_from_bits(n, out);
+}
+
+void free_runs(const SweepTable& table, const std::vector<Blocker>& blockers, FreeRuns& out) {
+    const long n = table.positions();
+    // Blocked runs, split at angle 0 into runs within [0, n).
+    out.blocked.clear();
+    for (const Blocker& c : blockers) {
+        long lo = 0;
+        long hi = -1;
+        const Run run = blocked_run(table, c, lo, hi);
+        if (run == Run::Undecided) {
+            free_runs_by_samples(table, blockers, out);
+            return;
+        }
+        if (run == Run::Empty) {
+            continue;
+        }
+        if (hi - lo + 1 >= n) {
+            out.blocked.emplace_back(0, n);
+            continue;
+        }
+        const long start = ((lo % n) + n) % n;
+        const long end = start + (hi - lo + 1);  // exclusive, may pass n
+        if (end <= n) {
+            out.blocked.emplace_back(start, end);
+        } else {
+            out.blocked.emplace_back(start, n);
+            out.blocked.emplace_back(0, end - n);
+        }
+    }
+    std::sort(out.blocked.begin(), out.blocked.end());
+    // Free runs are the gaps between the merged blocked runs.
+    out.start.clear();
+    out.length.clear();
+    out.free_count = 0;
+    long covered = 0;  // every sample below this is blocked or already emitted
+    const auto emit_free = [&](long from, long to) {
+        if (to > from) {
+            out.start.push_back(static_cast<int>(from));
+            out.length.push_back(static_cast<int>(to - from));
+            out.free_count += static_cast<int>(to - from);
+        }
+    };
+    for (const auto& [from, to] : out.blocked) {
+        emit_free(covered, from);
+        covered = std::max(covered, to);
+    }
+    emit_free(covered, n);
+}
+
+}  // namespace sgmp::engine

@@ -247,8 +247,8 @@ bool Protocol::choose_move(const Vec3& c, double r, double s, const Move& previo
         const int n = table.positions();
         free_runs(table, near_, runs_);
         const int free_count = runs_.free_count;
-        std::vector<int>& arc_start_ = runs_.start;
-        std::vector<int>& arc_length_ = runs_.length;
+        std::vector<int>& starts = runs_.start;
+        std::vector<int>& lengths = runs_.length;
         if (free_count == 0) {
             continue;  // next, finer stage
         }
@@ -258,28 +258,26 @@ bool Protocol::choose_move(const Vec3& c, double r, double s, const Move& previo
             chosen = Move{table.x(2 * k), table.z(2 * k)};
             return true;
         }
-        if (arc_start_.size() >= 2 && arc_start_.front() == 0 &&
-            arc_start_.back() + arc_length_.back() == n) {
-            arc_length_.back() += arc_length_.front();
-            arc_start_.front() = arc_start_.back();
-            arc_length_.front() = arc_length_.back();
-            arc_start_.pop_back();
-            arc_length_.pop_back();
+        if (starts.size() >= 2 && starts.front() == 0 && starts.back() + lengths.back() == n) {
+            lengths.back() += lengths.front();
+            starts.front() = starts.back();
+            lengths.front() = lengths.back();
+            starts.pop_back();
+            lengths.pop_back();
         }
         std::size_t pick = 0;
         if (params_.gap == GapRule::Random) {
-            pick = static_cast<std::size_t>(rng.below(arc_start_.size()));
+            pick = static_cast<std::size_t>(rng.below(starts.size()));
         } else {
-            for (std::size_t a = 1; a < arc_start_.size(); ++a) {
-                const bool longer = arc_length_[a] > arc_length_[pick];
-                const bool tie_earlier =
-                    arc_length_[a] == arc_length_[pick] && arc_start_[a] < arc_start_[pick];
+            for (std::size_t a = 1; a < starts.size(); ++a) {
+                const bool longer = lengths[a] > lengths[pick];
+                const bool tie_earlier = lengths[a] == lengths[pick] && starts[a] < starts[pick];
                 if (longer || tie_earlier) {
                     pick = a;
                 }
             }
         }
-        return pick_in_arc(table, arc_start_[pick], arc_length_[pick], c, r, s, previous, chosen);
+        return pick_in_arc(table, starts[pick], lengths[pick], c, r, s, previous, chosen);
     }
     return false;
 }

@@ -27,6 +27,29 @@ BOOST_AUTO_TEST_CASE(same_request_gives_the_same_pack_bit_for_bit) {
     }
 }
 
+BOOST_AUTO_TEST_CASE(a_pack_starts_from_make_arrangement_with_the_same_seed) {
+    // What a reference pour started from the same state relies on.
+    for (const Arrangement a : {Arrangement::LooseRandom, Arrangement::SmallDense}) {
+        PackRequest request;
+        request.count = 700;
+        request.arrangement = a;
+        request.seed = 12;
+        Random rng(12);
+        const auto expected = make_arrangement(a, 700, diameter_for_count(700), rng);
+        const Pack start = make_start_pack(request);
+        BOOST_TEST_REQUIRE(start.particles.size() == expected.size());
+        for (std::size_t i = 0; i < expected.size(); ++i) {
+            BOOST_TEST((start.particles[i].center == expected[i].center));
+            BOOST_TEST(start.particles[i].color == expected[i].color);
+            BOOST_TEST(start.particles[i].id == expected[i].id);
+        }
+        // And the pack keeps ids and colours of its start.
+        const Pack pack = make_pack(request);
+        BOOST_TEST(pack.particles[500].id == expected[500].id);
+        BOOST_TEST(pack.particles[500].color == expected[500].color);
+    }
+}
+
 BOOST_AUTO_TEST_CASE(metadata_records_tool_parameters_and_seed) {
     PackRequest request;
     request.count = 150;

@@ -2,8 +2,11 @@
 /// @file make_pack.hpp
 /// Building a whole pack: size the particles (thesis sizing rule), lay out the starting
 /// arrangement, drop every particle in id order with the protocol, and record full
-/// provenance. Same request ⇒ same pack, bit for bit (one `Random(seed)` stream feeds the
-/// colours, the loose-random positions and the protocol's random choices, in that order).
+/// provenance. Same request ⇒ same pack, bit for bit: one `Random(seed)` stream feeds, in
+/// this order, the size draw (multi-modal only), the colours, the loose-random positions and
+/// the protocol's random choices. So for equal spheres the starting arrangement of a pack is
+/// exactly `make_arrangement(arrangement, count, diameter_for_count(count, φ*),
+/// Random(seed))` — what a reference pour started from the same state uses.
 #include <cstddef>
 #include <cstdint>
 #include <functional>

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
+
+#include "sgmp/compare/spatial_order.hpp"
 
 namespace sgmp::compare {
 namespace {
@@ -85,18 +88,33 @@ Container container_of(const Pack& pack, std::string* source) {
     return text ? Container::parse(*text) : Container{};
 }
 
+/// The particles sorted along a Morton curve of cells of side d, so that particles near in
+/// space are near in memory (every pass then walks the kd-tree and the arrays in cache).
+std::vector<Particle> spatially_ordered(const std::vector<Particle>& particles, double d) {
+    std::vector<Index> all(particles.size());
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        all[i] = static_cast<Index>(i);
+    }
+    std::vector<Particle> ordered;
+    ordered.reserve(particles.size());
+    for (const Index i : spatial_order(particles, std::move(all), d)) {
+        ordered.push_back(particles[i]);
+    }
+    return ordered;
+}
+
 Measurement measure(const Pack& pack, const MeasureOptions& options) {
     validate(options);
-    const auto& particles = pack.particles;
-    if (particles.empty()) {
+    if (pack.particles.empty()) {
         throw std::invalid_argument("the pack has no particles");
     }
     Stopwatch watch;
+    const auto& input = pack.particles;
     Measurement m;
-    m.count = particles.size();
+    m.count = input.size();
     m.mean_diameter = mean_diameter(pack);
     const auto [lo, hi] = std::minmax_element(
-        particles.begin(), particles.end(),
+        input.begin(), input.end(),
         [](const Particle& a, const Particle& b) { return a.radius < b.radius; });
     m.min_radius = lo->radius;
     m.max_radius = hi->radius;
@@ -105,10 +123,14 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     m.region = options.region.value_or(control_volume());
     check_region(m.region, m.container);
     m.top = -std::numeric_limits<double>::infinity();
-    for (const Particle& p : particles) {
+    for (const Particle& p : input) {
         m.top = std::max(m.top, p.center.y() + p.radius);
     }
     const double d = m.mean_diameter;
+    if (!(d > 0.0) || !std::isfinite(d)) {
+        throw std::invalid_argument("the pack's mean diameter must be positive and finite");
+    }
+    const std::vector<Particle> particles = spatially_ordered(pack.particles, d);
 
     std::vector<Vec3> centres;
     centres.reserve(particles.size());

@@ -3,16 +3,13 @@
 #include <algorithm>
 
 #include "sgmp/compare/parallel.hpp"
-#include "sgmp/compare/spatial_order.hpp"
 
 #include <cmath>
 
 namespace sgmp::compare {
 namespace {
 
-// One particle per query: at a radius of one diameter, grouping costs more than it saves.
-constexpr std::size_t kGroupSize = 1;
-constexpr std::size_t kGroupsPerChunk = 4096;
+constexpr std::size_t kChunk = 4096;
 
 struct Tally {
     std::int64_t count = 0;
@@ -85,49 +82,33 @@ OverlapStats measure_overlaps(const std::vector<Particle>& particles, const Neig
         Tally pairs;
         Tally walls;
     };
-    std::vector<Index> all(particles.size());
-    for (std::size_t i = 0; i < all.size(); ++i) {
-        all[i] = static_cast<Index>(i);
-    }
-    const std::vector<Index> ordered = spatial_order(particles, std::move(all), mean_diameter);
-    const std::vector<QueryGroup> groups = query_groups(particles, ordered, kGroupSize);
+    // One query per particle, in index order (measure() orders particles along a Morton
+    // curve, which keeps consecutive queries in cache).
     const double reach = 2.0 * max_radius;
     const Both both = chunked_reduce(
-        groups.size(), kGroupsPerChunk, Both{},
+        particles.size(), kChunk, Both{},
         [&](Both& part, std::size_t begin, std::size_t end) {
-            Candidates candidates;
-            for (std::size_t g = begin; g < end; ++g) {
-                candidates.gather(index, particles, groups[g], reach);
-                for (std::size_t o = groups[g].begin; o < groups[g].end; ++o) {
-                    const Index i = ordered[o];
-                    const Particle& a = particles[i];
-                    for (std::size_t k = 0; k < candidates.index.size(); ++k) {
-                        const Index j = candidates.index[k];
-                        if (j <= i) {
-                            continue;
-                        }
-                        const double dx = candidates.x[k] - a.center.x();
-                        const double dy = candidates.y[k] - a.center.y();
-                        const double dz = candidates.z[k] - a.center.z();
-                        const double sum = a.radius + candidates.r[k];
-                        const double squared = dx * dx + dy * dy + dz * dz;
-                        if (squared >= sum * sum) {
-                            continue;
-                        }
-                        const double depth = sum - std::sqrt(squared);
-                        if (depth > 0.0) {
-                            const Particle& b = particles[j];
-                            add(part.pairs,
-                                OverlapRecord{std::min(a.id, b.id), std::max(a.id, b.id),
-                                              depth / mean_diameter},
-                                floor, worst_count);
-                        }
+            std::vector<Index> found;
+            for (std::size_t i = begin; i < end; ++i) {
+                const Particle& a = particles[i];
+                index.within(a.center, std::min(reach, a.radius + max_radius), found);
+                for (const Index j : found) {
+                    if (j <= i) {
+                        continue;
                     }
-                    const double wall = container.penetration(a.center, a.radius);
-                    if (wall > 0.0) {
-                        add(part.walls, OverlapRecord{a.id, -1, wall / mean_diameter}, floor,
-                            worst_count);
+                    const Particle& b = particles[j];
+                    const double depth = a.radius + b.radius - (a.center - b.center).norm();
+                    if (depth > 0.0) {
+                        add(part.pairs,
+                            OverlapRecord{std::min(a.id, b.id), std::max(a.id, b.id),
+                                          depth / mean_diameter},
+                            floor, worst_count);
                     }
+                }
+                const double wall = container.penetration(a.center, a.radius);
+                if (wall > 0.0) {
+                    add(part.walls, OverlapRecord{a.id, -1, wall / mean_diameter}, floor,
+                        worst_count);
                 }
             }
         },

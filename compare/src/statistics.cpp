@@ -1,5 +1,6 @@
 #include "sgmp/compare/statistics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -17,8 +18,9 @@ double mean(const std::vector<double>& values) {
 }
 
 double sample_sd(const std::vector<double>& values) {
-    if (values.size() < 2) {
-        return 0.0;
+    if (values.size() < 2 ||
+        std::all_of(values.begin(), values.end(), [&](double v) { return v == values[0]; })) {
+        return 0.0;  // exactly, not the rounding residue of the mean
     }
     const double m = mean(values);
     double sum = 0.0;

@@ -125,4 +125,29 @@ BOOST_AUTO_TEST_CASE(q6_of_the_lattices) {
     }
 }
 
+BOOST_AUTO_TEST_CASE(thesis_rdf_follows_its_equations) {
+    // Eq. 3.7-3.10 on FCC: the contact bin holds the origin's 12 neighbours, so
+    // g = (12 / N) / (φ · 4π/3 [(R + ΔR/2)³ − (R − ΔR/2)³]) with R the bin centre.
+    const Case& fcc = cases()[0];
+    const Box fill{Vec3::Constant(-0.6), Vec3::Constant(0.6)};
+    const Pack pack = sgmp::testing::lattice_pack(fcc.lattice, kD, fill, Vec3::Constant(0.0123));
+    MeasureOptions options;
+    const double half = 2.0 * fcc.cell * kD;
+    options.region = Box{Vec3::Constant(-half), Vec3::Constant(half)};
+    options.gr_bin_width = 0.03;
+    options.gr_thesis = true;
+    const Measurement m = measure(pack, options);
+    BOOST_REQUIRE(m.thesis_rdf.has_value());
+    const auto& t = *m.thesis_rdf;
+    BOOST_TEST(t.region_count == m.local.rdf.origins);
+    const std::size_t bin = static_cast<std::size_t>(1.0 / 0.03);
+    const double width = 0.03 * kD;
+    const double r = (bin + 0.5) * width;
+    const double shell =
+        4.0 * std::numbers::pi / 3.0 * (std::pow(r + width / 2, 3) - std::pow(r - width / 2, 3));
+    const double expected = 12.0 / static_cast<double>(t.region_count) / (m.phi * shell);
+    BOOST_TEST(std::abs(t.g[bin] - expected) <= 1e-12 * expected);
+    BOOST_TEST(t.g[bin - 2] == 0.0);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -92,6 +92,11 @@ Pack read_pack(const std::string& path) {
     if (pack.particles.empty()) {
         throw InputError(path, 0, "the pack has no particles");
     }
+    try {
+        (void)container_of(pack);
+    } catch (const std::invalid_argument& error) {
+        throw InputError(path, 2, error.what());  // the header line holds the container key
+    }
     return pack;
 }
 

@@ -77,8 +77,11 @@ BOOST_AUTO_TEST_CASE(bad_pack_files_give_one_line_and_status_1) {
     write("inf.xyz", "1\n" + kHeader + "1 0 inf 0 0.05 0\n");
     write("radius.xyz", "1\n" + kHeader + "1 0 0 0 -0.05 0\n");
     write("zero.xyz", "1\n" + kHeader + "1 0 0 0 0 0\n");
+    write("container.xyz",
+          "1\nProperties=id:I:1:pos:R:3:radius:R:1:color:I:1 container=\"1 2 3\"\n"
+          "1 0 0 0 0.05 0\n");
     for (const char* file : {"empty.xyz", "short.xyz", "word.xyz", "columns.xyz", "nan.xyz",
-                             "inf.xyz", "radius.xyz", "zero.xyz", "missing.xyz"}) {
+                             "inf.xyz", "radius.xyz", "zero.xyz", "container.xyz", "missing.xyz"}) {
         const Result r = run(std::string("measure ") + file + " --out out-bad");
         BOOST_TEST(r.status == 1, file << ": " << r.err);
         BOOST_TEST(lines(r.err) == 1u, file << ": " << r.err);

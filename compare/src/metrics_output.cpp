@@ -146,6 +146,9 @@ void write_comment_header(std::ostream& out, const Json& prov) {
 void write_g_r_csv(std::ostream& out, const Measurement& m, const Json& prov) {
     write_comment_header(out, prov);
     const auto& rdf = m.local.rdf;
+    out << "# r_over_d: centre distance over the mean diameter d (also for polydisperse packs); "
+           "pairs: origin-neighbour pairs in the bin; shell_volume: summed edge-corrected shell "
+           "volume (length units cubed)\n";
     out << "r_over_d,r_lo_over_d,r_hi_over_d,g,pairs,shell_volume";
     if (m.thesis_rdf) {
         out << ",g_thesis";

@@ -8,6 +8,7 @@ add_library(sgmp_engine
     src/engine/free_arcs.cpp
     src/engine/protocol.cpp
     src/engine/contact_model.cpp
+    src/engine/rolling.cpp
     src/engine/make_pack.cpp
     src/engine/pack_checks.cpp)
 target_include_directories(sgmp_engine PUBLIC include)

@@ -98,7 +98,8 @@ void add_protocol(CLI::App& app, Options& o) {
         ->capture_default_str();
     app.add_option("--contact", o.contact,
                    "contact model for resting particles: none | settle (drop onto the support "
-                   "and roll down over it to a second contact)")
+                   "and roll down over it to a second contact) | roll (roll on down to a stable "
+                   "rest on three spheres, or the floor or a wall)")
         ->capture_default_str();
     app.add_option("--momentum", o.momentum,
                    "momentum weight m in [0, 1): move toward (1-m)*bisector + m*previous move")
@@ -157,7 +158,8 @@ PackRequest to_request(const Options& o) {
     p.gap = parse_choice(parse_gap_rule(o.gap), "gap", o.gap, "largest, random");
     p.fall = parse_choice(parse_fall_mode(o.fall), "fall", o.fall, "exact, step");
     p.fall_step = o.fall_step;
-    p.contact = parse_choice(parse_contact_model(o.contact), "contact", o.contact, "none, settle");
+    p.contact =
+        parse_choice(parse_contact_model(o.contact), "contact", o.contact, "none, settle, roll");
     p.momentum = o.momentum;
     p.walls = parse_choice(parse_wall_rule(o.walls), "walls", o.walls, "fix, block");
     p.stall_moves = o.stall_moves;

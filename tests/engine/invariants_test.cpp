@@ -77,6 +77,15 @@ BOOST_AUTO_TEST_CASE(improved_protocol_options_keep_the_invariants) {
             p.contact = ContactModel::Settle;
             p.fall = FallMode::Step;
         },
+        [](ProtocolParams& p) { p.contact = ContactModel::Roll; },
+        [](ProtocolParams& p) {
+            p.contact = ContactModel::Roll;
+            p.fall = FallMode::Step;
+        },
+        [](ProtocolParams& p) {
+            p.contact = ContactModel::Roll;
+            p.walls = WallRule::Block;
+        },
         [](ProtocolParams& p) { p.momentum = 0.5; },
         [](ProtocolParams& p) { p.walls = WallRule::Block; },
         [](ProtocolParams& p) {
@@ -97,7 +106,7 @@ BOOST_AUTO_TEST_CASE(improved_protocol_options_keep_the_invariants) {
             }
         }
     }
-    BOOST_TEST(tally.packs == 42);
+    BOOST_TEST(tally.packs == 60);
 }
 
 BOOST_AUTO_TEST_CASE(multi_modal_packs_keep_the_invariants) {
@@ -112,6 +121,7 @@ BOOST_AUTO_TEST_CASE(multi_modal_packs_keep_the_invariants) {
                 request.seed = seed;
                 request.protocol.fall = fall;
                 request.size_modes = {SizeMode{1.0, 0.5}, SizeMode{0.5, 0.3}, SizeMode{0.3, 0.2}};
+                request.protocol.contact = seed == 2 ? ContactModel::Roll : ContactModel::None;
                 check_invariants(request, tally);
             }
         }

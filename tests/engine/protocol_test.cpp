@@ -139,6 +139,42 @@ BOOST_AUTO_TEST_CASE(exact_drop_into_the_pocket_ends_touching_and_settle_adds_a_
     BOOST_TEST(std::abs(out.center.y() - pocket_y) <= kD / 50);
 }
 
+BOOST_AUTO_TEST_CASE(the_rolling_contact_model_rests_in_the_pocket_on_all_three) {
+    const auto bed = triangle_bed(0.0, 0.0);
+    const double pocket_y = floor_y() + kD * std::sqrt(2.0 / 3.0);
+    for (const FallMode mode : {FallMode::Exact, FallMode::Step}) {
+        for (const double dx : {0.02 * kD, 0.15 * kD, 0.3 * kD}) {
+            ProtocolParams params;
+            params.contact = ContactModel::Roll;
+            params.fall = mode;
+            const DropOutcome out = drop_onto(bed, sphere(dx, 1.0, 0.4 * dx), params);
+            BOOST_TEST_INFO("mode " << to_string(mode) << ", offset " << dx);
+            // Stable on three touching supports: exactly the pocket (rounding only).
+            BOOST_TEST(std::abs(out.center.y() - pocket_y) <= 1e-9 * kD);
+            BOOST_TEST(std::hypot(out.center.x(), out.center.z()) <= 1e-9 * kD);
+            for (const Particle& p : bed) {
+                BOOST_TEST(std::abs((p.center - out.center).norm() - kD) <= 1e-9 * kD);
+            }
+        }
+    }
+}
+
+BOOST_AUTO_TEST_CASE(a_sphere_dropped_between_two_spheres_apart_ends_on_the_floor_beside_them) {
+    // Centres 1.2·d apart: the falling sphere cannot pass between them, and the circle of
+    // positions touching both dips below the floor, so it ends on the floor beside them.
+    const std::vector<Particle> bed = {sphere(-0.6 * kD, floor_y(), 0),
+                                       sphere(0.6 * kD, floor_y(), 0)};
+    ProtocolParams params;
+    params.contact = ContactModel::Roll;
+    const DropOutcome out = drop_onto(bed, sphere(0.01 * kD, 1.0, 0.003), params);
+    BOOST_TEST((out.reason == StopReason::Floor));
+    BOOST_TEST(out.center.y() == floor_y());
+    std::vector<Particle> all = bed;
+    all.push_back(Particle{3, out.center, kR, 0});
+    BOOST_TEST(testing::worst_pair_gap(all) >= -1e-10 * kD);
+    BOOST_TEST(testing::support_distance(all, 2, kBox) <= 1e-9 * kD);
+}
+
 BOOST_AUTO_TEST_CASE(a_sphere_that_a_move_brings_to_a_wall_stops_there) {
     // Bed sphere near the +x wall; the falling one lands on its wall side and slides there.
     const double bed_x = kBox.x_max - 1.5 * kR;

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "sgmp/engine/protocol.hpp"
+#include "sgmp/engine/rolling.hpp"
 
 namespace sgmp::engine {
 
@@ -29,7 +30,18 @@ DropOutcome Protocol::rest(Vec3 c, double r, StopReason reason, long moves) {
     if (hit.on_floor) {
         return DropOutcome{c, StopReason::Floor, moves};
     }
-    return DropOutcome{roll(c, r, hit.support), reason, moves};
+    if (params_.contact == ContactModel::Settle) {
+        return DropOutcome{roll(c, r, hit.support), reason, moves};
+    }
+    const RollResult rolled = roll_to_rest(grid_, container_, max_radius_, c, r, hit.support);
+    switch (rolled.end) {
+        case RollEnd::Floor:
+            return DropOutcome{rolled.center, StopReason::Floor, moves};
+        case RollEnd::Wall:
+            return DropOutcome{rolled.center, StopReason::Wall, moves};
+        default:
+            return DropOutcome{rolled.center, reason, moves};
+    }
 }
 
 // The centre moves on the sphere of radius D = r + r_j about the support j, down the

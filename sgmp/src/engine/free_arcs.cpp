@@ -79,8 +79,10 @@ Run blocked_run(const SweepTable& table, const Blocker& c, long& lo, long& hi) {
     const double* ux = table.sample_x();
     const double* uz = table.sample_z();
     const auto blocked = [&](long k) {
-        while (k < 0) k += n;  // k stays within a few turns: cheaper than %
-        while (k >= n) k -= n;
+        while (k < 0)
+            k += n;  // k stays within a few turns: cheaper than %
+        while (k >= n)
+            k -= n;
         return c.a * ux[k] + c.b * uz[k] < c.q;
     };
     const double radius = std::sqrt(c.a * c.a + c.b * c.b);

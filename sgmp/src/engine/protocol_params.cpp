@@ -61,7 +61,15 @@ std::string_view to_string(GapRule rule) {
     return rule == GapRule::Largest ? "largest" : "random";
 }
 std::string_view to_string(ContactModel model) {
-    return model == ContactModel::None ? "none" : "settle";
+    switch (model) {
+        case ContactModel::None:
+            return "none";
+        case ContactModel::Settle:
+            return "settle";
+        case ContactModel::Roll:
+            return "roll";
+    }
+    return "none";
 }
 std::string_view to_string(WallRule rule) {
     return rule == WallRule::Fix ? "fix" : "block";
@@ -86,6 +94,8 @@ std::optional<ContactModel> parse_contact_model(std::string_view text) {
         return ContactModel::None;
     if (text == "settle")
         return ContactModel::Settle;
+    if (text == "roll")
+        return ContactModel::Roll;
     return std::nullopt;
 }
 std::optional<WallRule> parse_wall_rule(std::string_view text) {

@@ -38,6 +38,10 @@ enum class ContactModel {
     /// dropped exactly onto the sphere below (closing a step-mode gap) and then rolled
     /// down over that sphere until it touches a second one (or the floor or a wall).
     Settle,
+    /// A fuller contact model: the resting particle rolls down over the settled spheres
+    /// until it rests stably on three (or two at the bottom of their circle), or touches the
+    /// floor or a wall (rolling.hpp).
+    Roll,
 };
 
 /// How the side walls act on a particle that a sweep move brings against them.

@@ -1,0 +1,290 @@
+#include "sgmp/engine/rolling.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace sgmp::engine {
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+constexpr double kNever = std::numeric_limits<double>::infinity();
+const Vec3 kUp = Vec3::UnitY();
+
+Vec3 centre(const Sphere& s) {
+    return Vec3(s.x, s.y, s.z);
+}
+
+bool same(const Sphere& a, const Sphere& b) {
+    return a.x == b.x && a.y == b.y && a.z == b.z && a.r == b.r;
+}
+
+/// A leg of the roll: p(φ) = m + ρ (cos φ·e1 + sin φ·e2), φ ≥ 0.
+struct Arc {
+    Vec3 m;
+    double rho;
+    Vec3 e1;
+    Vec3 e2;
+    [[nodiscard]] Vec3 at(double phi) const {
+        return m + rho * (std::cos(phi) * e1 + std::sin(phi) * e2);
+    }
+};
+
+/// First φ > 0 at which g(φ) = K + P cos φ + Q sin φ, allowed to be ≥ 0, turns negative
+/// (0 when it is ≈ 0 and decreasing at the start; kNever when it never does).
+double entering_root(double K, double P, double Q, double tolerance) {
+    const double start = K + P;
+    if (start < -tolerance || (start <= tolerance && Q < 0.0)) {
+        return 0.0;
+    }
+    const double R = std::hypot(P, Q);
+    if (R == 0.0) {
+        return kNever;
+    }
+    const double x = -K / R;
+    if (x >= 1.0) {
+        return 0.0;  // g ≤ 0 everywhere but at the start
+    }
+    if (x <= -1.0) {
+        return kNever;  // g ≥ 0 everywhere
+    }
+    // g = K + R cos(φ − α) decreases through 0 at φ − α = acos(−K/R).
+    double phi = std::fmod(std::atan2(Q, P) + std::acos(x), kTwoPi);
+    if (phi < 0.0)
+        phi += kTwoPi;
+    return phi <= 1e-15 ? phi + kTwoPi : phi;
+}
+
+enum class Kind { None, Ball, Floor, Wall };
+
+struct Hit {
+    double phi = kNever;
+    Kind kind = Kind::None;
+    Sphere ball;
+};
+
+struct Context {
+    const SettledGrid& grid;
+    const Container& box;
+    double r_max;
+    double r;
+};
+
+/// The first new obstacle met along `arc` (current contacts excluded).
+Hit first_hit(const Context& ctx, const Arc& arc, const Sphere* contacts, int count) {
+    Hit hit;
+    const double r = ctx.r;
+    const Vec3 span = Vec3::Constant(arc.rho + r + ctx.r_max);
+    ctx.grid.for_each_in_box(arc.m - span, arc.m + span, [&](const Sphere& s) {
+        for (int i = 0; i < count; ++i) {
+            if (same(s, contacts[i]))
+                return;
+        }
+        const Vec3 w = arc.m - centre(s);
+        const double D = r + s.r;
+        const double phi = entering_root(w.squaredNorm() + arc.rho * arc.rho - D * D,
+                                         2.0 * arc.rho * w.dot(arc.e1),
+                                         2.0 * arc.rho * w.dot(arc.e2), 1e-12 * D * D);
+        if (phi < hit.phi)
+            hit = Hit{phi, Kind::Ball, s};
+    });
+    const double tol = 1e-12 * r;
+    const auto plane = [&](double K, double P, double Q, Kind kind) {
+        const double phi = entering_root(K, P, Q, tol);
+        if (phi < hit.phi)
+            hit = Hit{phi, kind, Sphere{}};
+    };
+    plane(arc.m.y() - ctx.box.floor - r, arc.rho * arc.e1.y(), arc.rho * arc.e2.y(), Kind::Floor);
+    plane(ctx.box.x_max - r - arc.m.x(), -arc.rho * arc.e1.x(), -arc.rho * arc.e2.x(), Kind::Wall);
+    plane(arc.m.x() - ctx.box.x_min - r, arc.rho * arc.e1.x(), arc.rho * arc.e2.x(), Kind::Wall);
+    plane(ctx.box.z_max - r - arc.m.z(), -arc.rho * arc.e1.z(), -arc.rho * arc.e2.z(), Kind::Wall);
+    plane(arc.m.z() - ctx.box.z_min - r, arc.rho * arc.e1.z(), arc.rho * arc.e2.z(), Kind::Wall);
+    return hit;
+}
+
+/// True when p overlaps nothing (beyond rounding) and lies inside the container.
+bool clear_at(const Context& ctx, const Vec3& p) {
+    if (ctx.box.penetration(p, ctx.r) > 1e-12 * ctx.r)
+        return false;
+    bool clear = true;
+    const Vec3 span = Vec3::Constant(ctx.r + ctx.r_max);
+    ctx.grid.for_each_in_box(p - span, p + span, [&](const Sphere& s) {
+        clear = clear && (p - centre(s)).norm() - (ctx.r + s.r) >= -1e-10 * (ctx.r + s.r);
+    });
+    return clear;
+}
+
+/// Straight down from p to the first contact: the new height and what is touched.
+Hit fall_from(const Context& ctx, const Vec3& p) {
+    Hit hit{0.0, Kind::Floor, Sphere{}};
+    double best = ctx.box.floor + ctx.r;
+    const double reach = ctx.r + ctx.r_max;
+    const Vec3 lo(p.x() - reach, ctx.box.floor - reach, p.z() - reach);
+    const Vec3 hi(p.x() + reach, p.y(), p.z() + reach);
+    ctx.grid.for_each_in_box(lo, hi, [&](const Sphere& s) {
+        if (s.y > p.y())
+            return;
+        const double dx = p.x() - s.x;
+        const double dz = p.z() - s.z;
+        const double D = ctx.r + s.r;
+        const double h2 = dx * dx + dz * dz;
+        if (h2 >= D * D)
+            return;
+        const double y = std::min(s.y + std::sqrt(D * D - h2), p.y());
+        if (y > best) {
+            best = y;
+            hit = Hit{0.0, Kind::Ball, s};
+        }
+    });
+    hit.phi = best;  // the height, for this use
+    return hit;
+}
+
+/// Support coefficients of two contacts: ŷ − (ŷ·t)t = α n_j + β n_k.
+std::array<double, 2> two_forces(const Vec3& nj, const Vec3& nk) {
+    const double c = nj.dot(nk);
+    const double det = 1.0 - c * c;
+    return {(nj.y() - c * nk.y()) / det, (nk.y() - c * nj.y()) / det};
+}
+
+}  // namespace
+
+RollResult roll_to_rest(const SettledGrid& grid, const Container& container, double r_max,
+                        const Vec3& start, double r, const Sphere& support) {
+    const Context ctx{grid, container, r_max, r};
+    std::array<Sphere, 3> contacts{support, Sphere{}, Sphere{}};
+    int count = 1;
+    Vec3 p = start;
+    const auto drop_contact = [&](int i) {
+        for (int k = i; k + 1 < count; ++k)
+            contacts[k] = contacts[k + 1];
+        --count;
+    };
+    constexpr int kMaxLegs = 64;
+    for (int leg = 0; leg < kMaxLegs; ++leg) {
+        if (count == 0) {
+            const Hit fall = fall_from(ctx, p);
+            p.y() = fall.phi;
+            if (fall.kind == Kind::Floor)
+                return RollResult{p, RollEnd::Floor};
+            contacts[0] = fall.ball;
+            count = 1;
+            continue;
+        }
+        if (count == 1) {
+            const Vec3 cj = centre(contacts[0]);
+            const Vec3 n = (p - cj).normalized();
+            const Vec3 down = n.y() * n - kUp;  // steepest descent along the sphere
+            if (n.y() <= 0.0) {
+                count = 0;  // at or past the equator: it falls
+                continue;
+            }
+            if (down.norm() < 1e-12)
+                return RollResult{p, RollEnd::Stopped};  // on top
+            const Arc arc{cj, r + contacts[0].r, n, down.normalized()};
+            const double equator = std::atan2(arc.e1.y(), -arc.e2.y());
+            const Hit hit = first_hit(ctx, arc, contacts.data(), count);
+            const double phi = std::min(hit.phi, equator);
+            const Vec3 next = arc.at(phi);
+            if (!clear_at(ctx, next))
+                return RollResult{p, RollEnd::Stopped};
+            p = next;
+            if (hit.phi > equator) {
+                count = 0;
+            } else if (hit.kind == Kind::Floor) {
+                return RollResult{p, RollEnd::Floor};
+            } else if (hit.kind == Kind::Wall) {
+                return RollResult{p, RollEnd::Wall};
+            } else {
+                contacts[count++] = hit.ball;
+            }
+            continue;
+        }
+        if (count == 2) {
+            const Vec3 cj = centre(contacts[0]);
+            const Vec3 ck = centre(contacts[1]);
+            const Vec3 nj = (p - cj).normalized();
+            const Vec3 nk = (p - ck).normalized();
+            if (1.0 - std::abs(nj.dot(nk)) < 1e-12)
+                return RollResult{p, RollEnd::Stopped};
+            const auto force = two_forces(nj, nk);
+            if (force[0] < 0.0 || force[1] < 0.0) {
+                drop_contact(force[0] < force[1] ? 0 : 1);  // leaves the pulling support
+                continue;
+            }
+            Vec3 t = nj.cross(nk).normalized();
+            if (t.y() > 0.0)
+                t = -t;
+            if (t.y() > -1e-12)
+                return RollResult{p, RollEnd::Stable};  // lowest point
+            // The circle where both contact spheres meet.
+            const Vec3 axis = ck - cj;
+            const double L = axis.norm();
+            const double Dj = r + contacts[0].r;
+            const double Dk = r + contacts[1].r;
+            const double along = (Dj * Dj - Dk * Dk + L * L) / (2.0 * L);
+            const Vec3 m = cj + along * axis / L;
+            const Vec3 radial = p - m;
+            const Arc arc{m, radial.norm(), radial.normalized(), t};
+            double lowest = std::atan2(arc.e2.y(), arc.e1.y()) + std::numbers::pi;
+            if (lowest <= 0.0)
+                lowest += kTwoPi;
+            const Hit hit = first_hit(ctx, arc, contacts.data(), count);
+            double phi = std::min(hit.phi, lowest);
+            // Does a support force vanish on the way? Then stop where it does.
+            const auto forces_at = [&](double angle) {
+                const Vec3 q = arc.at(angle);
+                return two_forces((q - cj).normalized(), (q - ck).normalized());
+            };
+            const auto end_forces = forces_at(phi);
+            bool leaves = false;
+            if (end_forces[0] < 0.0 || end_forces[1] < 0.0) {
+                double lo = 0.0;
+                double hi = phi;
+                for (int i = 0; i < 60; ++i) {
+                    const double mid = 0.5 * (lo + hi);
+                    const auto f = forces_at(mid);
+                    (f[0] < 0.0 || f[1] < 0.0 ? hi : lo) = mid;
+                }
+                phi = lo;
+                leaves = true;
+            }
+            const Vec3 next = arc.at(phi);
+            if (!clear_at(ctx, next))
+                return RollResult{p, RollEnd::Stopped};
+            p = next;
+            if (leaves) {
+                drop_contact(end_forces[0] < end_forces[1] ? 0 : 1);
+            } else if (hit.phi > lowest) {
+                return RollResult{p, RollEnd::Stable};
+            } else if (hit.kind == Kind::Floor) {
+                return RollResult{p, RollEnd::Floor};
+            } else if (hit.kind == Kind::Wall) {
+                return RollResult{p, RollEnd::Wall};
+            } else {
+                contacts[count++] = hit.ball;
+            }
+            continue;
+        }
+        // Three supports: stable when gravity is balanced by compressive forces only.
+        Eigen::Matrix3d normals;
+        for (int i = 0; i < 3; ++i)
+            normals.col(i) = (p - centre(contacts[i])).normalized();
+        const Vec3 force = normals.colPivHouseholderQr().solve(kUp);
+        if (!force.allFinite() || (normals * force - kUp).norm() > 1e-9) {
+            return RollResult{p, RollEnd::Stopped};
+        }
+        if (force.minCoeff() >= -1e-12)
+            return RollResult{p, RollEnd::Stable};
+        int weakest = 0;
+        force.minCoeff(&weakest);
+        drop_contact(weakest);
+    }
+    return RollResult{p, RollEnd::Stopped};
+}
+
+}  // namespace sgmp::engine

@@ -165,7 +165,8 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     local.bin_width_over_d = options.gr_bin_width;
     local.bins = static_cast<std::size_t>(std::llround(options.gr_range / options.gr_bin_width));
     local.q6_cutoff = options.q6_cutoff;
-    local.space = centre_space(particles, m.container, 0.5 * d);
+    local.space = options.gr_container_space ? container_space(particles, m.container)
+                                             : centre_space(particles, m.container, 0.5 * d);
     local.container = m.container;
     m.local = measure_local_structure(particles, index, origins, local);
     if (options.gr_thesis) {

@@ -53,6 +53,7 @@ Json provenance(const std::string& input, const Pack& pack, const MeasureOptions
     parameters["gr_bin_width_over_d"] = o.gr_bin_width;
     parameters["gr_range_over_d"] = o.gr_range;
     parameters["gr_thesis"] = o.gr_thesis;
+    parameters["gr_space"] = o.gr_container_space ? "container" : "centres";
     parameters["q6_cutoff"] = o.q6_cutoff;
     parameters["overlap_floor_over_d"] = o.overlap_floor;
     return Json{{"tool", "sgmp-compare"},
@@ -105,8 +106,8 @@ Json metrics_json(const Measurement& m, const Json& prov) {
         {"q6", "Steinhardt Q6, bonds |c_i-c_j| <= q6_cutoff*(r_i + r_j), origins in the region"},
         {"g_r",
          "origins: centres in the region; neighbours: all particles; shells counted inside the "
-         "centre space (container shrunk by d/2 at walls and floor, up to the highest centre), "
-         "density N/|space|"}};
+         "space (default: container shrunk by d/2 at walls and floor, up to the highest centre; "
+         "gr_space=container: the container up to the top sphere), density N/|space|"}};
     j["overlaps_detail"] = Json{{"floor_over_d", m.overlaps.floor},
                                 {"pairs", overlap_json(m.overlaps.pairs)},
                                 {"walls", overlap_json(m.overlaps.walls)}};
@@ -121,7 +122,7 @@ Json metrics_json(const Measurement& m, const Json& prov) {
                            {"origins", rdf.origins},
                            {"edge_corrected_origins", rdf.corrected_origins},
                            {"density", rdf.density},
-                           {"centre_space", box_json(rdf.space)}};
+                           {"space", box_json(rdf.space)}};
     j["q6_detail"] = Json{{"cutoff", m.local.bond_order.cutoff},
                           {"origins_with_bonds", m.local.bond_order.origins_with_bonds}};
     if (m.thesis_rdf) {

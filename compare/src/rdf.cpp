@@ -27,6 +27,18 @@ Box centre_space(const std::vector<Particle>& particles, const Container& contai
     return space;
 }
 
+Box container_space(const std::vector<Particle>& particles, const Container& container) {
+    double top = -std::numeric_limits<double>::infinity();
+    for (const Particle& p : particles) {
+        top = std::max(top, p.center.y() + p.radius);
+    }
+    const Box space = container.box_up_to(top);
+    if (!((space.hi - space.lo).array() > 0.0).all()) {
+        throw std::invalid_argument("g(r): the pack's top lies below the container floor");
+    }
+    return space;
+}
+
 bool shells_inside(const Vec3& center, double outer, const Box& space) {
     return ((center - space.lo).array() >= outer).all() &&
            ((space.hi - center).array() >= outer).all();

@@ -69,6 +69,27 @@ BOOST_AUTO_TEST_CASE(uniform_random_points_give_g_equal_to_one) {
     }
 }
 
+BOOST_AUTO_TEST_CASE(g_of_r_space_choices) {
+    // Default: neighbour centres lie in the container shrunk by d/2, up to the highest
+    // centre; --gr-container-space: the container up to the top sphere.
+    const Pack pack = sgmp::testing::jittered_fcc_pack(1000, 1.05, 0.02, 3);
+    MeasureOptions options;
+    const Measurement centres = measure(pack, options);
+    options.gr_container_space = true;
+    const Measurement container = measure(pack, options);
+    const double r = 0.5 * centres.mean_diameter;
+    const Box& a = centres.local.rdf.space;
+    const Box& b = container.local.rdf.space;
+    BOOST_TEST(std::abs(a.lo.x() - (-0.625 + r)) <= 1e-15);
+    BOOST_TEST(std::abs(a.lo.y() - (-0.625 + r)) <= 1e-15);
+    BOOST_TEST(std::abs(a.hi.y() - (centres.top - r)) <= 1e-14);  // (y + r) - r rounding
+    BOOST_TEST(b.lo.x() == -0.625);
+    BOOST_TEST(b.hi.y() == container.top);
+    // Same pairs, larger space and lower density: g rises by about |container| / |centres|.
+    BOOST_TEST((centres.local.rdf.pairs == container.local.rdf.pairs));
+    BOOST_TEST(container.local.rdf.density < centres.local.rdf.density);
+}
+
 BOOST_AUTO_TEST_CASE(results_do_not_depend_on_the_thread_count) {
     const Pack pack = sgmp::testing::jittered_fcc_pack(2000, 1.02, 0.05, 11);
     std::vector<std::string> dumps;

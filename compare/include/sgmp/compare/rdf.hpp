@@ -31,6 +31,11 @@ namespace sgmp::compare {
 Box centre_space(const std::vector<Particle>& particles, const Container& container,
                  double mean_radius);
 
+/// DESIGN §5 read literally (option --gr-space container): the container up to the top of
+/// the highest sphere. Centres never come closer than r to a wall, so with this space g(r)
+/// settles above 1 by about |container| / |centre space|.
+Box container_space(const std::vector<Particle>& particles, const Container& container);
+
 /// Adds to out[k], k < bins, the volume inside `space` of the shell between radii
 /// k·width and (k+1)·width around `center`.
 void add_shell_volumes(const Vec3& center, double width, std::size_t bins, const Box& space,

@@ -44,6 +44,11 @@ Result run(const std::string& arguments) {
     return result;
 }
 
+std::string slurp(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
 void write(const std::string& name, const std::string& text) {
     std::ofstream(scratch() / name) << text;
 }
@@ -140,6 +145,13 @@ BOOST_AUTO_TEST_CASE(measure_and_report_write_complete_directories) {
     BOOST_TEST(text2.find("\"phi\"") != std::string::npos);
     BOOST_TEST(run("measure a.xyz --out m --force").status == 0);
     BOOST_TEST(!fs::exists(scratch() / "m" / "b.metrics.json"));
+    // The same command gives the same bytes, whatever the thread count.
+    const std::string first = slurp(scratch() / "m" / "a.metrics.json");
+    const std::string curve = slurp(scratch() / "m" / "a.g_r.csv");
+    BOOST_TEST(run("measure a.xyz --out m --force --threads 1").status == 0);
+    BOOST_TEST(run("measure a.xyz --out m --force").status == 0);
+    BOOST_TEST(slurp(scratch() / "m" / "a.metrics.json") == first);
+    BOOST_TEST(slurp(scratch() / "m" / "a.g_r.csv") == curve);
 
     // A failing report leaves nothing behind.
     write("bad.xyz", "1\n" + kHeader + "1 0 nan 0 0.05 0\n");
@@ -147,8 +159,19 @@ BOOST_AUTO_TEST_CASE(measure_and_report_write_complete_directories) {
     BOOST_TEST(!fs::exists(scratch() / "r"));
     const Result ok = run("report --a a.xyz --b b.xyz c.xyz --label-a SGMP --label-b DEM --out r");
     BOOST_TEST(ok.status == 0, ok.err);
-    for (const char* file : {"report.md", "report.csv", "report.json", "index.html"}) {
+    const std::string report_command =
+        "report --a a.xyz --b b.xyz c.xyz --label-a SGMP --label-b DEM --out r --force";
+    BOOST_TEST(run(report_command).status == 0);
+    const std::vector<std::string> files{"report.md", "report.csv", "report.json", "index.html"};
+    std::vector<std::string> contents;
+    for (const auto& file : files) {
         BOOST_TEST(fs::exists(scratch() / "r" / file), file);
+        contents.push_back(slurp(scratch() / "r" / file));
+    }
+    // The same command gives the same bytes.
+    BOOST_TEST(run(report_command).status == 0);
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        BOOST_TEST(slurp(scratch() / "r" / files[i]) == contents[i], files[i]);
     }
 }
 

@@ -30,7 +30,8 @@ enum class GapRule {
     Random,
 };
 
-/// What happens once the protocol has stopped a particle that has no free arc.
+/// What happens to a particle the protocol leaves resting (no free arc, stalled, move limit);
+/// particles fixed by the floor or a wall stay as they are.
 enum class ContactModel {
     /// Nothing: the particle stays where the protocol left it (thesis).
     None,
@@ -59,9 +60,9 @@ struct ProtocolParams {
     /// thesis; several stages (e.g. 8,120,720) try the next stage only when the previous
     /// one found no free position (§10.2 multi-stage sweep).
     std::vector<int> sweep_stages = {120};
-    /// Size of the lower columnar neighbour list (thesis: 10). Here the list holds the
-    /// spheres directly below ordered by fall distance to contact, so the first contact is
-    /// always in it and this number bounds work only; it never changes a result.
+    /// Size of the thesis' lower columnar neighbour list (10). Recorded for provenance only:
+    /// the fall here scans every sphere of the column below (protocol.hpp), so the first
+    /// contact is never missed and no value of this parameter changes a result.
     int lower_neighbours = 10;
     GapRule gap = GapRule::Largest;
     FallMode fall = FallMode::Exact;

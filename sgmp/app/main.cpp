@@ -290,7 +290,8 @@ int main(int argc, char** argv) {
                  " — sphere packs by the Spin Gap Move Protocol (Y up; container x, z in "
                  "[-0.625, 0.625], floor y = -0.625, no lid; lengths in control-volume sides)"};
     app.name("sgmp");
-    app.set_version_flag("--version", std::string("sgmp ") + sgmp::version());
+    // The bare version, as pack headers record it (scripts compare the two).
+    app.set_version_flag("--version", std::string(sgmp::version()));
     app.require_subcommand(1);
     // A repeated option keeps its last value, so the command line overrides a --config file.
     app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);

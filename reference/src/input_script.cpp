@@ -22,12 +22,20 @@ std::string fill_template(const std::string& text,
         if (close == std::string::npos) {
             throw std::invalid_argument("template: '{{' without '}}'");
         }
-        const std::string key = text.substr(open + 2, close - open - 2);
+        std::string key = text.substr(open + 2, close - open - 2);
+        std::size_t width = 0;  // "{{key:W}}" pads the value with spaces to W characters
+        if (const auto colon = key.find(':'); colon != std::string::npos) {
+            width = std::stoul(key.substr(colon + 1));
+            key.resize(colon);
+        }
         const auto value = values.find(key);
         if (value == values.end()) {
             throw std::invalid_argument("template: no value for placeholder '{{" + key + "}}'");
         }
         out.append(text, pos, open - pos).append(value->second);
+        if (value->second.size() < width) {
+            out.append(width - value->second.size(), ' ');
+        }
         pos = close + 2;
     }
 }

@@ -52,6 +52,8 @@ BOOST_AUTO_TEST_SUITE(input_script)
 
 BOOST_AUTO_TEST_CASE(placeholders_are_filled_and_unknown_ones_refused) {
     BOOST_TEST(fill_template("a {{x}} b {{y}}{{x}}", {{"x", "1"}, {"y", "2"}}) == "a 1 b 21");
+    BOOST_TEST(fill_template("[{{x:4}}]", {{"x", "1"}}) == "[1   ]");
+    BOOST_TEST(fill_template("[{{x:1}}]", {{"x", "123"}}) == "[123]");
     BOOST_CHECK_THROW(fill_template("a {{z}}", {{"x", "1"}}), std::invalid_argument);
     BOOST_CHECK_THROW(fill_template("a {{x", {{"x", "1"}}), std::invalid_argument);
 }

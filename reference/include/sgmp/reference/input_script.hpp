@@ -13,7 +13,8 @@ namespace sgmp::reference {
 /// The text of an embedded template ("pour.in", "start-cloud.in", "start-arrangement.in").
 const std::string& embedded_template(const std::string& name);
 
-/// Replaces every `{{key}}` in `text` by `values.at(key)`. Throws std::invalid_argument
+/// Replaces every `{{key}}` in `text` by `values.at(key)`; `{{key:W}}` pads the value with
+/// spaces to W characters (aligned comments). Throws std::invalid_argument
 /// for a placeholder without a value or an unterminated `{{`.
 std::string fill_template(const std::string& text,
                           const std::map<std::string, std::string>& values);

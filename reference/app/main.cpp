@@ -168,6 +168,13 @@ int main(int argc, char** argv) {
                      "Rolling friction coefficient (constant directional torque)")
         ->capture_default_str()
         ->check(CLI::Range(0.0, 1.0));
+    std::string tangential_damping = "on";
+    pour_cmd
+        ->add_option("--tangential-damping", tangential_damping,
+                     "Viscous damping of the tangential contact spring, on or off (off for "
+                     "exactly frictionless pours, where it spins spheres up)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"on", "off"}));
     pour_cmd
         ->add_option("--youngs-modulus", p.youngs_modulus,
                      "Young's modulus E in Pa (must exceed 5e6)")
@@ -213,6 +220,7 @@ int main(int argc, char** argv) {
         return app.exit(e) == 0 ? 0 : 2;
     }
 
+    p.tangential_damping = tangential_damping == "on";
     try {
         p.validate();
     } catch (const std::invalid_argument& e) {
@@ -243,12 +251,13 @@ int main(int argc, char** argv) {
         printer.finish();
         sgmp::write_pack_file(out, result.pack, force);
         if (!quiet) {
-            std::cerr << "poured " << p.count << " spheres in "
-                      << sgmp::format_number(std::round(result.wall_seconds * 10) / 10) << " s, "
-                      << result.steps << " steps; max overlap "
-                      << sgmp::format_number(result.max_overlap_over_d) << " d; phi(control) "
-                      << sgmp::format_number(result.phi_control_volume) << "; wrote " << out
-                      << '\n';
+            char summary[256];
+            std::snprintf(summary, sizeof summary,
+                          "poured %zu spheres in %.1f s, %lld steps; settling measure %.3g; max "
+                          "overlap %.3g d; phi(control volume) %.4f; wrote ",
+                          p.count, result.wall_seconds, static_cast<long long>(result.steps),
+                          result.ke_ratio, result.max_overlap_over_d, result.phi_control_volume);
+            std::cerr << summary << out << '\n';
         }
         return 0;
     } catch (const sgmp::reference::PourError& e) {

@@ -65,6 +65,7 @@ std::string pour_script(const PourParameters& p, double start_top) {
         {"restitution", format_number(p.restitution)},
         {"friction", format_number(p.friction)},
         {"rolling_friction", format_number(p.rolling_friction)},
+        {"tangential_damping", p.tangential_damping ? "on" : "off"},
         {"gravity", format_number(p.gravity)},
         {"timestep_fraction", format_number(p.timestep_fraction)},
         {"settle_threshold", format_number(p.settle_threshold)},

@@ -272,7 +272,8 @@ void record(Metadata& m, const PourRequest& request, const PourLog& log, const P
     } else {
         m.set_number("cloud_fraction", p.cloud_fraction);
     }
-    m.set("contact_model", "hertz tangential_history rolling_friction_cdt");
+    m.set("contact_model", std::string("hertz tangential_history rolling_friction_cdt") +
+                               (p.tangential_damping ? "" : " no_tangential_damping"));
     m.set_number("restitution", p.restitution);
     m.set_number("rolling_friction", p.rolling_friction);
     m.set_number("youngs_modulus_pa", p.youngs_modulus);

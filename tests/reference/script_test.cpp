@@ -79,6 +79,20 @@ BOOST_AUTO_TEST_CASE(the_script_carries_every_parameter_exactly) {
     BOOST_TEST(script.find("read_data") == std::string::npos);
 }
 
+BOOST_AUTO_TEST_CASE(tangential_damping_is_switched_on_the_pair_style_and_every_wall) {
+    PourParameters p;
+    p.count = 150;
+    p.tangential_damping = false;
+    const std::string script = pour_script(p, p.cloud_top());
+    BOOST_TEST(script_variable(script, "tangential_damping") == "off");
+    std::size_t uses = 0;
+    for (auto at = script.find("tangential_damping ${tangential_damping}"); at != std::string::npos;
+         at = script.find("tangential_damping ${tangential_damping}", at + 1)) {
+        ++uses;
+    }
+    BOOST_TEST(uses == 6u);  // the pair style, the floor and four walls
+}
+
 BOOST_AUTO_TEST_CASE(an_arrangement_start_reads_a_data_file) {
     PourParameters p;
     p.count = 150;

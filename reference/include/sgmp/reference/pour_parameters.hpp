@@ -18,12 +18,14 @@ namespace sgmp::reference {
 inline constexpr double kMetresPerUnit = 1.0;
 
 struct PourParameters {
-    std::size_t count = 0;            ///< number of spheres
-    std::uint64_t seed = 1;           ///< drives LIGGGHTS' seeds and the colour labels
-    double phi_target = 0.63;         ///< φ* of the sizing rule
-    double friction = 0.5;            ///< sliding friction μ, particles and walls
-    double restitution = 0.5;         ///< normal coefficient of restitution e
-    double rolling_friction = 0.01;   ///< rolling friction μ_r (constant directional torque)
+    std::size_t count = 0;           ///< number of spheres
+    std::uint64_t seed = 1;          ///< drives LIGGGHTS' seeds and the colour labels
+    double phi_target = 0.63;        ///< φ* of the sizing rule
+    double friction = 0.5;           ///< sliding friction μ, particles and walls
+    double restitution = 0.5;        ///< normal coefficient of restitution e
+    double rolling_friction = 0.01;  ///< rolling friction μ_r (constant directional torque)
+    /// Viscous damping of the tangential spring; switch off for exactly frictionless pours.
+    bool tangential_damping = true;
     double youngs_modulus = 1e9;      ///< E (Pa)
     double poisson_ratio = 0.25;      ///< ν
     double density = 2500.0;          ///< ρ (kg/m³)

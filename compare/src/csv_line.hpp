@@ -15,8 +15,8 @@ inline std::vector<std::string> split_csv_line(std::string_view line) {
     std::size_t start = 0;
     while (true) {
         const std::size_t comma = line.find(',', start);
-        fields.emplace_back(line.substr(start, comma == std::string_view::npos ? std::string_view::npos
-                                                                              : comma - start));
+        fields.emplace_back(line.substr(
+            start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
         if (comma == std::string_view::npos) {
             return fields;
         }

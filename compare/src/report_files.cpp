@@ -38,7 +38,9 @@ std::string svg_element(const std::string& svg) {
 ReportContext write_report(const fs::path& directory, bool overwrite, const Report& report,
                            ReportContext context) {
     write_directory_atomically(directory, overwrite, [&](const fs::path& temporary) {
-        const PlotResult plots = make_plots(report, temporary);
+        const PlotResult plots = make_plots(
+            context.plots_per_count ? panels_per_count(report) : panels_per_comparison(report),
+            temporary);
         context.plots_made = plots.made;
         context.plots_note = plots.note;
         context.plot_files = plots.files;
@@ -50,6 +52,9 @@ ReportContext write_report(const fs::path& directory, bool overwrite, const Repo
         write_text(temporary / "report.csv", render_csv(report, context));
         write_text(temporary / "report.json", render_json(report, context).dump(2) + "\n");
         write_text(temporary / "index.html", render_html(report, context, svgs));
+        for (const auto& [name, content] : context.extra_files) {
+            write_text(temporary / name, content);
+        }
     });
     return context;
 }

@@ -3,6 +3,7 @@
 #include <unistd.h>
 #include <cstdlib>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -81,14 +82,52 @@ std::optional<fs::path> find_gnuplot() {
     return std::nullopt;
 }
 
-PlotResult make_plots(const Report& report, const fs::path& directory) {
+std::vector<PlotPanel> panels_per_comparison(const Report& report) {
+    std::vector<PlotPanel> panels;
+    for (std::size_t i = 0; i < report.comparisons.size(); ++i) {
+        const Comparison& c = report.comparisons[i];
+        panels.push_back(PlotPanel{
+            "c" + std::to_string(i) + "_N" + std::to_string(c.count),
+            c.candidate + " vs " + c.reference + ", N = " + std::to_string(c.count),
+            {PlotCurve{mean_label(c.candidate, c.candidate_packs), &c.candidate_curves, false},
+             PlotCurve{mean_label(c.reference, c.reference_packs), &c.reference_curves, true}}});
+    }
+    return panels;
+}
+
+std::vector<PlotPanel> panels_per_count(const Report& report) {
+    std::vector<PlotPanel> panels;
+    std::vector<std::set<std::string>> drawn;
+    for (const Comparison& c : report.comparisons) {
+        std::size_t k = 0;
+        while (k < panels.size() && panels[k].stem != "N" + std::to_string(c.count)) {
+            ++k;
+        }
+        if (k == panels.size()) {
+            panels.push_back(
+                PlotPanel{"N" + std::to_string(c.count), "N = " + std::to_string(c.count), {}});
+            drawn.emplace_back();
+        }
+        if (drawn[k].insert(c.candidate).second) {
+            panels[k].curves.push_back(
+                PlotCurve{mean_label(c.candidate, c.candidate_packs), &c.candidate_curves, false});
+        }
+        if (drawn[k].insert(c.reference).second) {
+            panels[k].curves.push_back(
+                PlotCurve{mean_label(c.reference, c.reference_packs), &c.reference_curves, true});
+        }
+    }
+    return panels;
+}
+
+PlotResult make_plots(const std::vector<PlotPanel>& panels, const fs::path& directory) {
     PlotResult result;
     const auto gnuplot = find_gnuplot();
     if (!gnuplot) {
         result.note = "gnuplot was not found (install gnuplot-nox)";
         return result;
     }
-    if (report.comparisons.empty()) {
+    if (panels.empty()) {
         result.note = "nothing was compared";
         return result;
     }
@@ -100,69 +139,84 @@ PlotResult make_plots(const Report& report, const fs::path& directory) {
     const auto& tolerances = coordination_tolerances();
     const auto& names = coordination_tolerance_names();
     std::vector<std::string> files;
-    for (std::size_t i = 0; i < report.comparisons.size(); ++i) {
-        const Comparison& c = report.comparisons[i];
-        const std::string stem = "c" + std::to_string(i) + "_N" + std::to_string(c.count);
-        const std::string ta = mean_label(c.candidate, c.candidate_packs);
-        const std::string tb = mean_label(c.reference, c.reference_packs);
-        const std::string what =
-            c.candidate + " vs " + c.reference + ", N = " + std::to_string(c.count);
-        const auto& a = c.candidate_curves;
-        const auto& b = c.reference_curves;
+    for (const PlotPanel& panel : panels) {
+        const std::string& stem = panel.stem;
+        const std::string& what = panel.what;
+        const auto style = [](const PlotCurve& curve) {
+            return std::string(curve.reference ? " dt 2" : "");
+        };
+        const auto data_file = [&](const std::string& kind, std::size_t k) {
+            return stem + "_" + kind + "_" + std::to_string(k) + ".dat";
+        };
 
-        write_text(plots / (stem + "_gr_a.dat"), columns(a.gr_r, a.gr));
-        write_text(plots / (stem + "_gr_b.dat"), columns(b.gr_r, b.gr));
         gp << "set output '" << stem << "_gr.svg'\nset title " << quoted("g(r): " + what)
            << "\nset xlabel 'r / d (mean diameter)'\nset ylabel 'g(r) (ratio)'\nunset logscale\n"
-           << "plot '" << stem << "_gr_a.dat' with lines lw 2 title " << quoted(ta) << ", '" << stem
-           << "_gr_b.dat' with lines lw 2 dt 2 title " << quoted(tb) << "\n";
+           << "plot ";
+        for (std::size_t k = 0; k < panel.curves.size(); ++k) {
+            const auto& curve = panel.curves[k];
+            write_text(plots / data_file("gr", k), columns(curve.curves->gr_r, curve.curves->gr));
+            gp << (k == 0 ? "" : ", ") << "'" << data_file("gr", k) << "' with lines lw 2"
+               << style(curve) << " title " << quoted(curve.label);
+        }
+        gp << "\n";
         files.push_back("plots/" + stem + "_gr.svg");
 
+        // Two tolerances for a pair of curves; only δ = 1e-2 when more curves share a plot.
+        std::vector<std::size_t> plotted(std::begin(kPlottedPzTolerances),
+                                         std::end(kPlottedPzTolerances));
+        if (panel.curves.size() > 2) {
+            plotted = {kHeadlinePzTolerance};
+        }
         gp << "set output '" << stem << "_pz.svg'\nset title " << quoted("P(Z): " + what)
            << "\nset xlabel 'Z (contacts)'\nset ylabel 'P(Z) (fraction of particles)'\nplot ";
         bool first = true;
-        for (const std::size_t t : kPlottedPzTolerances) {
-            for (const auto& [side, curves, label] :
-                 {std::tuple{"a", &a, ta}, std::tuple{"b", &b, tb}}) {
-                const std::string file = stem + "_pz_" + side + "_" + names[t] + ".dat";
-                write_text(plots / file, columns(integers(curves->p_z[t].size()), curves->p_z[t]));
+        for (const std::size_t t : plotted) {
+            for (std::size_t k = 0; k < panel.curves.size(); ++k) {
+                const auto& curve = panel.curves[k];
+                const std::string file =
+                    stem + "_pz_" + std::to_string(k) + "_" + names[t] + ".dat";
+                write_text(plots / file,
+                           columns(integers(curve.curves->p_z[t].size()), curve.curves->p_z[t]));
                 gp << (first ? "" : ", ") << "'" << file << "' with linespoints lw 2"
-                   << (std::string(side) == "b" ? " dt 2" : "") << " title "
-                   << quoted(label + ", gap <= " + names[t] + " d");
+                   << style(curve) << " title "
+                   << quoted(curve.label + ", gap <= " + names[t] + " d");
                 first = false;
             }
         }
         gp << "\n";
         files.push_back("plots/" + stem + "_pz.svg");
 
-        std::vector<double> deltas;
-        std::vector<double> za;
-        std::vector<double> zb;
-        for (std::size_t t = 0; t < tolerances.size(); ++t) {
-            if (tolerances[t] > 0.0) {
-                deltas.push_back(tolerances[t]);
-                za.push_back(a.z_mean[t]);
-                zb.push_back(b.z_mean[t]);
-            }
-        }
-        write_text(plots / (stem + "_zd_a.dat"), columns(deltas, za));
-        write_text(plots / (stem + "_zd_b.dat"), columns(deltas, zb));
         gp << "set output '" << stem << "_zdelta.svg'\nset title "
            << quoted("Z(delta), gap <= delta d: " + what)
            << "\nset logscale x\nset xlabel 'delta (ratio to d)'\nset ylabel 'mean Z "
-              "(contacts/particle)'\n"
-           << "plot '" << stem << "_zd_a.dat' with linespoints lw 2 title " << quoted(ta) << ", '"
-           << stem << "_zd_b.dat' with linespoints lw 2 dt 2 title " << quoted(tb)
-           << "\nunset logscale\n";
+              "(contacts/particle)'\nplot ";
+        for (std::size_t k = 0; k < panel.curves.size(); ++k) {
+            const auto& curve = panel.curves[k];
+            std::vector<double> deltas;
+            std::vector<double> z;
+            for (std::size_t t = 0; t < tolerances.size(); ++t) {
+                if (tolerances[t] > 0.0) {
+                    deltas.push_back(tolerances[t]);
+                    z.push_back(curve.curves->z_mean[t]);
+                }
+            }
+            write_text(plots / data_file("zd", k), columns(deltas, z));
+            gp << (k == 0 ? "" : ", ") << "'" << data_file("zd", k) << "' with linespoints lw 2"
+               << style(curve) << " title " << quoted(curve.label);
+        }
+        gp << "\nunset logscale\n";
         files.push_back("plots/" + stem + "_zdelta.svg");
 
-        write_text(plots / (stem + "_phiy_a.dat"), columns(a.phi_y_mid, a.phi_y));
-        write_text(plots / (stem + "_phiy_b.dat"), columns(b.phi_y_mid, b.phi_y));
         gp << "set output '" << stem << "_phiy.svg'\nset title " << quoted("phi(y): " + what)
-           << "\nset xlabel 'phi (ratio)'\nset ylabel 'y (length units)'\n"
-           << "plot '" << stem << "_phiy_a.dat' using 2:1 with lines lw 2 title " << quoted(ta)
-           << ", '" << stem << "_phiy_b.dat' using 2:1 with lines lw 2 dt 2 title " << quoted(tb)
-           << "\n";
+           << "\nset xlabel 'phi (ratio)'\nset ylabel 'y (length units)'\nplot ";
+        for (std::size_t k = 0; k < panel.curves.size(); ++k) {
+            const auto& curve = panel.curves[k];
+            write_text(plots / data_file("phiy", k),
+                       columns(curve.curves->phi_y_mid, curve.curves->phi_y));
+            gp << (k == 0 ? "" : ", ") << "'" << data_file("phiy", k)
+               << "' using 2:1 with lines lw 2" << style(curve) << " title " << quoted(curve.label);
+        }
+        gp << "\n";
         files.push_back("plots/" + stem + "_phiy.svg");
     }
     gp << "unset output\n";

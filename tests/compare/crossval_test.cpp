@@ -118,16 +118,18 @@ BOOST_AUTO_TEST_CASE(headline_carries_verdicts_and_the_thesis_beside_us) {
     BOOST_TEST(*column.speedup == 46000.0, boost::test_tools::tolerance(1e-9));
     BOOST_TEST_REQUIRE(column.against.size() == 2u);
     BOOST_TEST(column.against[0].reference == "DEM mu=0.5");
-    BOOST_TEST(column.against[0].phi_agree);        // |0.60 − 0.61| ≤ 0.02
-    BOOST_TEST(!column.against[1].phi_agree);       // |0.60 − 0.64| > 0.01
+    BOOST_TEST(column.against[0].phi_agree);   // |0.60 − 0.61| ≤ 0.02
+    BOOST_TEST(!column.against[1].phi_agree);  // |0.60 − 0.64| > 0.01
     BOOST_TEST(column.against[0].gr_agree);
     BOOST_TEST(!column.against[1].gr_agree);
     BOOST_TEST(!cv.rows[1].thesis.has_value());
     const std::string md = render_crossval_markdown(cv);
     BOOST_TEST(md.find("**single-column vs DEM mu=0.01**: φ agrees at 0 of 1 counts; differs at "
                        "N = 150 (SGMP − DEM -0.0400 (ratio))") != std::string::npos);
-    BOOST_TEST(md.find("| 150 | single-column | 5.1 | 138 | 0.003 | 46000× | 0.6160 | 0.6000 | -0.0160 |") !=
-               std::string::npos);
+    BOOST_TEST(
+        md.find(
+            "| 150 | single-column | 5.1 | 138 | 0.003 | 46000× | 0.6160 | 0.6000 | -0.0160 |") !=
+        std::string::npos);
     const auto json = crossval_json(cv);
     BOOST_TEST(json["headline"][0]["against"][1]["phi_agree"] == false);
     BOOST_TEST(render_headline_csv(cv).find("150,single-column,DEM mu=0.01,") != std::string::npos);
@@ -144,16 +146,16 @@ BOOST_AUTO_TEST_CASE(baseline_takes_the_strictest_reference_tolerance) {
 
 BOOST_AUTO_TEST_CASE(regression_passes_identical_runs_and_flags_moved_metrics) {
     const auto baseline = baseline_entries(sample_report());
-    const auto round_trip =
-        parse_baseline(nlohmann::json::parse(baseline_json(baseline, {{"tool", "t"}}).dump()), "b.json");
+    const auto round_trip = parse_baseline(
+        nlohmann::json::parse(baseline_json(baseline, {{"tool", "t"}}).dump()), "b.json");
     BOOST_TEST(round_trip.size() == baseline.size());
     for (const auto& row : regress(round_trip, baseline)) {
         BOOST_TEST(row.pass);
     }
     auto moved = baseline;
-    moved[0].value += 0.011;   // beyond the 0.01 tolerance
-    moved[1].value += 0.29;    // within the 0.3 tolerance
-    moved.pop_back();          // an entry disappears
+    moved[0].value += 0.011;  // beyond the 0.01 tolerance
+    moved[1].value += 0.29;   // within the 0.3 tolerance
+    moved.pop_back();         // an entry disappears
     const auto rows = regress(baseline, moved);
     BOOST_TEST(!rows[0].pass);
     BOOST_TEST(rows[1].pass);
@@ -162,8 +164,9 @@ BOOST_AUTO_TEST_CASE(regression_passes_identical_runs_and_flags_moved_metrics) {
     const std::string table = render_regression_table(rows, true);
     BOOST_TEST(table.find("missing") != std::string::npos);
     BOOST_TEST(table.find("FAIL") != std::string::npos);
-    BOOST_CHECK_THROW(parse_baseline(nlohmann::json::parse("{\"entries\": [{\"group\": 1}]}"), "b.json"),
-                      InputError);
+    BOOST_CHECK_THROW(
+        parse_baseline(nlohmann::json::parse("{\"entries\": [{\"group\": 1}]}"), "b.json"),
+        InputError);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -33,6 +33,8 @@ inline constexpr double kGrCompareFrom = 0.8;
 inline constexpr double kGrCompareTo = 5.0;
 /// The tolerances (indices into coordination_tolerances()) whose P(Z) are plotted.
 inline constexpr std::size_t kPlottedPzTolerances[] = {1, 5};
+/// The tolerance (δ = 1e-2) of P(Z) when many groups share one plot.
+inline constexpr std::size_t kHeadlinePzTolerance = 3;
 
 /// The numbers of one pack the report needs.
 struct PackSummary {

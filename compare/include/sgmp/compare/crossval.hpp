@@ -51,7 +51,7 @@ struct HeadlineRow {
 struct CrossValidation {
     std::vector<std::string> candidates;  // group labels in manifest order
     std::vector<std::string> references;
-    std::vector<HeadlineRow> rows;        // by candidate group, then count
+    std::vector<HeadlineRow> rows;  // by candidate group, then count
 };
 
 /// Builds the headline from `report` (which must compare every candidate group with every

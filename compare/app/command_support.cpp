@@ -1,0 +1,125 @@
+#include "command_support.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+
+#include "sgmp/compare/metrics_output.hpp"
+#include "sgmp/compare/parallel.hpp"
+#include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/input_error.hpp"
+#include "sgmp/pack/pack_file.hpp"
+
+namespace fs = std::filesystem;
+
+namespace sgmp::compare::cli {
+
+void add_common(CLI::App* command, CommonOptions& o) {
+    command->add_option("--out", o.out, "output directory (created atomically)")->required();
+    command->add_flag("--force", o.force, "replace an existing output directory");
+    command
+        ->add_option("--region", o.region,
+                     "box measured: xlo xhi ylo yhi zlo zhi (length units; default the control "
+                     "volume -0.5 0.5 -0.5 0.5 -0.5 0.5); must lie inside the container")
+        ->expected(6);
+    command->add_option("--slab", o.measure.slab_thickness,
+                        "phi(y) slab thickness, in mean diameters d (default 1)");
+    command->add_option("--gr-bin", o.measure.gr_bin_width, "g(r) bin width, in d (default 0.02)");
+    command->add_option("--gr-range", o.measure.gr_range, "g(r) range, in d (default 5)");
+    command->add_flag("--gr-thesis", o.measure.gr_thesis,
+                      "also the thesis' single-particle RDF (eq. 3.7-3.10), column g_thesis");
+    command->add_flag("--gr-container-space", o.measure.gr_container_space,
+                      "g(r) shells and density in the container up to the top sphere (DESIGN "
+                      "5 literally) instead of the space of centres (container shrunk by d/2)");
+    command->add_option("--q6-cutoff", o.measure.q6_cutoff,
+                        "Q6 bonds join centres within this x (ri + rj) (default 1.2)");
+    command->add_option("--overlap-floor", o.measure.overlap_floor,
+                        "overlaps deeper than this x d are counted (default 1e-9)");
+    command->add_option("--threads", o.threads,
+                        "worker threads (default all cores; results do not depend on it)");
+    command->add_flag("--timings", o.timings, "print the seconds of each stage to stderr");
+}
+
+void apply(CommonOptions& o) {
+    if (!o.region.empty()) {
+        o.measure.region = Box{Vec3(o.region[0], o.region[2], o.region[4]),
+                               Vec3(o.region[1], o.region[3], o.region[5])};
+    }
+    try {
+        validate(o.measure);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(error.what());
+    }
+    set_thread_count(o.threads);
+    try {
+        check_writable(o.out, o.force);
+    } catch (const std::runtime_error& error) {
+        throw UsageError(std::string(error.what()) + (o.force ? "" : " (use --force to replace)"));
+    }
+}
+
+std::string command_line(int argc, char** argv) {
+    std::string line = "sgmp-compare";
+    for (int i = 1; i < argc; ++i) {
+        line += " ";
+        line += argv[i];
+    }
+    return line;
+}
+
+Pack read_pack(const std::string& path) {
+    Pack pack = read_pack_file(path);
+    if (pack.particles.empty()) {
+        throw InputError(path, 0, "the pack has no particles");
+    }
+    try {
+        (void)container_of(pack);
+    } catch (const std::invalid_argument& error) {
+        throw InputError(path, 2, error.what());  // the header line holds the container key
+    }
+    return pack;
+}
+
+Measurement measure_pack(const std::string& path, const Pack& pack, const CommonOptions& o) {
+    const auto start = std::chrono::steady_clock::now();
+    Measurement m;
+    try {
+        m = measure(pack, o.measure);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError(path + ": " + error.what());
+    }
+    if (o.timings) {
+        const auto& t = last_stage_times();
+        const double total =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::cerr << "timings " << path << ": index " << t.index << " s, phi " << t.phi
+                  << " s, phi(y) " << t.phi_profile << " s, overlaps " << t.overlaps
+                  << " s, Z(delta)+g(r)+Q6 " << t.local << " s, total " << total << " s\n";
+    }
+    return m;
+}
+
+std::string stem_of(const std::string& path) {
+    fs::path p(path);
+    if (p.extension() == ".gz") {
+        p = p.stem();
+    }
+    return p.stem().string();
+}
+
+Group measure_group(const std::string& label, const std::vector<std::string>& packs,
+                    const CommonOptions& o) {
+    Group group;
+    group.label = label;
+    for (const auto& path : packs) {
+        const Pack pack = read_pack(path);
+        group.packs.push_back(summarise(path, pack, measure_pack(path, pack, o)));
+    }
+    return group;
+}
+
+nlohmann::ordered_json measure_parameters(const CommonOptions& o) {
+    return provenance("", Pack{}, o.measure)["parameters"];
+}
+
+}  // namespace sgmp::compare::cli

@@ -1,0 +1,56 @@
+#pragma once
+// Shared pieces of the sgmp-compare commands: options common to every command that
+// measures packs, usage errors, and reading and measuring packs with errors that name
+// the file.
+
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sgmp/compare/agreement.hpp"
+#include "sgmp/compare/measure.hpp"
+#include "sgmp/pack/pack.hpp"
+
+namespace sgmp::compare::cli {
+
+/// A usage error: exit status 2.
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+struct CommonOptions {
+    std::vector<double> region;
+    MeasureOptions measure;
+    unsigned threads = 0;
+    bool timings = false;
+    bool force = false;
+    std::string out;
+};
+
+/// --out, --force and the measurement options.
+void add_common(CLI::App* command, CommonOptions& o);
+/// Validates the options (UsageError) and checks that --out can be written.
+void apply(CommonOptions& o);
+/// "sgmp-compare <arguments>", recorded in outputs.
+std::string command_line(int argc, char** argv);
+/// Reads a pack; InputError for unreadable, empty or malformed files.
+Pack read_pack(const std::string& path);
+Measurement measure_pack(const std::string& path, const Pack& pack, const CommonOptions& o);
+/// The measurement parameters as recorded in outputs.
+nlohmann::ordered_json measure_parameters(const CommonOptions& o);
+/// File name without .gz and the format extension.
+std::string stem_of(const std::string& path);
+/// Reads and measures `packs` as one labelled group.
+Group measure_group(const std::string& label, const std::vector<std::string>& packs,
+                    const CommonOptions& o);
+
+/// The crossval and regress subcommands (crossval_command.cpp). `register_*` adds the
+/// subcommand and returns a runner called when it was chosen.
+std::function<int(const std::string&)> register_crossval(CLI::App& app);
+std::function<int(const std::string&)> register_regress(CLI::App& app);
+
+}  // namespace sgmp::compare::cli

@@ -1,0 +1,177 @@
+// sgmp-compare crossval and regress: the cross-validation report of candidate groups
+// (SGMP arrangements) against reference groups (DEM friction classes), and regression
+// checks of a run's metrics against a stored baseline.
+#include <fstream>
+#include <iostream>
+
+#include "command_support.hpp"
+#include "sgmp/compare/baseline.hpp"
+#include "sgmp/compare/crossval.hpp"
+#include "sgmp/compare/manifest.hpp"
+#include "sgmp/compare/metrics_output.hpp"
+#include "sgmp/compare/report_files.hpp"
+#include "sgmp/compare/thesis_table.hpp"
+#include "sgmp/pack/input_error.hpp"
+#include "sgmp/pack/version.hpp"
+
+namespace sgmp::compare::cli {
+namespace {
+
+/// Exit status of a regression whose metrics moved beyond their tolerances.
+constexpr int kRegressionFailed = 3;
+
+std::ifstream open_input(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        throw InputError(path, 0, "cannot open for reading");
+    }
+    return in;
+}
+
+nlohmann::json read_json(const std::string& path) {
+    auto in = open_input(path);
+    try {
+        return nlohmann::json::parse(in);
+    } catch (const nlohmann::json::parse_error& error) {
+        throw InputError(path, 0, std::string("not valid JSON: ") + error.what());
+    }
+}
+
+struct CrossvalOptions {
+    std::string manifest;
+    std::string thesis;
+    CommonOptions common;
+};
+
+nlohmann::ordered_json manifest_json(const std::vector<ManifestEntry>& manifest) {
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const auto& e : manifest) {
+        list.push_back(
+            {{"role", e.role == Role::Candidate ? "candidate" : "reference"},
+             {"group", e.group},
+             {"count", e.count},
+             {"seed", e.seed},
+             {"seconds", e.seconds ? nlohmann::ordered_json(*e.seconds) : nlohmann::ordered_json()},
+             {"path", e.path}});
+    }
+    return list;
+}
+
+int run_crossval(CrossvalOptions& o, const std::string& command) {
+    auto manifest_in = open_input(o.manifest);
+    const auto manifest = read_manifest(manifest_in, o.manifest);
+    std::vector<ThesisResult> thesis;
+    if (!o.thesis.empty()) {
+        auto thesis_in = open_input(o.thesis);
+        thesis = read_thesis_results(thesis_in, o.thesis);
+    }
+    GroupPlan plan;
+    try {
+        plan = plan_groups(manifest);
+    } catch (const std::invalid_argument& error) {
+        throw InputError(o.manifest, 0, error.what());
+    }
+    apply(o.common);
+
+    std::vector<Group> groups;
+    for (std::size_t g = 0; g < plan.labels.size(); ++g) {
+        groups.push_back(measure_group(plan.labels[g], plan.paths[g], o.common));
+    }
+    const Report report = build_report(std::move(groups), plan.comparisons);
+    const CrossValidation cv = cross_validate(report, manifest, thesis);
+
+    nlohmann::ordered_json provenance{{"tool", "sgmp-compare crossval"},
+                                      {"version", sgmp::version()},
+                                      {"command", command},
+                                      {"manifest", o.manifest},
+                                      {"thesis", o.thesis},
+                                      {"parameters", cli::measure_parameters(o.common)}};
+    ReportContext context;
+    context.title = "SGMP against DEM: cross-validation report";
+    context.command = command;
+    context.parameters = provenance["parameters"];
+    context.lead_markdown = render_crossval_markdown(cv);
+    context.plots_per_count = true;
+    nlohmann::ordered_json crossval = crossval_json(cv);
+    crossval["provenance"] = provenance;
+    crossval["packs"] = manifest_json(manifest);
+    context.extra_files = {
+        {"headline.csv", render_headline_csv(cv)},
+        {"crossval.json", crossval.dump(2) + "\n"},
+        {"baseline.json", baseline_json(baseline_entries(report), provenance).dump(2) + "\n"}};
+    const auto used = write_report(o.common.out, o.common.force, report, context);
+    std::cout << render_headline_text(cv);
+    if (!used.plots_made) {
+        std::cerr << "sgmp-compare: plots skipped: " << used.plots_note << "\n";
+    }
+    return 0;
+}
+
+struct RegressOptions {
+    std::string baseline;
+    std::string current;
+    bool all = false;
+};
+
+int run_regress(const RegressOptions& o) {
+    const auto baseline = parse_baseline(read_json(o.baseline), o.baseline);
+    const auto current = parse_baseline(read_json(o.current), o.current);
+    if (baseline.empty()) {
+        throw InputError(o.baseline, 0, "the baseline has no entries");
+    }
+    const auto rows = regress(baseline, current);
+    std::size_t failed = 0;
+    for (const auto& row : rows) {
+        failed += row.pass ? 0 : 1;
+    }
+    if (failed == 0) {
+        if (o.all) {
+            std::cout << render_regression_table(rows, false);
+        }
+        std::cout << "regress: all " << rows.size() << " metrics within their tolerances of "
+                  << o.baseline << "\n";
+        return 0;
+    }
+    std::cout << render_regression_table(rows, !o.all);
+    std::cout << "regress: " << failed << " of " << rows.size()
+              << " metrics moved beyond their tolerances of " << o.baseline << "\n";
+    return kRegressionFailed;
+}
+
+}  // namespace
+
+std::function<int(const std::string&)> register_crossval(CLI::App& app) {
+    auto options = std::make_shared<CrossvalOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "crossval",
+        "cross-validation report: every candidate group of a manifest (e.g. SGMP "
+        "arrangements) against every reference group (e.g. DEM friction classes), per particle "
+        "count; report.md, report.csv, report.json, headline.csv, crossval.json, baseline.json, "
+        "plots/*.svg, index.html; prints the headline table");
+    cmd->add_option("--manifest", options->manifest,
+                    "CSV 'role,group,count,seed,seconds,path' listing the packs (role candidate or "
+                    "reference; paths relative to the current directory)")
+        ->required();
+    cmd->add_option("--thesis", options->thesis,
+                    "the thesis' results CSV (data/thesis/results.csv) to show beside ours");
+    add_common(cmd, options->common);
+    return [options, cmd](const std::string& command) {
+        return *cmd ? run_crossval(*options, command) : -1;
+    };
+}
+
+std::function<int(const std::string&)> register_regress(CLI::App& app) {
+    auto options = std::make_shared<RegressOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "regress",
+        "compare a run's metrics (its baseline.json from crossval) with a stored baseline; "
+        "exit 0 when every metric is within its tolerance, 3 (and a table of what moved) "
+        "when not");
+    cmd->add_option("--baseline", options->baseline, "stored baseline (e.g. data/baselines/*.json)")
+        ->required();
+    cmd->add_option("--current", options->current, "the current run's baseline.json")->required();
+    cmd->add_flag("--all", options->all, "print every metric, not only those that moved");
+    return [options, cmd](const std::string&) { return *cmd ? run_regress(*options) : -1; };
+}
+
+}  // namespace sgmp::compare::cli

@@ -11,6 +11,13 @@
 namespace sgmp::compare {
 namespace {
 
+/// L2 distance of the candidate's mean g(r) from the reference's, and the mean distance
+/// between pairs of reference replicates (0 with fewer than two).
+struct GrDistances {
+    double distance = 0.0;
+    double replicate = 0.0;
+};
+
 std::vector<const PackSummary*> packs_of(const Group& g, std::size_t count) {
     std::vector<const PackSummary*> result;
     for (const auto& p : g.packs) {
@@ -135,26 +142,40 @@ Comparison compare_at(const Group& candidate, const Group& reference, std::size_
     c.reference_curves = curves_of(b);
     const double width = b.front()->gr_bin_width;
     const auto& x = c.reference_curves.gr_r;
-    c.gr_distance = l2_distance(x, c.candidate_curves.gr, c.reference_curves.gr, width,
-                                kGrCompareFrom, kGrCompareTo);
-    if (b.size() >= 2) {
+    const auto distances = [&](double from) {
+        GrDistances result;
+        result.distance =
+            l2_distance(x, c.candidate_curves.gr, c.reference_curves.gr, width, from, kGrCompareTo);
+        if (b.size() < 2) {
+            return result;
+        }
         double sum = 0.0;
         std::size_t pairs = 0;
         for (std::size_t i = 0; i < b.size(); ++i) {
             for (std::size_t j = i + 1; j < b.size(); ++j) {
-                sum += l2_distance(x, b[i]->gr, b[j]->gr, width, kGrCompareFrom, kGrCompareTo);
+                sum += l2_distance(x, b[i]->gr, b[j]->gr, width, from, kGrCompareTo);
                 ++pairs;
             }
         }
-        c.gr_replicate_distance = sum / static_cast<double>(pairs);
-        if (c.gr_replicate_distance > 0.0) {
-            c.gr_ratio = c.gr_distance / c.gr_replicate_distance;
+        result.replicate = sum / static_cast<double>(pairs);
+        return result;
+    };
+    const GrDistances whole = distances(kGrCompareFrom);
+    c.gr_distance = whole.distance;
+    c.gr_replicate_distance = whole.replicate;
+    if (b.size() >= 2) {
+        if (whole.replicate > 0.0) {
+            c.gr_ratio = whole.distance / whole.replicate;
             c.gr_ratio_defined = true;
             c.gr_agree = c.gr_ratio <= 1.0;
         } else {
             // Identical reference replicates: only an identical candidate agrees.
             c.gr_ratio_defined = false;
             c.gr_agree = c.gr_distance == 0.0;
+        }
+        const GrDistances beyond = distances(kGrBeyondContactFrom);
+        if (beyond.replicate > 0.0) {
+            c.gr_beyond_contact_ratio = beyond.distance / beyond.replicate;
         }
     }
     return c;

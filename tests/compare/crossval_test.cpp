@@ -50,6 +50,7 @@ Comparison comparison(const std::string& candidate, const std::string& reference
     c.gr_ratio = gr_ratio;
     c.gr_ratio_defined = true;
     c.gr_agree = gr_ratio <= 1.0;
+    c.gr_beyond_contact_ratio = gr_ratio / 2.0;
     return c;
 }
 
@@ -130,6 +131,10 @@ BOOST_AUTO_TEST_CASE(headline_carries_verdicts_and_the_thesis_beside_us) {
         md.find(
             "| 150 | single-column | 5.1 | 138 | 0.003 | 46000× | 0.6160 | 0.6000 | -0.0160 |") !=
         std::string::npos);
+    // The informative ratio beyond contact is carried through and summarised.
+    BOOST_TEST(*column.against[1].gr_beyond_contact_ratio == 1.25);
+    BOOST_TEST(md.find("leaving out the contact peak (r ≥ 1.1·d) the ratio is 1.25") !=
+               std::string::npos);
     const auto json = crossval_json(cv);
     BOOST_TEST(json["headline"][0]["against"][1]["phi_agree"] == false);
     BOOST_TEST(render_headline_csv(cv).find("150,single-column,DEM mu=0.01,") != std::string::npos);

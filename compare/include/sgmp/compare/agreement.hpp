@@ -12,6 +12,7 @@
 /// and the g(r) ratio is not defined ("n/a").
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,6 +32,10 @@ const std::vector<MetricRule>& metric_rules();
 /// Range of r/d over which g(r) curves are compared.
 inline constexpr double kGrCompareFrom = 0.8;
 inline constexpr double kGrCompareTo = 5.0;
+/// Start of the range [1.1·d, 5·d] of the informative g(r) ratio that leaves out the
+/// contact peak, where soft DEM contacts (overlapping by up to ~1 % of d) and hard SGMP
+/// contacts (exactly d apart) fall into different bins.
+inline constexpr double kGrBeyondContactFrom = 1.1;
 /// The tolerances (indices into coordination_tolerances()) whose P(Z) are plotted.
 inline constexpr std::size_t kPlottedPzTolerances[] = {1, 5};
 /// The tolerance (δ = 1e-2) of P(Z) when many groups share one plot.
@@ -94,6 +99,8 @@ struct Comparison {
     double gr_ratio = 0.0;               // valid when gr_ratio_defined
     bool gr_ratio_defined = false;
     bool gr_agree = false;
+    /// The same ratio on [1.1·d, 5·d] (informative, no verdict); absent when undefined.
+    std::optional<double> gr_beyond_contact_ratio;
     GroupCurves candidate_curves;
     GroupCurves reference_curves;
 

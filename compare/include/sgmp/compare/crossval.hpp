@@ -33,6 +33,7 @@ struct HeadlineVerdict {
     bool z_agree = false;
     std::optional<double> gr_ratio;
     bool gr_agree = false;
+    std::optional<double> gr_beyond_contact_ratio;  // on [1.1·d, 5·d], informative
 };
 
 struct HeadlineRow {

@@ -1,6 +1,8 @@
 #pragma once
 // Private helper: one line of a simple CSV (no quoting) split at commas.
 
+#include <charconv>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,6 +24,18 @@ inline std::vector<std::string> split_csv_line(std::string_view line) {
         }
         start = comma + 1;
     }
+}
+
+/// The whole field as a number (integer or floating point); nullopt when it is not one.
+template <class Number>
+std::optional<Number> parse_csv_number(const std::string& text) {
+    Number value{};
+    const auto* end = text.data() + text.size();
+    const auto result = std::from_chars(text.data(), end, value);
+    if (text.empty() || result.ec != std::errc() || result.ptr != end) {
+        return std::nullopt;
+    }
+    return value;
 }
 
 }  // namespace sgmp::compare::detail

@@ -1,6 +1,5 @@
 #include "sgmp/compare/manifest.hpp"
 
-#include <charconv>
 #include <set>
 
 #include "csv_line.hpp"
@@ -10,17 +9,6 @@ namespace sgmp::compare {
 namespace {
 
 constexpr const char* kHeader = "role,group,count,seed,seconds,path";
-
-template <class Number>
-std::optional<Number> parse_number(const std::string& text) {
-    Number value{};
-    const auto* end = text.data() + text.size();
-    const auto result = std::from_chars(text.data(), end, value);
-    if (text.empty() || result.ec != std::errc() || result.ptr != end) {
-        return std::nullopt;
-    }
-    return value;
-}
 
 }  // namespace
 
@@ -66,20 +54,20 @@ std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& so
         if (entry.group.empty()) {
             throw InputError(source, number, "the group is empty");
         }
-        const auto count = parse_number<std::size_t>(fields[2]);
+        const auto count = detail::parse_csv_number<std::size_t>(fields[2]);
         if (!count || *count == 0) {
             throw InputError(source, number,
                              "count '" + fields[2] + "' must be a positive integer");
         }
         entry.count = *count;
-        const auto seed = parse_number<std::uint64_t>(fields[3]);
+        const auto seed = detail::parse_csv_number<std::uint64_t>(fields[3]);
         if (!seed) {
             throw InputError(source, number,
                              "seed '" + fields[3] + "' must be a non-negative integer");
         }
         entry.seed = *seed;
         if (!fields[4].empty()) {
-            const auto seconds = parse_number<double>(fields[4]);
+            const auto seconds = detail::parse_csv_number<double>(fields[4]);
             if (!seconds || *seconds < 0.0) {
                 throw InputError(source, number,
                                  "seconds '" + fields[4] + "' must be a number >= 0 or empty");

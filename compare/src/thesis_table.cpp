@@ -1,7 +1,5 @@
 #include "sgmp/compare/thesis_table.hpp"
 
-#include <charconv>
-
 #include "csv_line.hpp"
 #include "sgmp/pack/input_error.hpp"
 
@@ -12,13 +10,11 @@ constexpr const char* kHeader = "arrangement,count,runtime_s,packing_fraction,ta
 
 double number_field(const std::string& text, const char* what, const std::string& source,
                     std::size_t line) {
-    double value = 0.0;
-    const auto* end = text.data() + text.size();
-    const auto result = std::from_chars(text.data(), end, value);
-    if (text.empty() || result.ec != std::errc() || result.ptr != end) {
+    const auto value = detail::parse_csv_number<double>(text);
+    if (!value) {
         throw InputError(source, line, std::string(what) + " '" + text + "' is not a number");
     }
-    return value;
+    return *value;
 }
 
 }  // namespace

@@ -40,6 +40,7 @@ nlohmann::json read_json(const std::string& path) {
 struct CrossvalOptions {
     std::string manifest;
     std::string thesis;
+    std::string thesis_start;
     CommonOptions common;
 };
 
@@ -60,10 +61,14 @@ nlohmann::ordered_json manifest_json(const std::vector<ManifestEntry>& manifest)
 int run_crossval(CrossvalOptions& o, const std::string& command) {
     auto manifest_in = open_input(o.manifest);
     const auto manifest = read_manifest(manifest_in, o.manifest);
-    std::vector<ThesisResult> thesis;
+    ThesisTables thesis;
     if (!o.thesis.empty()) {
-        auto thesis_in = open_input(o.thesis);
-        thesis = read_thesis_results(thesis_in, o.thesis);
+        auto in = open_input(o.thesis);
+        thesis.results = read_thesis_results(in, o.thesis);
+    }
+    if (!o.thesis_start.empty()) {
+        auto in = open_input(o.thesis_start);
+        thesis.starts = read_thesis_starts(in, o.thesis_start);
     }
     GroupPlan plan;
     try {
@@ -85,6 +90,7 @@ int run_crossval(CrossvalOptions& o, const std::string& command) {
                                       {"command", command},
                                       {"manifest", o.manifest},
                                       {"thesis", o.thesis},
+                                      {"thesis_start", o.thesis_start},
                                       {"parameters", cli::measure_parameters(o.common)}};
     ReportContext context;
     context.title = "SGMP against DEM: cross-validation report";
@@ -154,6 +160,9 @@ std::function<int(const std::string&)> register_crossval(CLI::App& app) {
         ->required();
     cmd->add_option("--thesis", options->thesis,
                     "the thesis' results CSV (data/thesis/results.csv) to show beside ours");
+    cmd->add_option("--thesis-start", options->thesis_start,
+                    "the thesis' starting-pack CSV (data/thesis/starting_packs.csv) to show "
+                    "starting heights beside ours");
     add_common(cmd, options->common);
     return [options, cmd](const std::string& command) {
         return *cmd ? run_crossval(*options, command) : -1;

@@ -134,6 +134,28 @@ std::string describe_gr(const std::vector<const HeadlineRow*>& rows, std::size_t
     return text;
 }
 
+/// The diameter and the mean starting height (the engine's `start_height` key) of the
+/// group's packs at the row's count.
+void fill_from_packs(HeadlineRow& row, const Group& group) {
+    double height_sum = 0.0;
+    std::size_t heights = 0;
+    for (const auto& pack : group.packs) {
+        if (pack.count != row.count) {
+            continue;
+        }
+        row.diameter = pack.diameter;
+        for (const auto& [key, value] : pack.provenance) {
+            if (key == "start_height") {
+                height_sum += std::stod(value);
+                ++heights;
+            }
+        }
+    }
+    if (heights > 0) {
+        row.start_height = height_sum / static_cast<double>(heights);
+    }
+}
+
 std::string optional_fixed(const std::optional<double>& value, int decimals) {
     return value ? fixed(*value, decimals) : "n/a";
 }
@@ -172,7 +194,7 @@ GroupPlan plan_groups(const std::vector<ManifestEntry>& manifest) {
 }
 
 CrossValidation cross_validate(const Report& report, const std::vector<ManifestEntry>& manifest,
-                               const std::vector<ThesisResult>& thesis) {
+                               const ThesisTables& thesis) {
     CrossValidation cv;
     std::set<std::string> seen;
     for (const auto& entry : manifest) {
@@ -212,10 +234,9 @@ CrossValidation cross_validate(const Report& report, const std::vector<ManifestE
         v.gr_beyond_contact_ratio = c.gr_beyond_contact_ratio;
     }
     for (const auto& group : report.groups) {
-        for (const auto& pack : group.packs) {
-            auto found = rows.find({group.label, pack.count});
-            if (found != rows.end()) {
-                found->second.diameter = pack.diameter;
+        for (auto& [key, row] : rows) {
+            if (key.first == group.label) {
+                fill_from_packs(row, group);
             }
         }
     }
@@ -225,7 +246,8 @@ CrossValidation cross_validate(const Report& report, const std::vector<ManifestE
                 continue;
             }
             row.seconds = mean_seconds(manifest, label, row.count);
-            row.thesis = find_thesis_result(thesis, label, row.count);
+            row.thesis = find_thesis_result(thesis.results, label, row.count);
+            row.thesis_start = find_thesis_start(thesis.starts, label, row.count);
             if (row.thesis && row.seconds && *row.seconds > 0.0) {
                 row.speedup = row.thesis->runtime_seconds / *row.seconds;
             }
@@ -319,21 +341,25 @@ std::string render_crossval_markdown(const CrossValidation& cv) {
     md << "\n## Beside the thesis\n\n";
     md << "The thesis' runtime (s, one core of a 2.0 GHz Core Duo) and control-volume φ "
           "(Tables 5.1, 6.1, 7.1, 8.1) next to ours; speed-up = thesis runtime / our mean "
-          "runtime (ratio).\n\n";
-    md << "| N | arrangement | thesis table | thesis s | our s | speed-up | thesis φ | our φ | "
-          "φ − thesis φ |\n| ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+          "runtime (ratio). d: sphere diameter (length units). Start height: top of the "
+          "starting arrangement above the floor (length units; thesis Tables 6.2, 7.2, 8.2, "
+          "which give none for the single column). — marks what the thesis does not give.\n\n";
+    md << "| N | arrangement | d | thesis s | our s | speed-up | thesis φ | our φ | φ − thesis φ | "
+          "thesis start height | our start height |\n"
+          "| ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+    const std::string none = "—";
     for (const auto& row : cv.rows) {
-        if (!row.thesis) {
-            md << "| " << row.count << " | " << row.group << " | — | — | "
-               << optional_fixed(row.seconds, 3) << " | — | — | " << fixed(row.phi, 4)
-               << " | — |\n";
-            continue;
-        }
-        md << "| " << row.count << " | " << row.group << " | " << row.thesis->table << " | "
-           << fixed(row.thesis->runtime_seconds, 0) << " | " << optional_fixed(row.seconds, 3)
-           << " | " << (row.speedup ? fixed(*row.speedup, 0) + "×" : "n/a") << " | "
-           << fixed(row.thesis->packing_fraction, 4) << " | " << fixed(row.phi, 4) << " | "
-           << signed_fixed(row.phi - row.thesis->packing_fraction, 4) << " |\n";
+        const auto& t = row.thesis;
+        md << "| " << row.count << " | " << row.group << " | " << fixed(row.diameter, 4) << " | "
+           << (t ? fixed(t->runtime_seconds, 0) + " (" + t->table + ")" : none) << " | "
+           << optional_fixed(row.seconds, 3) << " | "
+           << (row.speedup ? fixed(*row.speedup, 0) + "×" : none) << " | "
+           << (t ? fixed(t->packing_fraction, 4) : none) << " | " << fixed(row.phi, 4) << " | "
+           << (t ? signed_fixed(row.phi - t->packing_fraction, 4) : none) << " | "
+           << (row.thesis_start ? fixed(row.thesis_start->starting_height, 2) + " (" +
+                                      row.thesis_start->table + ")"
+                                : none)
+           << " | " << (row.start_height ? fixed(*row.start_height, 2) : none) << " |\n";
     }
     return md.str();
 }
@@ -342,7 +368,8 @@ std::string render_headline_csv(const CrossValidation& cv) {
     std::ostringstream csv;
     csv << "count,arrangement,reference,sgmp_seconds,sgmp_phi,sgmp_z_1e-2,reference_phi,"
            "phi_tolerance,phi_verdict,reference_z_1e-2,z_tolerance,z_verdict,gr_ratio,gr_verdict,"
-           "gr_ratio_beyond_contact,thesis_seconds,thesis_phi,speedup\n";
+           "gr_ratio_beyond_contact,thesis_seconds,thesis_phi,speedup,diameter,start_height,"
+           "thesis_start_height\n";
     for (const auto& row : cv.rows) {
         for (const auto& v : row.against) {
             csv << row.count << ',' << row.group << ',' << v.reference << ','
@@ -356,7 +383,9 @@ std::string render_headline_csv(const CrossValidation& cv) {
                 << (v.gr_beyond_contact_ratio ? fixed(*v.gr_beyond_contact_ratio, 6) : "") << ','
                 << (row.thesis ? fixed(row.thesis->runtime_seconds, 0) : "") << ','
                 << (row.thesis ? fixed(row.thesis->packing_fraction, 4) : "") << ','
-                << (row.speedup ? fixed(*row.speedup, 1) : "") << '\n';
+                << (row.speedup ? fixed(*row.speedup, 1) : "") << ',' << fixed(row.diameter, 6)
+                << ',' << (row.start_height ? fixed(*row.start_height, 6) : "") << ','
+                << (row.thesis_start ? fixed(row.thesis_start->starting_height, 2) : "") << '\n';
         }
     }
     return csv.str();
@@ -397,6 +426,14 @@ nlohmann::ordered_json crossval_json(const CrossValidation& cv) {
                               {"phi", row.thesis->packing_fraction}};
             item["speedup"] =
                 row.speedup ? nlohmann::ordered_json(*row.speedup) : nlohmann::ordered_json();
+        }
+        if (row.start_height) {
+            item["start_height"] = *row.start_height;
+        }
+        if (row.thesis_start) {
+            item["thesis_start"] = {{"table", row.thesis_start->table},
+                                    {"grid", row.thesis_start->grid},
+                                    {"starting_height", row.thesis_start->starting_height}};
         }
         rows.push_back(item);
     }

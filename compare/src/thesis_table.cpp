@@ -1,12 +1,40 @@
 #include "sgmp/compare/thesis_table.hpp"
 
+#include <algorithm>
+#include <functional>
+
 #include "csv_line.hpp"
 #include "sgmp/pack/input_error.hpp"
 
 namespace sgmp::compare {
 namespace {
 
-constexpr const char* kHeader = "arrangement,count,runtime_s,packing_fraction,table";
+using Fields = std::vector<std::string>;
+
+/// Reads a CSV with exactly `header`, calling `row` with the fields of every non-blank line
+/// and its number.
+void read_rows(std::istream& in, const std::string& source, const std::string& header,
+               const std::function<void(const Fields&, std::size_t)>& row) {
+    std::string line;
+    std::size_t number = 1;
+    const Fields columns = detail::split_csv_line(header);
+    if (!std::getline(in, line) || detail::split_csv_line(line) != columns) {
+        throw InputError(source, number, "expected the header '" + header + "'");
+    }
+    while (std::getline(in, line)) {
+        ++number;
+        if (line.find_first_not_of(" \t\r") == std::string::npos) {
+            continue;
+        }
+        const Fields fields = detail::split_csv_line(line);
+        if (fields.size() != columns.size()) {
+            throw InputError(source, number,
+                             "expected " + std::to_string(columns.size()) +
+                                 " comma-separated fields, found " + std::to_string(fields.size()));
+        }
+        row(fields, number);
+    }
+}
 
 double number_field(const std::string& text, const char* what, const std::string& source,
                     std::size_t line) {
@@ -17,51 +45,56 @@ double number_field(const std::string& text, const char* what, const std::string
     return *value;
 }
 
+std::size_t count_field(const std::string& text, const std::string& source, std::size_t line) {
+    const auto value = detail::parse_csv_number<std::size_t>(text);
+    if (!value || *value == 0) {
+        throw InputError(source, line, "count '" + text + "' must be a positive integer");
+    }
+    return *value;
+}
+
+template <class Row>
+std::optional<Row> find_row(const std::vector<Row>& rows, const std::string& arrangement,
+                            std::size_t count) {
+    const auto found = std::find_if(rows.begin(), rows.end(), [&](const Row& row) {
+        return row.arrangement == arrangement && row.count == count;
+    });
+    return found == rows.end() ? std::nullopt : std::optional<Row>(*found);
+}
+
 }  // namespace
 
 std::vector<ThesisResult> read_thesis_results(std::istream& in, const std::string& source) {
-    std::string line;
-    std::size_t number = 1;
-    if (!std::getline(in, line) ||
-        detail::split_csv_line(line) != detail::split_csv_line(kHeader)) {
-        throw InputError(source, number, "expected the header '" + std::string(kHeader) + "'");
-    }
     std::vector<ThesisResult> results;
-    while (std::getline(in, line)) {
-        ++number;
-        if (line.find_first_not_of(" \t\r") == std::string::npos) {
-            continue;
-        }
-        const auto fields = detail::split_csv_line(line);
-        if (fields.size() != 5) {
-            throw InputError(
-                source, number,
-                "expected 5 comma-separated fields, found " + std::to_string(fields.size()));
-        }
-        ThesisResult row;
-        row.arrangement = fields[0];
-        const double count = number_field(fields[1], "count", source, number);
-        if (count < 1.0 || count != static_cast<double>(static_cast<std::size_t>(count))) {
-            throw InputError(source, number,
-                             "count '" + fields[1] + "' must be a positive integer");
-        }
-        row.count = static_cast<std::size_t>(count);
-        row.runtime_seconds = number_field(fields[2], "runtime_s", source, number);
-        row.packing_fraction = number_field(fields[3], "packing_fraction", source, number);
-        row.table = fields[4];
-        results.push_back(std::move(row));
-    }
+    read_rows(in, source, "arrangement,count,runtime_s,packing_fraction,table",
+              [&](const Fields& f, std::size_t line) {
+                  results.push_back(
+                      ThesisResult{f[0], count_field(f[1], source, line),
+                                   number_field(f[2], "runtime_s", source, line),
+                                   number_field(f[3], "packing_fraction", source, line), f[4]});
+              });
     return results;
+}
+
+std::vector<ThesisStart> read_thesis_starts(std::istream& in, const std::string& source) {
+    std::vector<ThesisStart> starts;
+    read_rows(in, source, "arrangement,count,grid,starting_height,table",
+              [&](const Fields& f, std::size_t line) {
+                  starts.push_back(ThesisStart{f[0], count_field(f[1], source, line), f[2],
+                                               number_field(f[3], "starting_height", source, line),
+                                               f[4]});
+              });
+    return starts;
 }
 
 std::optional<ThesisResult> find_thesis_result(const std::vector<ThesisResult>& results,
                                                const std::string& arrangement, std::size_t count) {
-    for (const auto& row : results) {
-        if (row.arrangement == arrangement && row.count == count) {
-            return row;
-        }
-    }
-    return std::nullopt;
+    return find_row(results, arrangement, count);
+}
+
+std::optional<ThesisStart> find_thesis_start(const std::vector<ThesisStart>& starts,
+                                             const std::string& arrangement, std::size_t count) {
+    return find_row(starts, arrangement, count);
 }
 
 }  // namespace sgmp::compare

@@ -110,7 +110,10 @@ BOOST_AUTO_TEST_CASE(groups_are_planned_every_candidate_against_every_reference)
 BOOST_AUTO_TEST_CASE(headline_carries_verdicts_and_the_thesis_beside_us) {
     std::istringstream thesis_csv(
         "arrangement,count,runtime_s,packing_fraction,table\nsingle-column,150,138,0.6160,5.1\n");
-    const auto thesis = read_thesis_results(thesis_csv, "results.csv");
+    std::istringstream starts_csv(
+        "arrangement,count,grid,starting_height,table\nloose-random,150,,3.38,8.2\n");
+    const ThesisTables thesis{read_thesis_results(thesis_csv, "results.csv"),
+                              read_thesis_starts(starts_csv, "starting_packs.csv")};
     const CrossValidation cv = cross_validate(sample_report(), sample_manifest(), thesis);
     BOOST_TEST_REQUIRE(cv.rows.size() == 2u);
     const HeadlineRow& column = cv.rows[0];
@@ -124,13 +127,14 @@ BOOST_AUTO_TEST_CASE(headline_carries_verdicts_and_the_thesis_beside_us) {
     BOOST_TEST(column.against[0].gr_agree);
     BOOST_TEST(!column.against[1].gr_agree);
     BOOST_TEST(!cv.rows[1].thesis.has_value());
+    BOOST_TEST(!column.thesis_start.has_value());
+    BOOST_TEST(cv.rows[1].thesis_start->starting_height == 3.38);
     const std::string md = render_crossval_markdown(cv);
     BOOST_TEST(md.find("**single-column vs DEM mu=0.01**: φ agrees at 0 of 1 counts; differs at "
                        "N = 150 (SGMP − DEM -0.0400 (ratio))") != std::string::npos);
     BOOST_TEST(
-        md.find(
-            "| 150 | single-column | 5.1 | 138 | 0.003 | 46000× | 0.6160 | 0.6000 | -0.0160 |") !=
-        std::string::npos);
+        md.find("| 150 | single-column | 0.0000 | 138 (5.1) | 0.003 | 46000× | 0.6160 | 0.6000 | "
+                "-0.0160 | — | — |") != std::string::npos);
     // The informative ratio beyond contact is carried through and summarised.
     BOOST_TEST(*column.against[1].gr_beyond_contact_ratio == 1.25);
     BOOST_TEST(md.find("leaving out the contact peak (r ≥ 1.1·d) the ratio is 1.25") !=

@@ -4,7 +4,8 @@
 /// against DEM friction classes (reference groups), one headline row per arrangement and
 /// particle count — φ of the control volume, mean coordination Z at δ = 10⁻² and the g(r)
 /// distance ratio against each reference, with verdicts — and the thesis' runtime and φ
-/// beside ours with the speed-up factor (thesis runtime / our mean runtime).
+/// beside ours with the speed-up factor (thesis runtime / our mean runtime), and the
+/// height of the starting arrangement beside the thesis' (Tables 6.2, 7.2, 8.2).
 
 #include <cstddef>
 #include <nlohmann/json.hpp>
@@ -46,7 +47,9 @@ struct HeadlineRow {
     double z = 0.0;
     std::vector<HeadlineVerdict> against;  // in reference order
     std::optional<ThesisResult> thesis;
-    std::optional<double> speedup;  // thesis runtime / seconds
+    std::optional<double> speedup;       // thesis runtime / seconds
+    std::optional<double> start_height;  // mean `start_height` key of the packs
+    std::optional<ThesisStart> thesis_start;
 };
 
 struct CrossValidation {
@@ -55,10 +58,16 @@ struct CrossValidation {
     std::vector<HeadlineRow> rows;  // by candidate group, then count
 };
 
+/// The thesis' published tables (either may be empty).
+struct ThesisTables {
+    std::vector<ThesisResult> results;
+    std::vector<ThesisStart> starts;
+};
+
 /// Builds the headline from `report` (which must compare every candidate group with every
-/// reference group), the manifest (for runtimes) and the thesis' results.
+/// reference group), the manifest (for runtimes) and the thesis' tables.
 CrossValidation cross_validate(const Report& report, const std::vector<ManifestEntry>& manifest,
-                               const std::vector<ThesisResult>& thesis);
+                               const ThesisTables& thesis);
 
 /// The (candidate, reference) group index pairs to compare: every candidate against every
 /// reference, groups in manifest order.

@@ -23,8 +23,23 @@ struct ThesisResult {
 /// with source:line on malformed lines.
 std::vector<ThesisResult> read_thesis_results(std::istream& in, const std::string& source);
 
+/// The thesis' starting packs (data/thesis/starting_packs.csv: Tables 6.2, 7.2, 8.2).
+struct ThesisStart {
+    std::string arrangement;
+    std::size_t count = 0;
+    std::string grid;  // e.g. "8x8"; empty for loose random
+    double starting_height = 0.0;
+    std::string table;
+};
+
+/// Reads `arrangement,count,grid,starting_height,table`; throws sgmp::InputError with
+/// source:line on malformed lines.
+std::vector<ThesisStart> read_thesis_starts(std::istream& in, const std::string& source);
+
 /// The row for (arrangement, count), if the thesis has one.
 std::optional<ThesisResult> find_thesis_result(const std::vector<ThesisResult>& results,
                                                const std::string& arrangement, std::size_t count);
+std::optional<ThesisStart> find_thesis_start(const std::vector<ThesisStart>& starts,
+                                             const std::string& arrangement, std::size_t count);
 
 }  // namespace sgmp::compare

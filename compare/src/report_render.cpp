@@ -1,5 +1,7 @@
 #include "sgmp/compare/report_render.hpp"
 
+#include "html_text.hpp"
+
 #include <cstdio>
 #include <sstream>
 
@@ -7,6 +9,8 @@
 #include "sgmp/pack/version.hpp"
 
 namespace sgmp::compare {
+
+using detail::html_escape;
 namespace {
 
 using Json = nlohmann::ordered_json;
@@ -65,29 +69,6 @@ std::string provenance_value(const PackSummary& p, const std::string& key) {
     return "-";
 }
 
-std::string html_escape(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-        switch (c) {
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '&':
-                out += "&amp;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            default:
-                out += c;
-        }
-    }
-    return out;
-}
-
 std::string summary_line(const Comparison& c) {
     std::vector<std::string> agree;
     std::vector<std::string> disagree;
@@ -118,99 +99,6 @@ std::string summary_line(const Comparison& c) {
 }
 
 }  // namespace
-
-namespace {
-
-/// **bold** and `code` spans of one escaped line.
-std::string inline_markup(const std::string& escaped) {
-    std::string out;
-    bool bold = false;
-    bool code = false;
-    for (std::size_t i = 0; i < escaped.size(); ++i) {
-        if (escaped.compare(i, 2, "**") == 0 && !code) {
-            out += bold ? "</b>" : "<b>";
-            bold = !bold;
-            ++i;
-        } else if (escaped[i] == '`') {
-            out += code ? "</code>" : "<code>";
-            code = !code;
-        } else {
-            out += escaped[i];
-        }
-    }
-    return out;
-}
-
-std::vector<std::string> table_cells(const std::string& line) {
-    std::vector<std::string> cells;
-    std::size_t start = line.find('|') + 1;
-    while (start < line.size()) {
-        const std::size_t bar = line.find('|', start);
-        if (bar == std::string::npos) {
-            break;
-        }
-        std::string cell = line.substr(start, bar - start);
-        const auto first = cell.find_first_not_of(' ');
-        const auto last = cell.find_last_not_of(' ');
-        cells.push_back(first == std::string::npos ? "" : cell.substr(first, last - first + 1));
-        start = bar + 1;
-    }
-    return cells;
-}
-
-}  // namespace
-
-std::string markdown_to_html(const std::string& markdown) {
-    std::ostringstream html;
-    std::istringstream in(markdown);
-    std::string line;
-    enum class Block { None, List, Table } block = Block::None;
-    bool header_row = false;
-    const auto close = [&] {
-        html << (block == Block::List ? "</ul>\n" : block == Block::Table ? "</table>\n" : "");
-        block = Block::None;
-    };
-    while (std::getline(in, line)) {
-        if (line.rfind("## ", 0) == 0) {
-            close();
-            html << "<h2>" << inline_markup(html_escape(line.substr(3))) << "</h2>\n";
-        } else if (line.rfind("- ", 0) == 0) {
-            if (block != Block::List) {
-                close();
-                html << "<ul>\n";
-                block = Block::List;
-            }
-            html << "<li>" << inline_markup(html_escape(line.substr(2))) << "</li>\n";
-        } else if (line.rfind("|", 0) == 0) {
-            if (block != Block::Table) {
-                close();
-                html << "<table>\n";
-                block = Block::Table;
-                header_row = true;
-            }
-            const auto cells = table_cells(line);
-            if (!cells.empty() && cells[0].find_first_not_of("-: ") == std::string::npos) {
-                continue;  // the alignment row
-            }
-            html << "<tr>";
-            for (const auto& cell : cells) {
-                const char* tag = header_row ? "th" : "td";
-                const bool differs = cell == "DIFFER";
-                html << "<" << tag << (differs ? " class=\"DISAGREE\"" : "") << ">"
-                     << inline_markup(html_escape(cell)) << "</" << tag << ">";
-            }
-            html << "</tr>\n";
-            header_row = false;
-        } else if (line.find_first_not_of(' ') == std::string::npos) {
-            close();
-        } else {
-            close();
-            html << "<p>" << inline_markup(html_escape(line)) << "</p>\n";
-        }
-    }
-    close();
-    return html.str();
-}
 
 std::vector<std::string> rule_statements() {
     std::vector<std::string> rules{
@@ -405,6 +293,25 @@ Json render_json(const Report& report, const ReportContext& context) {
     return j;
 }
 
+namespace {
+
+/// The plots section: every SVG inline with its file name as caption.
+std::string plots_html(const ReportContext& context, const std::vector<std::string>& svgs) {
+    std::ostringstream html;
+    html << "<h2>Plots</h2>\n";
+    if (!context.plots_made) {
+        html << "<p>Plots were skipped: " << html_escape(context.plots_note) << "</p>\n";
+        return html.str();
+    }
+    for (std::size_t i = 0; i < svgs.size(); ++i) {
+        html << "<figure>" << svgs[i] << "<figcaption>" << html_escape(context.plot_files[i])
+             << "</figcaption></figure>\n";
+    }
+    return html.str();
+}
+
+}  // namespace
+
 std::string render_html(const Report& report, const ReportContext& context,
                         const std::vector<std::string>& svgs) {
     std::ostringstream html;
@@ -417,6 +324,7 @@ std::string render_html(const Report& report, const ReportContext& context,
     html << "<h1>" << html_escape(context.title) << "</h1>\n<p>Made by sgmp-compare "
          << sgmp::version() << ": <code>" << html_escape(context.command) << "</code></p>\n"
          << markdown_to_html(context.lead_markdown)
+         << (context.plots_per_count ? plots_html(context, svgs) : std::string())
          << "<h2>Summary of every comparison</h2>\n<ul>\n";
     for (const auto& c : report.comparisons) {
         html << "<li>" << html_escape(summary_line(c).substr(2)) << "</li>\n";
@@ -450,14 +358,8 @@ std::string render_html(const Report& report, const ReportContext& context,
              << "</td><td>1 (ratio)</td><td class=\"" << gr_verdict(c) << "\">" << gr_verdict(c)
              << "</td></tr>\n</table>\n";
     }
-    html << "<h2>Plots</h2>\n";
-    if (context.plots_made) {
-        for (std::size_t i = 0; i < svgs.size(); ++i) {
-            html << "<figure>" << svgs[i] << "<figcaption>" << html_escape(context.plot_files[i])
-                 << "</figcaption></figure>\n";
-        }
-    } else {
-        html << "<p>Plots were skipped: " << html_escape(context.plots_note) << "</p>\n";
+    if (!context.plots_per_count) {
+        html << plots_html(context, svgs);
     }
     html << "<h2>Inputs</h2>\n<table><tr><th>group</th><th>file</th><th>N</th>";
     for (const auto& key : provenance_columns()) {

@@ -4,6 +4,7 @@
 #include "sgmp/compare/baseline.hpp"
 #include "sgmp/compare/crossval.hpp"
 #include "sgmp/compare/manifest.hpp"
+#include "sgmp/compare/report_render.hpp"
 #include "sgmp/compare/thesis_table.hpp"
 #include "sgmp/pack/input_error.hpp"
 
@@ -176,6 +177,21 @@ BOOST_AUTO_TEST_CASE(regression_passes_identical_runs_and_flags_moved_metrics) {
     BOOST_CHECK_THROW(
         parse_baseline(nlohmann::json::parse("{\"entries\": [{\"group\": 1}]}"), "b.json"),
         InputError);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(markdown_html)
+
+BOOST_AUTO_TEST_CASE(lead_sections_render_as_html) {
+    const std::string html = sgmp::compare::markdown_to_html(
+        "## Head <1>\n\nSome **bold** and `code`.\n- item a\n- item b\n\n| x | verdict |\n"
+        "| ---: | --- |\n| 1 | DIFFER |\n");
+    BOOST_TEST(html ==
+               "<h2>Head &lt;1&gt;</h2>\n<p>Some <b>bold</b> and <code>code</code>.</p>\n"
+               "<ul>\n<li>item a</li>\n<li>item b</li>\n</ul>\n<table>\n"
+               "<tr><th>x</th><th>verdict</th></tr>\n"
+               "<tr><td>1</td><td class=\"DISAGREE\">DIFFER</td></tr>\n</table>\n");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

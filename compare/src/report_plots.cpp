@@ -208,7 +208,8 @@ PlotResult make_plots(const std::vector<PlotPanel>& panels, const fs::path& dire
         files.push_back("plots/" + stem + "_zdelta.svg");
 
         gp << "set output '" << stem << "_phiy.svg'\nset title " << quoted("phi(y): " + what)
-           << "\nset xlabel 'phi (ratio)'\nset ylabel 'y (length units)'\nplot ";
+           << "\nset key bottom left\nset xlabel 'phi (ratio)'\nset ylabel 'y (length "
+              "units)'\nplot ";
         for (std::size_t k = 0; k < panel.curves.size(); ++k) {
             const auto& curve = panel.curves[k];
             write_text(plots / data_file("phiy", k),
@@ -216,7 +217,7 @@ PlotResult make_plots(const std::vector<PlotPanel>& panels, const fs::path& dire
             gp << (k == 0 ? "" : ", ") << "'" << data_file("phiy", k)
                << "' using 2:1 with lines lw 2" << style(curve) << " title " << quoted(curve.label);
         }
-        gp << "\n";
+        gp << "\nset key top right\n";
         files.push_back("plots/" + stem + "_phiy.svg");
     }
     gp << "unset output\n";

@@ -76,7 +76,8 @@ void write_file_atomically(const fs::path& target, bool overwrite,
     try {
         std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
         if (!file) {
-            throw path_error(temporary, std::string("cannot create: ") + std::strerror(errno));
+            throw path_error(target, std::string("cannot create a file in its directory: ") +
+                                         std::strerror(errno));
         }
         if (ends_with_gz(target)) {
             boost::iostreams::filtering_ostream compressed;

@@ -156,6 +156,13 @@ int main(int argc, char** argv) {
                        ? std::string()
                        : "must be one of " + std::string(sgmp::engine::arrangement_names());
         });
+    pour_cmd
+        ->add_option("--start-jitter", p.start_jitter,
+                     "With --from-arrangement: move each sphere horizontally by a random "
+                     "offset up to this fraction of d (no overlaps created), which breaks "
+                     "symmetries DEM keeps for ever (a single column lands as a tower)")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 0.5));
     pour_cmd->add_flag("--force", force, "Overwrite an existing output file");
     pour_cmd->add_option("--keep-work", keep_work,
                          "Run in this directory and keep it (input script, log, dump); "

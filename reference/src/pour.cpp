@@ -16,6 +16,7 @@
 #include "sgmp/reference/executables.hpp"
 #include "sgmp/reference/input_script.hpp"
 #include "sgmp/reference/pack_checks.hpp"
+#include "sgmp/reference/start_jitter.hpp"
 
 namespace sgmp::reference {
 namespace {
@@ -269,6 +270,7 @@ void record(Metadata& m, const PourRequest& request, const PourLog& log, const P
     m.set("start", request.start ? "arrangement" : "cloud");
     if (request.start) {
         m.set("arrangement", request.start->name);
+        m.set_number("start_jitter", p.start_jitter);
     } else {
         m.set_number("cloud_fraction", p.cloud_fraction);
     }
@@ -312,13 +314,19 @@ PourResult pour(const PourRequest& request, const PourObserver& observer) {
     }
     check_start(request);
     const std::vector<std::string> argv = command_line(request);
+    std::optional<StartPositions> start = request.start;
+    if (start) {
+        Random jitter_random(p.seed ^ 0x7177E2ULL);  // apart from the other seeds
+        jitter_horizontally(start->centers, p.diameter() / 2.0, p.start_jitter * p.diameter(),
+                            Container{}, jitter_random);
+    }
     const double start_top = start_top_of(request);
 
     WorkDirectory work(request.work_directory);
     write_text(work.path() / "in.pour", pour_script(p, start_top));
     if (request.start) {
         write_text(work.path() / "start.data",
-                   start_data(p, *request.start, domain_top(start_top, p.diameter())));
+                   start_data(p, *start, domain_top(start_top, p.diameter())));
     }
 
     RunWatch watch;

@@ -43,6 +43,8 @@ void PourParameters::validate() const {
     require(max_time > check_time, "max_time", max_time, "longer than check_time");
     require(cloud_fraction > 0.0 && cloud_fraction <= 0.35, "cloud_fraction", cloud_fraction,
             "in (0, 0.35] (random insertion jams above)");
+    require(start_jitter >= 0.0 && start_jitter <= 0.5, "start_jitter", start_jitter,
+            "in [0, 0.5]");
     require(ranks >= 1 && ranks <= 64, "ranks", ranks, "between 1 and 64");
 }
 

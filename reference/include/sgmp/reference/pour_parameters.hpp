@@ -38,6 +38,9 @@ struct PourParameters {
     int ranks = 1;                    ///< MPI ranks (1: run liggghts directly)
     /// Name of an SGMP starting arrangement to start from instead of the cloud.
     std::optional<std::string> arrangement;
+    /// Random horizontal offsets of an arrangement's spheres, as a fraction of d
+    /// (start_jitter.hpp); 0 keeps the arrangement exactly.
+    double start_jitter = 0.0;
 
     /// Throws std::invalid_argument naming the parameter and the rule it breaks.
     void validate() const;

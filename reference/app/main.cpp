@@ -179,7 +179,7 @@ int main(int argc, char** argv) {
     pour_cmd
         ->add_option("--tangential-damping", tangential_damping,
                      "Viscous damping of the tangential contact spring, on or off (off for "
-                     "exactly frictionless pours, where it spins spheres up)")
+                     "exactly frictionless pours: at mu = 0 it still turns the spheres)")
         ->capture_default_str()
         ->check(CLI::IsMember({"on", "off"}));
     pour_cmd

@@ -24,7 +24,8 @@ struct PourParameters {
     double friction = 0.5;           ///< sliding friction μ, particles and walls
     double restitution = 0.5;        ///< normal coefficient of restitution e
     double rolling_friction = 0.01;  ///< rolling friction μ_r (constant directional torque)
-    /// Viscous damping of the tangential spring; switch off for exactly frictionless pours.
+    /// Viscous damping of the tangential spring; off for exactly frictionless pours (at μ = 0
+    /// it still turns the spheres).
     bool tangential_damping = true;
     double youngs_modulus = 1e9;      ///< E (Pa)
     double poisson_ratio = 0.25;      ///< ν

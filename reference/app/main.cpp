@@ -106,7 +106,7 @@ int main(int argc, char** argv) {
     CLI::App app{
         "sgmp-reference: DEM reference packs for the SGMP testbed, poured under gravity "
         "with LIGGGHTS (units: SI, 1 project length unit = 1 m)."};
-    app.set_version_flag("--version", std::string("sgmp-reference ") + sgmp::version());
+    app.set_version_flag("--version", std::string(sgmp::version()));
     app.require_subcommand(1);
     CLI::App* pour_cmd = app.add_subcommand(
         "pour", "Pour N equal spheres into the container and write the settled pack.");

@@ -15,6 +15,25 @@ double cell_side(double max_radius) {
     return 2.0 * max_radius;
 }
 
+/// Height at which a sphere of radius r falling straight down from c first touches the
+/// settled sphere s: y_s + √((r + r_s)² − h²), h the horizontal centre distance; capped at
+/// c.y (a rounding-level overlap means "touching now"). Negative infinity when s lies
+/// above c or outside the fall column (h ≥ r + r_s).
+double contact_height(const Vec3& c, double r, const Sphere& s) {
+    if (s.y > c.y()) {
+        return -std::numeric_limits<double>::infinity();
+    }
+    const double dx = c.x() - s.x;
+    const double dz = c.z() - s.z;
+    const double h2 = dx * dx + dz * dz;
+    const double contact = r + s.r;
+    const double contact2 = contact * contact;
+    if (h2 >= contact2) {
+        return -std::numeric_limits<double>::infinity();
+    }
+    return std::min(s.y + std::sqrt(contact2 - h2), c.y());
+}
+
 }  // namespace
 
 Protocol::Protocol(const Container& container, const ProtocolParams& params, double max_radius)
@@ -57,19 +76,7 @@ Protocol::Fall Protocol::fall_exact(const Vec3& c, double r) const {
             break;
         }
         grid_.for_each_in_layer(l, xs, zs, [&](const Sphere& s) {
-            if (s.y > c.y()) {
-                return;  // above the particle: never met when falling
-            }
-            const double dx = c.x() - s.x;
-            const double dz = c.z() - s.z;
-            const double h2 = dx * dx + dz * dz;
-            const double contact = r + s.r;
-            const double contact2 = contact * contact;
-            if (h2 >= contact2) {
-                return;  // not in the fall column
-            }
-            // Capped at the current height: a rounding-level overlap means "touching now".
-            const double y = std::min(s.y + std::sqrt(contact2 - h2), c.y());
+            const double y = contact_height(c, r, s);
             if (y > result.y) {
                 result = Fall{y, false, s};
             }
@@ -105,18 +112,7 @@ Protocol::Fall Protocol::contact_below(const Vec3& c, double r) {
     }
     Fall result{container_.floor + r, true, Sphere{}};
     for (const Sphere& j : local_) {
-        if (j.y > c.y()) {
-            continue;
-        }
-        const double dx = c.x() - j.x;
-        const double dz = c.z() - j.z;
-        const double h2 = dx * dx + dz * dz;
-        const double contact = r + j.r;
-        const double contact2 = contact * contact;
-        if (h2 >= contact2) {
-            continue;
-        }
-        const double y = std::min(j.y + std::sqrt(contact2 - h2), c.y());
+        const double y = contact_height(c, r, j);
         if (y > result.y) {
             result = Fall{y, false, j};
         }

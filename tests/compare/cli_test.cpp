@@ -175,4 +175,46 @@ BOOST_AUTO_TEST_CASE(measure_and_report_write_complete_directories) {
     }
 }
 
+BOOST_AUTO_TEST_CASE(crossval_and_regress_end_to_end) {
+    for (int seed = 1; seed <= 4; ++seed) {
+        good_pack("x" + std::to_string(seed) + ".xyz", static_cast<std::uint64_t>(seed));
+    }
+    write("manifest.csv",
+          "role,group,count,seed,seconds,path\n"
+          "candidate,loose-random,300,1,0.01,x1.xyz\ncandidate,loose-random,300,2,0.01,x2.xyz\n"
+          "reference,DEM mu=0.5,300,1,2.0,x3.xyz\nreference,DEM mu=0.5,300,2,2.0,x4.xyz\n");
+    write("results.csv",
+          "arrangement,count,runtime_s,packing_fraction,table\nloose-random,300,551,0.5918,8.1\n");
+    const Result ok = run("crossval --manifest manifest.csv --thesis results.csv --out cv");
+    BOOST_TEST_REQUIRE(ok.status == 0, ok.err);
+    for (const char* file : {"report.md", "index.html", "headline.csv", "crossval.json",
+                             "baseline.json", "report.json"}) {
+        BOOST_TEST(fs::exists(scratch() / "cv" / file), file);
+    }
+    const std::string md = slurp(scratch() / "cv" / "report.md");
+    BOOST_TEST(md.find("## Where SGMP agrees with DEM") <
+               md.find("## Summary of every comparison"));
+    BOOST_TEST(md.find("| 300 | loose-random |") != std::string::npos);
+    BOOST_TEST(md.find("551 (8.1)") != std::string::npos);
+
+    // A run compared with itself passes; a baseline whose phi moved fails with status 3.
+    BOOST_TEST(run("regress --baseline cv/baseline.json --current cv/baseline.json").status == 0);
+    std::string moved = slurp(scratch() / "cv" / "baseline.json");
+    const auto at = moved.find("\"value\": ");
+    BOOST_TEST_REQUIRE(at != std::string::npos);
+    moved.insert(at + 9, "1");  // the first value (phi, about 0.6) becomes about 10.6
+    write("moved.json", moved);
+    BOOST_TEST(run("regress --baseline moved.json --current cv/baseline.json").status == 3);
+
+    // Bad manifests: one line naming file:line, status 1, no report directory.
+    write("bad.csv", "role,group,count,seed,seconds,path\ncandidate,a,three,1,,x1.xyz\n");
+    const Result bad = run("crossval --manifest bad.csv --out cv-bad");
+    BOOST_TEST(bad.status == 1);
+    BOOST_TEST(bad.err == "sgmp-compare: bad.csv:2: count 'three' must be a positive integer\n");
+    BOOST_TEST(!fs::exists(scratch() / "cv-bad"));
+    write("one-side.csv", "role,group,count,seed,seconds,path\ncandidate,a,300,1,,x1.xyz\n");
+    BOOST_TEST(run("crossval --manifest one-side.csv --out cv-bad").status == 1);
+    BOOST_TEST(!fs::exists(scratch() / "cv-bad"));
+}
+
 BOOST_AUTO_TEST_SUITE_END()

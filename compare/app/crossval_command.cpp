@@ -102,7 +102,9 @@ int run_crossval(CrossvalOptions& o, const std::string& command) {
     crossval["provenance"] = provenance;
     crossval["packs"] = manifest_json(manifest);
     context.extra_files = {
-        {"headline.csv", render_headline_csv(cv)},
+        {"headline.csv", "# tool: sgmp-compare " + std::string(sgmp::version()) +
+                             "\n# command: " + command + "\n# rule: " + rule_statements().front() +
+                             "\n" + render_headline_csv(cv)},
         {"crossval.json", crossval.dump(2) + "\n"},
         {"baseline.json", baseline_json(baseline_entries(report), provenance).dump(2) + "\n"}};
     const auto used = write_report(o.common.out, o.common.force, report, context);

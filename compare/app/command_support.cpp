@@ -29,7 +29,7 @@ void add_common(CLI::App* command, CommonOptions& o) {
     command->add_flag("--gr-thesis", o.measure.gr_thesis,
                       "also the thesis' single-particle RDF (eq. 3.7-3.10), column g_thesis");
     command->add_flag("--gr-container-space", o.measure.gr_container_space,
-                      "g(r) shells and density in the container up to the top sphere (DESIGN "
+                      "g(r) shells and density in the container up to the top sphere (the "
                       "5 literally) instead of the space of centres (container shrunk by d/2)");
     command->add_option("--q6-cutoff", o.measure.q6_cutoff,
                         "Q6 bonds join centres within this x (ri + rj) (default 1.2)");

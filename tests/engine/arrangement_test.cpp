@@ -32,7 +32,7 @@ BOOST_AUTO_TEST_CASE(names_round_trip_and_unknown_names_are_rejected) {
 
 BOOST_AUTO_TEST_CASE(grid_columns_match_the_thesis_tables) {
     // Table 6.2 (small dense) and Table 7.2 (large dense). The thesis' 300-particle large
-    // row reads 5x4; the rule floor(1.25/d) gives 5 (DESIGN §1).
+    // row reads 5x4; the rule floor(1.25/d) gives 5.
     const std::array<int, 8> small = {3, 4, 5, 6, 8, 9, 11, 13};
     const std::array<int, 8> large = {4, 5, 7, 8, 10, 11, 14, 16};
     for (std::size_t i = 0; i < kThesisCounts.size(); ++i) {

@@ -17,7 +17,7 @@ BOOST_AUTO_TEST_CASE(sizing_rule_fills_a_third_of_the_particles_into_the_control
         const double phi = (static_cast<double>(n) / 3.0) * std::numbers::pi / 6.0 * d * d * d;
         BOOST_TEST(phi == 0.63, boost::test_tools::tolerance(1e-14));
     }
-    // DESIGN §1: for N = 1002, d ≈ 0.1533.
+    // The thesis' 1002-particle runs: d ≈ 0.1533.
     BOOST_TEST(diameter_for_count(1002) == 0.1533, boost::test_tools::tolerance(1e-3));
     BOOST_CHECK_THROW(diameter_for_count(0), std::invalid_argument);
 }

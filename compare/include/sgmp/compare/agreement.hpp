@@ -1,6 +1,6 @@
 #pragma once
 /// @file agreement.hpp
-/// The agreement model (DESIGN §6), general over any number of labelled groups of packs.
+/// The agreement model, general over any number of labelled groups of packs.
 ///
 /// A comparison puts a candidate group against a reference group at one particle count.
 /// For each scalar metric: difference = mean_candidate − mean_reference, tolerance =

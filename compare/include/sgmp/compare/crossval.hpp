@@ -19,7 +19,7 @@
 
 namespace sgmp::compare {
 
-/// Metric keys of the headline (DESIGN §7).
+/// Metric keys of the headline (fixed names of the per-pack JSON).
 inline constexpr const char* kHeadlinePhi = "phi";
 inline constexpr const char* kHeadlineZ = "z_mean_tol_1e-2";
 

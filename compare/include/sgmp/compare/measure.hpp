@@ -1,7 +1,7 @@
 #pragma once
 /// @file measure.hpp
-/// All metrics of one pack in one region (DESIGN §5): packing fraction and its profile,
-/// overlaps, coordination at several tolerances, g(r) and Q6.
+/// All metrics of one pack in one region (definitions in compare/README.md): packing fraction and
+/// its profile, overlaps, coordination at several tolerances, g(r) and Q6.
 
 #include <optional>
 #include <string>
@@ -19,15 +19,16 @@ const std::vector<double>& coordination_tolerances();
 const std::vector<std::string>& coordination_tolerance_names();  // "0", "1e-6", ...
 
 struct MeasureOptions {
-    std::optional<Box> region;        // default: the control volume
-    double slab_thickness = 1.0;      // φ(y) slabs, units of d
-    double gr_bin_width = 0.02;       // units of d
-    double gr_range = 5.0;            // units of d
-    bool gr_thesis = false;           // also the thesis' single-particle RDF
-    bool gr_container_space = false;  // g(r) space: the container (DESIGN literal), not centres
-    double q6_cutoff = 1.2;           // Q6 bonds within this·(r_i + r_j)
-    double overlap_floor = 1e-9;      // overlaps deeper than this·d are counted
-    std::size_t worst_count = 10;     // worst overlaps listed
+    std::optional<Box> region;    // default: the control volume
+    double slab_thickness = 1.0;  // φ(y) slabs, units of d
+    double gr_bin_width = 0.02;   // units of d
+    double gr_range = 5.0;        // units of d
+    bool gr_thesis = false;       // also the thesis' single-particle RDF
+    bool gr_container_space =
+        false;  // g(r) space: the container up to the top sphere, not the centres' space
+    double q6_cutoff = 1.2;        // Q6 bonds within this·(r_i + r_j)
+    double overlap_floor = 1e-9;   // overlaps deeper than this·d are counted
+    std::size_t worst_count = 10;  // worst overlaps listed
 };
 
 /// Throws std::invalid_argument naming the option and the rule when an option is invalid.

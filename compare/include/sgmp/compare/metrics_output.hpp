@@ -1,7 +1,8 @@
 #pragma once
 /// @file metrics_output.hpp
-/// Per-pack outputs: the metrics JSON (DESIGN §7 keys, plus more) and the curve CSVs
-/// (g_r, phi_y, p_z), each with a header row after '#' provenance lines.
+/// Per-pack outputs: the metrics JSON (fixed keys: count, diameter, phi, overlaps, z_mean_tol_*,
+/// q6_*, region, plus more) and the curve CSVs (g_r, phi_y, p_z), each with a header row after '#'
+/// provenance lines.
 
 #include <nlohmann/json.hpp>
 #include <ostream>

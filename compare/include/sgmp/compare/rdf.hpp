@@ -31,7 +31,7 @@ namespace sgmp::compare {
 Box centre_space(const std::vector<Particle>& particles, const Container& container,
                  double mean_radius);
 
-/// DESIGN §5 read literally (option --gr-space container): the container up to the top of
+/// The literal reading (option --gr-container-space): the container up to the top of
 /// the highest sphere. Centres never come closer than r to a wall, so with this space g(r)
 /// settles above 1 by about |container| / |centre space|.
 Box container_space(const std::vector<Particle>& particles, const Container& container);

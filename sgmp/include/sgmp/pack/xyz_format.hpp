@@ -1,6 +1,6 @@
 #pragma once
 /// @file xyz_format.hpp
-/// Extended XYZ pack files (DESIGN §4), readable by OVITO and ASE:
+/// Extended XYZ pack files, readable by OVITO and ASE:
 ///
 ///     N
 ///     Properties=id:I:1:pos:R:3:radius:R:1:color:I:1 pbc="F F F" key=value key="a b" ...

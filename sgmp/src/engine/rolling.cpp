@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 namespace sgmp::engine {
 
@@ -159,6 +160,17 @@ RollResult roll_to_rest(const SettledGrid& grid, const Container& container, dou
     std::array<Sphere, 3> contacts{support, Sphere{}, Sphere{}};
     int count = 1;
     Vec3 p = start;
+    // The roll reached `hit` at p: the floor or a wall ends it, a sphere becomes a support.
+    const auto meet = [&](const Hit& hit) -> std::optional<RollResult> {
+        if (hit.kind == Kind::Floor) {
+            return RollResult{p, RollEnd::Floor};
+        }
+        if (hit.kind == Kind::Wall) {
+            return RollResult{p, RollEnd::Wall};
+        }
+        contacts[count++] = hit.ball;
+        return std::nullopt;
+    };
     const auto drop_contact = [&](int i) {
         for (int k = i; k + 1 < count; ++k)
             contacts[k] = contacts[k + 1];
@@ -195,12 +207,8 @@ RollResult roll_to_rest(const SettledGrid& grid, const Container& container, dou
             p = next;
             if (hit.phi > equator) {
                 count = 0;
-            } else if (hit.kind == Kind::Floor) {
-                return RollResult{p, RollEnd::Floor};
-            } else if (hit.kind == Kind::Wall) {
-                return RollResult{p, RollEnd::Wall};
-            } else {
-                contacts[count++] = hit.ball;
+            } else if (const auto end = meet(hit)) {
+                return *end;
             }
             continue;
         }
@@ -261,12 +269,8 @@ RollResult roll_to_rest(const SettledGrid& grid, const Container& container, dou
                 drop_contact(end_forces[0] < end_forces[1] ? 0 : 1);
             } else if (hit.phi > lowest) {
                 return RollResult{p, RollEnd::Stable};
-            } else if (hit.kind == Kind::Floor) {
-                return RollResult{p, RollEnd::Floor};
-            } else if (hit.kind == Kind::Wall) {
-                return RollResult{p, RollEnd::Wall};
-            } else {
-                contacts[count++] = hit.ball;
+            } else if (const auto end = meet(hit)) {
+                return *end;
             }
             continue;
         }

@@ -6,8 +6,6 @@
 #include <tuple>
 #include <vector>
 
-#include "sgmp/pack/sphere_box_volume.hpp"
-
 namespace sgmp::reference {
 namespace {
 
@@ -68,14 +66,6 @@ double max_wall_penetration(const Pack& pack, const Container& container) {
         worst = std::max(worst, container.penetration(p.center, p.radius));
     }
     return worst;
-}
-
-double packing_fraction(const Pack& pack, const Box& region) {
-    double solid = 0.0;
-    for (const auto& p : pack.particles) {
-        solid += sphere_box_volume(p.center, p.radius, region);
-    }
-    return solid / region.volume();
 }
 
 }  // namespace sgmp::reference

@@ -10,6 +10,7 @@
 
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/pack_file.hpp"
+#include "sgmp/pack/sphere_box_volume.hpp"
 #include "sgmp/pack/version.hpp"
 #include "sgmp/reference/child_process.hpp"
 #include "sgmp/reference/colours.hpp"

@@ -170,16 +170,6 @@ PackRequest to_request(const Options& o) {
     return request;
 }
 
-/// φ of the control volume: Σ exact sphere volume inside it / its volume.
-double control_volume_fraction(const Pack& pack) {
-    const Box box = control_volume();
-    double volume = 0.0;
-    for (const Particle& p : pack.particles) {
-        volume += sphere_box_volume(p.center, p.radius, box);
-    }
-    return volume / box.volume();
-}
-
 /// Progress on stderr once a run passes one second, only when stderr is a terminal.
 class Progress {
   public:
@@ -267,7 +257,7 @@ int run_pack(const Options& o) {
         "sgmp: packed %zu particles, %s, d=%.6g, %.3f s, phi(control volume)=%.4f, "
         "overlaps=%zu -> %s\n",
         pack.particles.size(), std::string(to_string(request.arrangement)).c_str(), d, seconds,
-        control_volume_fraction(pack), check.overlaps, o.out.c_str());
+        packing_fraction(pack, control_volume()), check.overlaps, o.out.c_str());
     return 0;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "sgmp/pack/sphere_box_volume.hpp"
 #include "sgmp/reference/colours.hpp"
 #include "sgmp/reference/pack_checks.hpp"
 

@@ -5,6 +5,7 @@
 #include "run_program.hpp"
 #include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/pack_file.hpp"
+#include "sgmp/pack/sphere_box_volume.hpp"
 #include "sgmp/reference/pack_checks.hpp"
 #include "sgmp/reference/pour.hpp"
 

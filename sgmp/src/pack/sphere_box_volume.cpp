@@ -138,6 +138,14 @@ double disk_rectangle_area(double rho, double y0, double y1, double z0, double z
     return std::clamp(area, 0.0, kPi * rho * rho);
 }
 
+double packing_fraction(const Pack& pack, const Box& region) {
+    double solid = 0.0;
+    for (const auto& p : pack.particles) {
+        solid += sphere_box_volume(p.center, p.radius, region);
+    }
+    return solid / region.volume();
+}
+
 double sphere_box_volume(const Vec3& center, double radius, const Box& box) {
     if (radius <= 0.0) {
         return 0.0;

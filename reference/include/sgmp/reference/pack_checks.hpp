@@ -19,7 +19,4 @@ OverlapSummary pair_overlaps(const Pack& pack);
 /// Largest distance by which a sphere crosses a wall or the floor (0 when none does).
 double max_wall_penetration(const Pack& pack, const Container& container);
 
-/// Packing fraction of `region`: Σ exact sphere volume inside / region volume.
-double packing_fraction(const Pack& pack, const Box& region);
-
 }  // namespace sgmp::reference

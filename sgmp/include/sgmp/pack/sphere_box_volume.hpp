@@ -11,12 +11,16 @@
 /// such end points to ~1e-15 relative. Spheres wholly inside or outside take no quadrature.
 
 #include "sgmp/pack/geometry.hpp"
+#include "sgmp/pack/pack.hpp"
 
 namespace sgmp {
 
 /// Volume of the ball |p - center| ≤ radius inside `box`. The box may be open (infinite
 /// bounds). Accurate to ~1e-13 relative to (4/3)πr³.
 double sphere_box_volume(const Vec3& center, double radius, const Box& box);
+
+/// Packing fraction of `region`: Σ sphere_box_volume(c_i, r_i, region) / |region|.
+double packing_fraction(const Pack& pack, const Box& region);
 
 /// Area of the disk of radius `rho` centred at the origin inside [y0, y1] × [z0, z1].
 double disk_rectangle_area(double rho, double y0, double y1, double z0, double z1);

@@ -31,6 +31,12 @@ void add_common(CLI::App* command, CommonOptions& o) {
     command->add_flag("--gr-container-space", o.measure.gr_container_space,
                       "g(r) shells and density in the container up to the top sphere (the "
                       "5 literally) instead of the space of centres (container shrunk by d/2)");
+    command
+        ->add_option("--gr-density", o.gr_density,
+                     "g(r)'s density: 'neighbours' (default; the density the origins see out to "
+                     "the range, so g -> 1 far from contact for any pack shape) or 'space' "
+                     "(N / volume of the g(r) space)")
+        ->check(CLI::IsMember({"neighbours", "space"}));
     command->add_option("--q6-cutoff", o.measure.q6_cutoff,
                         "Q6 bonds join centres within this x (ri + rj) (default 1.2)");
     command->add_option("--overlap-floor", o.measure.overlap_floor,
@@ -41,6 +47,7 @@ void add_common(CLI::App* command, CommonOptions& o) {
 }
 
 void apply(CommonOptions& o) {
+    o.measure.gr_density = o.gr_density == "space" ? RdfDensity::Space : RdfDensity::Neighbours;
     if (!o.region.empty()) {
         o.measure.region = Box{Vec3(o.region[0], o.region[2], o.region[4]),
                                Vec3(o.region[1], o.region[3], o.region[5])};

@@ -25,6 +25,7 @@ struct UsageError : std::runtime_error {
 struct CommonOptions {
     std::vector<double> region;
     MeasureOptions measure;
+    std::string gr_density = "neighbours";
     unsigned threads = 0;
     bool timings = false;
     bool force = false;

@@ -7,6 +7,7 @@
 #include "command_support.hpp"
 #include "sgmp/compare/baseline.hpp"
 #include "sgmp/compare/crossval.hpp"
+#include "sgmp/compare/crossval_render.hpp"
 #include "sgmp/compare/manifest.hpp"
 #include "sgmp/compare/metrics_output.hpp"
 #include "sgmp/compare/report_files.hpp"
@@ -48,7 +49,9 @@ nlohmann::ordered_json manifest_json(const std::vector<ManifestEntry>& manifest)
     nlohmann::ordered_json list = nlohmann::ordered_json::array();
     for (const auto& e : manifest) {
         list.push_back(
-            {{"role", e.role == Role::Candidate ? "candidate" : "reference"},
+            {{"role", e.role == Role::Candidate   ? "candidate"
+                      : e.role == Role::Reference ? "reference"
+                                                  : "variant"},
              {"group", e.group},
              {"count", e.count},
              {"seed", e.seed},
@@ -82,16 +85,14 @@ int run_crossval(CrossvalOptions& o, const std::string& command) {
     for (std::size_t g = 0; g < plan.labels.size(); ++g) {
         groups.push_back(measure_group(plan.labels[g], plan.paths[g], o.common));
     }
-    const Report report = build_report(std::move(groups), plan.comparisons);
+    const Report report = build_report(std::move(groups), plan.plan);
     const CrossValidation cv = cross_validate(report, manifest, thesis);
 
-    nlohmann::ordered_json provenance{{"tool", "sgmp-compare crossval"},
-                                      {"version", sgmp::version()},
-                                      {"command", command},
-                                      {"manifest", o.manifest},
-                                      {"thesis", o.thesis},
-                                      {"thesis_start", o.thesis_start},
-                                      {"parameters", cli::measure_parameters(o.common)}};
+    nlohmann::ordered_json provenance{
+        {"schema_version", kSchemaVersion}, {"tool", "sgmp-compare crossval"},
+        {"version", sgmp::version()},       {"command", command},
+        {"manifest", o.manifest},           {"thesis", o.thesis},
+        {"thesis_start", o.thesis_start},   {"parameters", cli::measure_parameters(o.common)}};
     ReportContext context;
     context.title = "SGMP against DEM: cross-validation report";
     context.command = command;
@@ -102,9 +103,7 @@ int run_crossval(CrossvalOptions& o, const std::string& command) {
     crossval["provenance"] = provenance;
     crossval["packs"] = manifest_json(manifest);
     context.extra_files = {
-        {"headline.csv", "# tool: sgmp-compare " + std::string(sgmp::version()) +
-                             "\n# command: " + command + "\n# rule: " + rule_statements().front() +
-                             "\n" + render_headline_csv(cv)},
+        {"headline.csv", render_headline_csv(cv, command)},
         {"crossval.json", crossval.dump(2) + "\n"},
         {"baseline.json", baseline_json(baseline_entries(report), provenance).dump(2) + "\n"}};
     const auto used = write_report(o.common.out, o.common.force, report, context);

@@ -85,7 +85,9 @@ int run_report(const std::vector<std::string>& a, const std::vector<std::string>
     }
     apply(o);
     std::vector<Group> groups{measure_group(label_a, a, o), measure_group(label_b, b, o)};
-    const Report report = build_report(std::move(groups), {{0, 1}});
+    ReportPlan plan;
+    plan.comparisons = {{0, 1}};
+    const Report report = build_report(std::move(groups), plan);
     ReportContext context;
     context.command = cmd;
     context.parameters = measure_parameters(o);

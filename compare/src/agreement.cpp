@@ -2,21 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <set>
 #include <stdexcept>
 
+#include "sgmp/compare/group_curves.hpp"
 #include "sgmp/compare/statistics.hpp"
 
 namespace sgmp::compare {
 namespace {
-
-/// L2 distance of the candidate's mean g(r) from the reference's, and the mean distance
-/// between pairs of reference replicates (0 with fewer than two).
-struct GrDistances {
-    double distance = 0.0;
-    double replicate = 0.0;
-};
 
 std::vector<const PackSummary*> packs_of(const Group& g, std::size_t count) {
     std::vector<const PackSummary*> result;
@@ -28,12 +21,12 @@ std::vector<const PackSummary*> packs_of(const Group& g, std::size_t count) {
     return result;
 }
 
-std::vector<double> column(const std::vector<const PackSummary*>& packs, std::size_t metric) {
-    std::vector<double> values;
-    for (const auto* p : packs) {
-        values.push_back(p->scalars[metric]);
+std::set<std::size_t> counts_of(const Group& g) {
+    std::set<std::size_t> counts;
+    for (const auto& p : g.packs) {
+        counts.insert(p.count);
     }
-    return values;
+    return counts;
 }
 
 void check_same_bins(const std::vector<const PackSummary*>& packs) {
@@ -47,66 +40,146 @@ void check_same_bins(const std::vector<const PackSummary*>& packs) {
     }
 }
 
-GroupCurves curves_of(const std::vector<const PackSummary*>& packs) {
-    GroupCurves c;
-    std::vector<std::vector<double>> gr;
-    std::vector<std::vector<double>> z;
-    for (const auto* p : packs) {
-        gr.push_back(p->gr);
-        z.push_back(p->z_mean);
+/// The curve a rule judges, as the values of one pack.
+std::vector<double> curve_values(const MetricRule& rule, const PackSummary& p) {
+    if (rule.name == "g_r") {
+        return p.gr;
     }
-    c.gr_r = packs.front()->gr_r;
-    c.gr = mean_curve(gr);
-    c.z_mean = mean_curve(z);
-    const std::size_t tolerances = packs.front()->p_z.size();
-    for (std::size_t t = 0; t < tolerances; ++t) {
-        std::size_t longest = 0;
-        for (const auto* p : packs) {
-            longest = std::max(longest, p->p_z[t].size());
-        }
-        std::vector<std::vector<double>> pz;
-        for (const auto* p : packs) {
-            auto padded = p->p_z[t];
-            padded.resize(longest, 0.0);
-            pz.push_back(std::move(padded));
-        }
-        c.p_z.push_back(mean_curve(pz));
-    }
-    // φ(y): slabs share y0 and thickness for packs of one count (the grid starts at the
-    // floor); tops differ, so each slab is averaged over the packs that reach it.
-    bool same_grid = true;
-    std::size_t longest = 0;
-    for (const auto* p : packs) {
-        const auto& y = p->phi_y_mid;
-        const auto& y0 = packs.front()->phi_y_mid;
-        same_grid = same_grid && !y.empty() && !y0.empty() && y[0] == y0[0] &&
-                    (y.size() < 2 || y0.size() < 2 || y[1] == y0[1]);
-        if (y.size() > longest) {
-            longest = y.size();
-            c.phi_y_mid = y;
-        }
-    }
-    if (same_grid) {
-        c.phi_y.assign(longest, 0.0);
-        std::vector<int> reached(longest, 0);
-        for (const auto* p : packs) {
-            for (std::size_t k = 0; k < p->phi_y.size(); ++k) {
-                c.phi_y[k] += p->phi_y[k];
-                ++reached[k];
-            }
-        }
-        for (std::size_t k = 0; k < longest; ++k) {
-            c.phi_y[k] /= reached[k];
-        }
-    } else {
-        c.phi_y_mid = packs.front()->phi_y_mid;
-        c.phi_y = packs.front()->phi_y;
-        c.phi_y_note = "slab grids differ between packs; the first pack's profile is shown";
-    }
-    return c;
+    const auto& names = coordination_tolerance_names();
+    const auto it = std::find(names.begin(), names.end(), rule.name.substr(8));  // after "p_z_tol_"
+    return p.p_z.at(static_cast<std::size_t>(it - names.begin()));
 }
 
-Comparison compare_at(const Group& candidate, const Group& reference, std::size_t count) {
+std::vector<double> mean_values(const MetricRule& rule,
+                                const std::vector<const PackSummary*>& packs) {
+    std::vector<std::vector<double>> curves;
+    std::size_t longest = 0;
+    for (const auto* p : packs) {
+        curves.push_back(curve_values(rule, *p));
+        longest = std::max(longest, curves.back().size());
+    }
+    for (auto& c : curves) {
+        c.resize(longest, 0.0);  // P(Z) of different widths
+    }
+    return mean_curve(curves);
+}
+
+double distance_between(const MetricRule& rule, const PackSummary& axis, std::vector<double> a,
+                        std::vector<double> b) {
+    if (rule.name == "g_r") {
+        return l2_distance(axis.gr_r, a, b, axis.gr_bin_width, kGrCompareFrom, kGrCompareTo);
+    }
+    const std::size_t n = std::max(a.size(), b.size());
+    a.resize(n, 0.0);
+    b.resize(n, 0.0);
+    double sum = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+        sum += std::abs(a[k] - b[k]);
+    }
+    return 0.5 * sum;
+}
+
+double mean_replicate_distance(const MetricRule& rule,
+                               const std::vector<const PackSummary*>& packs) {
+    double sum = 0.0;
+    std::size_t pairs = 0;
+    for (std::size_t i = 0; i < packs.size(); ++i) {
+        for (std::size_t j = i + 1; j < packs.size(); ++j) {
+            sum += curve_distance(rule, *packs[i], *packs[j]);
+            ++pairs;
+        }
+    }
+    return pairs > 0 ? sum / static_cast<double>(pairs) : 0.0;
+}
+
+std::vector<double> scalar_column(const MetricRule& rule,
+                                  const std::vector<const PackSummary*>& packs) {
+    std::vector<double> values;
+    for (const auto* p : packs) {
+        values.push_back(p->scalar(rule.name));
+    }
+    return values;
+}
+
+void decide(MetricRow& row, const MetricRule& rule) {
+    if (!rule.judged) {
+        row.verdict = Verdict::Info;
+    } else if (!row.ratio) {
+        row.verdict = Verdict::Inconclusive;
+    } else {
+        row.verdict = *row.ratio <= 1.0 ? Verdict::Agree : Verdict::Differ;
+    }
+}
+
+MetricRow judge_scalar(const MetricRule& rule, const std::vector<const PackSummary*>& a,
+                       const std::vector<const PackSummary*>& b, double model) {
+    MetricRow row;
+    const auto av = scalar_column(rule, a);
+    const auto bv = scalar_column(rule, b);
+    row.candidate_mean = mean(av);
+    row.candidate_sd = sample_sd(av);
+    row.reference_mean = mean(bv);
+    row.reference_sd = sample_sd(bv);
+    row.difference = row.candidate_mean - row.reference_mean;
+    row.seed_spread = b.size() >= 2 ? 2.0 * row.reference_sd : 0.0;
+    row.model_spread = model;
+    const double spread = std::hypot(row.seed_spread, model);
+    row.tolerance = std::max(spread, rule.floor);
+    row.tolerance_rule = spread < rule.floor ? "floor" : (model > 0.0 ? "seed+model" : "seed");
+    if (row.tolerance > 0.0) {
+        row.ratio = std::abs(row.difference) / row.tolerance;
+    } else {
+        row.ratio = row.difference == 0.0 ? 0.0 : 1e300;
+    }
+    return row;
+}
+
+MetricRow judge_curve(const MetricRule& rule, const std::vector<const PackSummary*>& a,
+                      const std::vector<const PackSummary*>& b, double model_relative) {
+    MetricRow row;
+    row.difference = distance_between(rule, *b.front(), mean_values(rule, a), mean_values(rule, b));
+    row.tolerance_rule = model_relative > 0.0 ? "seed+model" : "seed";
+    if (b.size() >= 2) {
+        row.seed_spread = mean_replicate_distance(rule, b);
+        row.model_spread = model_relative * row.seed_spread;
+        row.tolerance = std::hypot(row.seed_spread, row.model_spread);
+        if (row.tolerance > 0.0) {
+            row.ratio = row.difference / row.tolerance;
+        }
+    }
+    return row;
+}
+
+/// Model spread of every metric for a reference group and its variant (see the header).
+std::vector<double> model_spreads(const Group& reference, const Group& variant) {
+    const auto& rules = metric_rules();
+    std::vector<double> sum(rules.size(), 0.0);
+    std::size_t counts = 0;
+    const auto variant_counts = counts_of(variant);
+    for (const std::size_t n : counts_of(reference)) {
+        if (variant_counts.count(n) == 0) {
+            continue;
+        }
+        const auto r = packs_of(reference, n);
+        const auto v = packs_of(variant, n);
+        ++counts;
+        for (std::size_t m = 0; m < rules.size(); ++m) {
+            const MetricRow row = judge(rules[m], v, r, 0.0);
+            const double offset =
+                rules[m].kind == MetricKind::Scalar
+                    ? row.difference
+                    : (row.seed_spread > 0.0 ? row.difference / row.seed_spread : 0.0);
+            sum[m] += offset * offset;
+        }
+    }
+    for (auto& s : sum) {
+        s = counts > 0 ? std::sqrt(s / static_cast<double>(counts)) : 0.0;
+    }
+    return sum;
+}
+
+Comparison compare_at(const Group& candidate, const Group& reference, const Group* variant,
+                      const std::vector<double>& model, std::size_t count) {
     const auto a = packs_of(candidate, count);
     const auto b = packs_of(reference, count);
     auto all = a;
@@ -119,95 +192,149 @@ Comparison compare_at(const Group& candidate, const Group& reference, std::size_
     c.count = count;
     c.candidate_packs = a.size();
     c.reference_packs = b.size();
+    c.variant_packs = variant != nullptr ? packs_of(*variant, count).size() : 0;
     const auto& rules = metric_rules();
     for (std::size_t m = 0; m < rules.size(); ++m) {
-        MetricRow row;
-        row.name = rules[m].name;
-        row.unit = rules[m].unit;
-        const auto av = column(a, m);
-        const auto bv = column(b, m);
-        row.candidate_mean = mean(av);
-        row.candidate_sd = sample_sd(av);
-        row.reference_mean = mean(bv);
-        row.reference_sd = sample_sd(bv);
-        row.difference = row.candidate_mean - row.reference_mean;
-        const double spread = b.size() >= 2 ? 2.0 * row.reference_sd : 0.0;
-        row.tolerance = std::max(spread, rules[m].floor);
-        row.tolerance_rule = spread >= rules[m].floor ? "2 sd" : "floor";
-        row.agree = std::abs(row.difference) <= row.tolerance;
-        c.rows.push_back(row);
+        c.rows.push_back(judge(rules[m], a, b, model.empty() ? 0.0 : model[m]));
     }
-
     c.candidate_curves = curves_of(a);
     c.reference_curves = curves_of(b);
-    const double width = b.front()->gr_bin_width;
-    const auto& x = c.reference_curves.gr_r;
-    const auto distances = [&](double from) {
-        GrDistances result;
-        result.distance =
-            l2_distance(x, c.candidate_curves.gr, c.reference_curves.gr, width, from, kGrCompareTo);
-        if (b.size() < 2) {
-            return result;
+    return c;
+}
+
+/// Marks rows inconclusive where the reference classes cannot be told apart (see header).
+void apply_power(Report& report, const std::vector<std::vector<double>>& model_by_group) {
+    const auto& classes = report.plan.classes;
+    if (classes.size() < 2) {
+        return;
+    }
+    const auto& rules = metric_rules();
+    for (auto& c : report.comparisons) {
+        const auto self = std::find_if(classes.begin(), classes.end(), [&](std::size_t g) {
+            return report.groups[g].label == c.reference;
+        });
+        if (self == classes.end()) {
+            continue;
         }
-        double sum = 0.0;
-        std::size_t pairs = 0;
-        for (std::size_t i = 0; i < b.size(); ++i) {
-            for (std::size_t j = i + 1; j < b.size(); ++j) {
-                sum += l2_distance(x, b[i]->gr, b[j]->gr, width, from, kGrCompareTo);
-                ++pairs;
+        const auto reference = packs_of(report.groups[*self], c.count);
+        for (std::size_t m = 0; m < rules.size(); ++m) {
+            bool told_apart = true;
+            for (const std::size_t other : classes) {
+                if (other == *self) {
+                    continue;
+                }
+                const auto others = packs_of(report.groups[other], c.count);
+                if (others.empty()) {
+                    continue;
+                }
+                const auto& model = model_by_group[*self];
+                const MetricRow row =
+                    judge(rules[m], others, reference, model.empty() ? 0.0 : model[m]);
+                told_apart = told_apart && row.verdict == Verdict::Differ;
+            }
+            MetricRow& row = c.rows[m];
+            row.power = told_apart;
+            if (!told_apart && row.verdict != Verdict::Info) {
+                row.verdict = Verdict::Inconclusive;
             }
         }
-        result.replicate = sum / static_cast<double>(pairs);
-        return result;
-    };
-    const GrDistances whole = distances(kGrCompareFrom);
-    c.gr_distance = whole.distance;
-    c.gr_replicate_distance = whole.replicate;
-    if (b.size() >= 2) {
-        if (whole.replicate > 0.0) {
-            c.gr_ratio = whole.distance / whole.replicate;
-            c.gr_ratio_defined = true;
-            c.gr_agree = c.gr_ratio <= 1.0;
-        } else {
-            // Identical reference replicates: only an identical candidate agrees.
-            c.gr_ratio_defined = false;
-            c.gr_agree = c.gr_distance == 0.0;
-        }
-        const GrDistances beyond = distances(kGrBeyondContactFrom);
-        if (beyond.replicate > 0.0) {
-            c.gr_beyond_contact_ratio = beyond.distance / beyond.replicate;
-        }
     }
-    return c;
 }
 
 }  // namespace
 
+std::string_view to_string(Verdict verdict) {
+    switch (verdict) {
+        case Verdict::Agree:
+            return "agree";
+        case Verdict::Differ:
+            return "differ";
+        case Verdict::Inconclusive:
+            return "inconclusive";
+        case Verdict::Info:
+            return "info";
+    }
+    return "info";
+}
+
 const std::vector<MetricRule>& metric_rules() {
+    using K = MetricKind;
     static const std::vector<MetricRule> rules{
-        {"phi", "ratio", 0.005},
-        {"z_mean_tol_0", "contacts/particle", 0.1},
-        {"z_mean_tol_1e-6", "contacts/particle", 0.1},
-        {"z_mean_tol_1e-3", "contacts/particle", 0.1},
-        {"z_mean_tol_1e-2", "contacts/particle", 0.1},
-        {"z_mean_tol_2e-2", "contacts/particle", 0.1},
-        {"z_mean_tol_5e-2", "contacts/particle", 0.1},
-        {"q6_global", "dimensionless", 0.01},
-        {"q6_local_mean", "dimensionless", 0.01},
-        {"overlaps", "pairs", 1.0},
-        {"overlap_max_over_d", "d", 1e-3},
-        {"overlap_mean_over_d", "d", 1e-3},
-        {"wall_overlaps", "particles", 1.0},
+        {"phi", "φ (control volume)", "ratio", K::Scalar, 0.005, true},
+        {"z_mean_tol_1e-6", "Z(δ = 10⁻⁶)", "contacts/particle", K::Scalar, 0.1, true},
+        {"z_mean_tol_1e-3", "Z(δ = 10⁻³)", "contacts/particle", K::Scalar, 0.1, true},
+        {"z_mean_tol_1e-2", "Z(δ = 10⁻²)", "contacts/particle", K::Scalar, 0.1, true},
+        {"z_mean_tol_2e-2", "Z(δ = 2·10⁻²)", "contacts/particle", K::Scalar, 0.1, true},
+        {"z_mean_tol_5e-2", "Z(δ = 5·10⁻²)", "contacts/particle", K::Scalar, 0.1, true},
+        {"split_ratio", "split ratio g(√3·d)/g(2·d)", "ratio", K::Scalar, 0.02, true},
+        {"q6_global", "Q6 (global)", "dimensionless", K::Scalar, 0.01, true},
+        {"q6_local_mean", "Q6 (local mean)", "dimensionless", K::Scalar, 0.01, true},
+        {"g_r", "g(r), r ≥ 1.1·d", "ratio", K::Curve, 0.0, true},
+        {"p_z_tol_1e-3", "P(Z) at δ = 10⁻³", "ratio", K::Curve, 0.0, true},
+        {"p_z_tol_1e-2", "P(Z) at δ = 10⁻²", "ratio", K::Curve, 0.0, true},
+        // Information: soft DEM contacts overlap by construction, hard SGMP spheres never.
+        {"z_mean_tol_0", "Z(δ = 0)", "contacts/particle", K::Scalar, 0.1, false},
+        {"overlaps", "overlapping pairs", "pairs", K::Scalar, 1.0, false},
+        {"overlap_max_over_d", "deepest overlap", "d", K::Scalar, 1e-3, false},
+        {"overlap_mean_over_d", "mean overlap", "d", K::Scalar, 1e-3, false},
+        {"wall_overlaps", "wall overlaps", "particles", K::Scalar, 1.0, false},
     };
     return rules;
 }
 
-std::size_t Comparison::disagreements() const {
-    std::size_t n = 0;
-    for (const auto& row : rows) {
-        n += row.agree ? 0 : 1;
+const MetricRule& metric_rule(const std::string& name) {
+    for (const auto& rule : metric_rules()) {
+        if (rule.name == name) {
+            return rule;
+        }
     }
-    return n + ((gr_ratio_defined || reference_packs >= 2) && !gr_agree ? 1 : 0);
+    throw std::logic_error("no metric rule named " + name);
+}
+
+double PackSummary::scalar(const std::string& name) const {
+    const auto& rules = metric_rules();
+    std::size_t k = 0;
+    for (const auto& rule : rules) {
+        if (rule.kind != MetricKind::Scalar) {
+            continue;
+        }
+        if (rule.name == name) {
+            return scalars.at(k);
+        }
+        ++k;
+    }
+    throw std::logic_error("no scalar metric named " + name);
+}
+
+const MetricRow& Comparison::row(const std::string& name) const {
+    for (const auto& r : rows) {
+        if (r.name == name) {
+            return r;
+        }
+    }
+    throw std::logic_error("comparison lacks metric " + name);
+}
+
+std::size_t Comparison::count_of(Verdict verdict) const {
+    return static_cast<std::size_t>(std::count_if(
+        rows.begin(), rows.end(), [&](const MetricRow& r) { return r.verdict == verdict; }));
+}
+
+double curve_distance(const MetricRule& rule, const PackSummary& a, const PackSummary& b) {
+    return distance_between(rule, a, curve_values(rule, a), curve_values(rule, b));
+}
+
+MetricRow judge(const MetricRule& rule, const std::vector<const PackSummary*>& candidate,
+                const std::vector<const PackSummary*>& reference, double model_spread) {
+    MetricRow row = rule.kind == MetricKind::Scalar
+                        ? judge_scalar(rule, candidate, reference, model_spread)
+                        : judge_curve(rule, candidate, reference, model_spread);
+    row.name = rule.name;
+    row.label = rule.label;
+    row.unit = rule.unit;
+    row.kind = rule.kind;
+    decide(row, rule);
+    return row;
 }
 
 PackSummary summarise(const std::string& source, const Pack& pack, const Measurement& m) {
@@ -217,14 +344,19 @@ PackSummary summarise(const std::string& source, const Pack& pack, const Measure
     s.count = m.count;
     s.diameter = m.mean_diameter;
     const auto& c = m.local.coordination;
+    const auto& names = coordination_tolerance_names();
     for (const auto& rule : metric_rules()) {
+        if (rule.kind != MetricKind::Scalar) {
+            continue;
+        }
         double v = 0.0;
         if (rule.name == "phi") {
             v = m.phi;
         } else if (rule.name.rfind("z_mean_tol_", 0) == 0) {
-            const auto& names = coordination_tolerance_names();
             const auto it = std::find(names.begin(), names.end(), rule.name.substr(11));
             v = c.z_mean[static_cast<std::size_t>(it - names.begin())];
+        } else if (rule.name == "split_ratio") {
+            v = m.local.rdf.split_ratio;
         } else if (rule.name == "q6_global") {
             v = m.local.bond_order.q6_global;
         } else if (rule.name == "q6_local_mean") {
@@ -252,27 +384,36 @@ PackSummary summarise(const std::string& source, const Pack& pack, const Measure
     return s;
 }
 
-Report build_report(std::vector<Group> groups,
-                    const std::vector<std::pair<std::size_t, std::size_t>>& comparisons) {
+Report build_report(std::vector<Group> groups, ReportPlan plan) {
     Report report;
     report.groups = std::move(groups);
-    for (const auto& [ci, ri] : comparisons) {
-        if (ci >= report.groups.size() || ri >= report.groups.size()) {
+    report.plan = std::move(plan);
+    const auto valid = [&](std::size_t g) { return g < report.groups.size(); };
+    for (const auto& [ci, ri] : report.plan.comparisons) {
+        if (!valid(ci) || !valid(ri)) {
             throw std::invalid_argument("comparison names a group that does not exist");
         }
+    }
+    for (const auto& [ri, vi] : report.plan.variants) {
+        if (!valid(ri) || !valid(vi)) {
+            throw std::invalid_argument("variant names a group that does not exist");
+        }
+    }
+    std::vector<std::vector<double>> model(report.groups.size());
+    for (const auto& [ri, vi] : report.plan.variants) {
+        model[ri] = model_spreads(report.groups[ri], report.groups[vi]);
+    }
+    for (const auto& [ci, ri] : report.plan.comparisons) {
         const Group& cand = report.groups[ci];
         const Group& ref = report.groups[ri];
-        std::set<std::size_t> cand_counts;
-        std::set<std::size_t> ref_counts;
-        for (const auto& p : cand.packs) {
-            cand_counts.insert(p.count);
-        }
-        for (const auto& p : ref.packs) {
-            ref_counts.insert(p.count);
-        }
+        const auto variant = report.plan.variants.find(ri);
+        const Group* variant_group =
+            variant == report.plan.variants.end() ? nullptr : &report.groups[variant->second];
+        const auto cand_counts = counts_of(cand);
+        const auto ref_counts = counts_of(ref);
         for (const std::size_t n : cand_counts) {
             if (ref_counts.count(n) != 0) {
-                report.comparisons.push_back(compare_at(cand, ref, n));
+                report.comparisons.push_back(compare_at(cand, ref, variant_group, model[ri], n));
             } else {
                 report.notes.push_back(cand.label + " has packs of " + std::to_string(n) +
                                        " particles, " + ref.label + " has none: not compared");
@@ -285,6 +426,7 @@ Report build_report(std::vector<Group> groups,
             }
         }
     }
+    apply_power(report, model);
     return report;
 }
 

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "sgmp/compare/metrics_output.hpp"
 #include "sgmp/pack/input_error.hpp"
 
 namespace sgmp::compare {
@@ -30,11 +31,15 @@ std::vector<BaselineEntry> baseline_entries(const Report& report) {
     std::vector<Key> order;
     for (const auto& c : report.comparisons) {
         for (const auto& row : c.rows) {
+            if (row.kind != MetricKind::Scalar) {
+                continue;  // curves are judged by distance, not by a value to keep
+            }
             const Key key{c.candidate, c.count, row.name};
-            const std::string source = row.tolerance_rule == "floor"
-                                           ? "floor"
-                                           : "2 sd of " + c.reference + " (" +
-                                                 std::to_string(c.reference_packs) + " packs)";
+            const std::string source =
+                row.tolerance_rule == "floor"
+                    ? "floor"
+                    : "2 sd of " + c.reference + " (" + std::to_string(c.reference_packs) +
+                          " packs)" + (row.model_spread > 0.0 ? " and its model spread" : "");
             auto found = entries.find(key);
             if (found == entries.end()) {
                 order.push_back(key);
@@ -65,11 +70,12 @@ nlohmann::ordered_json baseline_json(const std::vector<BaselineEntry>& entries,
                         {"tolerance", e.tolerance},
                         {"tolerance_source", e.tolerance_source}});
     }
-    return {{"provenance", provenance},
+    return {{"schema_version", kSchemaVersion},
+            {"provenance", provenance},
             {"rule",
              "value: the candidate group's mean over its seeds; tolerance: the smallest over "
-             "reference groups of max(2 sd of the reference's seeds, floor of the metric); a "
-             "later run passes when |current - value| <= tolerance"},
+             "reference groups of max(sqrt((2 sd of the reference's seeds)^2 + model spread^2), "
+             "floor of the metric); a later run passes when |current - value| <= tolerance"},
             {"entries", list}};
 }
 

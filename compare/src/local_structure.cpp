@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "sgmp/compare/ball_cut.hpp"
 #include "sgmp/compare/parallel.hpp"
 #include "sgmp/compare/spatial_order.hpp"
 
@@ -23,6 +24,8 @@ struct Partial {
     std::vector<double> shell_volume;
     std::int64_t full_shell_origins = 0;
     std::int64_t corrected_origins = 0;
+    std::int64_t split_pairs[2] = {0, 0};
+    double split_volume[2] = {0.0, 0.0};  // of corrected origins
     BondSums global;
     double q6_local_sum = 0.0;
     std::int64_t origins_with_bonds = 0;
@@ -48,6 +51,10 @@ struct Partial {
         }
         full_shell_origins += o.full_shell_origins;
         corrected_origins += o.corrected_origins;
+        for (int w = 0; w < 2; ++w) {
+            split_pairs[w] += o.split_pairs[w];
+            split_volume[w] += o.split_volume[w];
+        }
         global.add(o.global);
         q6_local_sum += o.q6_local_sum;
         origins_with_bonds += o.origins_with_bonds;
@@ -61,6 +68,39 @@ std::array<double, 5> wall_gaps(const Particle& p, const Container& c) {
             c.z_max - x.z() - p.radius, x.y() - c.floor - p.radius};
 }
 
+/// The split-ratio windows [centre ∓ half-width]·d, as absolute radii.
+struct SplitWindows {
+    double lo[2];
+    double hi[2];
+    bool inside_range;  // both windows lie within the g(r) range
+
+    SplitWindows(double d, double outer) {
+        const double centres[2] = {kSplitLow, kSplitHigh};
+        for (int w = 0; w < 2; ++w) {
+            lo[w] = (centres[w] - kSplitWindowHalfWidth) * d;
+            hi[w] = (centres[w] + kSplitWindowHalfWidth) * d;
+        }
+        inside_range = hi[1] <= outer;
+    }
+
+    void count(double distance, std::int64_t* pairs) const {
+        for (int w = 0; w < 2; ++w) {
+            pairs[w] += (distance >= lo[w] && distance <= hi[w]) ? 1 : 0;
+        }
+    }
+
+    void add_volumes(const Vec3& center, const Box& space, double* volume) const {
+        for (int w = 0; w < 2; ++w) {
+            volume[w] +=
+                ball_box_volume(center, hi[w], space) - ball_box_volume(center, lo[w], space);
+        }
+    }
+
+    [[nodiscard]] double full_volume(int w) const {
+        return (4.0 * std::numbers::pi / 3.0) * (hi[w] * hi[w] * hi[w] - lo[w] * lo[w] * lo[w]);
+    }
+};
+
 }  // namespace
 
 LocalStructure measure_local_structure(const std::vector<Particle>& particles,
@@ -70,7 +110,8 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
     const std::size_t tolerances = options.tolerances.size();
     const double d = options.mean_diameter;
     const double width = options.bin_width_over_d * d;
-    const double outer = width * static_cast<double>(options.bins);
+    const double outer = bin_outer(options.bins - 1, width);
+    const SplitWindows split(d, outer);
     double max_radius = 0.0;
     for (const Particle& p : particles) {
         max_radius = std::max(max_radius, p.radius);
@@ -129,10 +170,11 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
                     for (std::size_t q = 0; q < m; ++q) {
                         const std::size_t k = near[q];
                         const double distance = std::sqrt(squared[k]);
-                        const auto bin = static_cast<std::size_t>(distance * per_width);
+                        const auto bin = bin_of(distance, per_width);
                         if (bin < options.bins) {
                             ++part.pairs[bin];
                         }
+                        split.count(distance, part.split_pairs);
                         const double rb = candidates.r[k];
                         const double gap = distance - a.radius - rb;
                         if (gap <= max_threshold) {
@@ -160,6 +202,9 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
                         ++part.corrected_origins;
                         add_shell_volumes(a.center, width, options.bins, options.space,
                                           part.shell_volume);
+                        if (split.inside_range) {
+                            split.add_volumes(a.center, options.space, part.split_volume);
+                        }
                     }
                     if (bonds.bonds > 0) {
                         part.global.add(bonds);
@@ -200,15 +245,22 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
     rdf.shell_volume = total.shell_volume;
     const auto full = static_cast<double>(total.full_shell_origins);
     for (std::size_t k = 0; k < options.bins; ++k) {
-        const double r0 = static_cast<double>(k) * width;
-        const double r1 = static_cast<double>(k + 1) * width;
+        const double r0 = bin_inner(k, width);
+        const double r1 = bin_outer(k, width);
         rdf.shell_volume[k] +=
             full * (4.0 * std::numbers::pi / 3.0) * (r1 * r1 * r1 - r0 * r0 * r0);
     }
     rdf.origins = n;
     rdf.corrected_origins = total.corrected_origins;
     rdf.space = options.space;
-    rdf.density = static_cast<double>(particles.size()) / options.space.volume();
+    rdf.density_rule = options.density_rule;
+    rdf.space_density = static_cast<double>(particles.size()) / options.space.volume();
+    if (split.inside_range) {
+        for (int w = 0; w < 2; ++w) {
+            rdf.split_pairs[w] = total.split_pairs[w];
+            rdf.split_volume[w] = total.split_volume[w] + full * split.full_volume(w);
+        }
+    }
     normalise(rdf);
 
     BondOrder& q = result.bond_order;

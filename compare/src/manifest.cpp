@@ -46,9 +46,12 @@ std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& so
             entry.role = Role::Candidate;
         } else if (fields[0] == "reference") {
             entry.role = Role::Reference;
+        } else if (fields[0] == "variant") {
+            entry.role = Role::Variant;
         } else {
-            throw InputError(source, number,
-                             "role '" + fields[0] + "' must be 'candidate' or 'reference'");
+            throw InputError(
+                source, number,
+                "role '" + fields[0] + "' must be 'candidate', 'reference' or 'variant'");
         }
         entry.group = fields[1];
         if (entry.group.empty()) {

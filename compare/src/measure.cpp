@@ -163,7 +163,8 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     local.tolerances = coordination_tolerances();
     local.mean_diameter = d;
     local.bin_width_over_d = options.gr_bin_width;
-    local.bins = static_cast<std::size_t>(std::llround(options.gr_range / options.gr_bin_width));
+    local.bins = bins_for(options.gr_range / options.gr_bin_width);
+    local.density_rule = options.gr_density;
     local.q6_cutoff = options.q6_cutoff;
     local.space = options.gr_container_space ? container_space(particles, m.container)
                                              : centre_space(particles, m.container, 0.5 * d);

@@ -54,6 +54,7 @@ Json provenance(const std::string& input, const Pack& pack, const MeasureOptions
     parameters["gr_range_over_d"] = o.gr_range;
     parameters["gr_thesis"] = o.gr_thesis;
     parameters["gr_space"] = o.gr_container_space ? "container" : "centres";
+    parameters["gr_density"] = o.gr_density == RdfDensity::Space ? "space" : "neighbours";
     parameters["q6_cutoff"] = o.q6_cutoff;
     parameters["overlap_floor_over_d"] = o.overlap_floor;
     return Json{{"tool", "sgmp-compare"},
@@ -65,6 +66,7 @@ Json provenance(const std::string& input, const Pack& pack, const MeasureOptions
 
 Json metrics_json(const Measurement& m, const Json& prov) {
     Json j;
+    j["schema_version"] = kSchemaVersion;
     j["count"] = m.count;
     j["diameter"] = m.mean_diameter;
     j["phi"] = m.phi;
@@ -77,6 +79,7 @@ Json metrics_json(const Measurement& m, const Json& prov) {
     }
     j["q6_global"] = m.local.bond_order.q6_global;
     j["q6_local_mean"] = m.local.bond_order.q6_local_mean;
+    j["split_ratio"] = m.local.rdf.split_ratio;
     j["region"] = box_json(m.region);
     // Further detail.
     j["overlap_mean_over_d"] = m.overlaps.pairs.mean_over_d;
@@ -103,11 +106,16 @@ Json metrics_json(const Measurement& m, const Json& prov) {
          "mean number of particles j with |c_i-c_j| - r_i - r_j <= X*d, over centres i in the "
          "region (walls apart)"},
         {"wall_contacts_tol_X", "wall and floor contacts of centres in the region at gap <= X*d"},
+        {"split_ratio",
+         "g(sqrt(3) d) / g(2 d): mean g in the windows |r - sqrt(3) d| <= 0.05 d and |r - 2 d| "
+         "<= 0.05 d, each from its pair count over its edge-corrected window volume"},
         {"q6", "Steinhardt Q6, bonds |c_i-c_j| <= q6_cutoff*(r_i + r_j), origins in the region"},
         {"g_r",
          "origins: centres in the region; neighbours: all particles; shells counted inside the "
          "space (default: container shrunk by d/2 at walls and floor, up to the highest centre; "
-         "gr_space=container: the container up to the top sphere), density N/|space|"}};
+         "gr_space=container: the container up to the top sphere); bins centred on k*bin_width; "
+         "density (gr_density=neighbours) the pairs over the shell volume summed out to the "
+         "range, so g -> 1 far from contact; gr_density=space: N/|space|"}};
     j["overlaps_detail"] = Json{{"floor_over_d", m.overlaps.floor},
                                 {"pairs", overlap_json(m.overlaps.pairs)},
                                 {"walls", overlap_json(m.overlaps.walls)}};
@@ -117,12 +125,17 @@ Json metrics_json(const Measurement& m, const Json& prov) {
     }
     j["p_z"] = pz;
     const auto& rdf = m.local.rdf;
-    j["g_r_detail"] = Json{{"bin_width_over_d", rdf.bin_width_over_d},
-                           {"bins", rdf.g.size()},
-                           {"origins", rdf.origins},
-                           {"edge_corrected_origins", rdf.corrected_origins},
-                           {"density", rdf.density},
-                           {"space", box_json(rdf.space)}};
+    j["g_r_detail"] =
+        Json{{"bin_width_over_d", rdf.bin_width_over_d},
+             {"bins", rdf.g.size()},
+             {"origins", rdf.origins},
+             {"edge_corrected_origins", rdf.corrected_origins},
+             {"density", rdf.density},
+             {"density_rule", rdf.density_rule == RdfDensity::Space ? "space" : "neighbours"},
+             {"space_density", rdf.space_density},
+             {"split_pairs", {rdf.split_pairs[0], rdf.split_pairs[1]}},
+             {"split_volume", {rdf.split_volume[0], rdf.split_volume[1]}},
+             {"space", box_json(rdf.space)}};
     j["q6_detail"] = Json{{"cutoff", m.local.bond_order.cutoff},
                           {"origins_with_bonds", m.local.bond_order.origins_with_bonds}};
     if (m.thesis_rdf) {
@@ -145,21 +158,21 @@ void write_comment_header(std::ostream& out, const Json& prov) {
 }
 
 void write_g_r_csv(std::ostream& out, const Measurement& m, const Json& prov) {
-    write_comment_header(out, prov);
     const auto& rdf = m.local.rdf;
-    out << "# r_over_d: centre distance over the mean diameter d (also for polydisperse packs); "
-           "pairs: origin-neighbour pairs in the bin; shell_volume: summed edge-corrected shell "
-           "volume (length units cubed)\n";
     out << "r_over_d,r_lo_over_d,r_hi_over_d,g,pairs,shell_volume";
     if (m.thesis_rdf) {
         out << ",g_thesis";
     }
     out << '\n';
+    write_comment_header(out, prov);
+    out << "# r_over_d: bin centre, centre distance over the mean diameter d (also for "
+           "polydisperse packs); pairs: origin-neighbour pairs in the bin; shell_volume: summed "
+           "edge-corrected shell volume (length units cubed)\n";
     for (std::size_t k = 0; k < rdf.g.size(); ++k) {
         const double w = rdf.bin_width_over_d;
-        out << csv_number(rdf.r_over_d[k]) << ',' << csv_number(static_cast<double>(k) * w) << ','
-            << csv_number(static_cast<double>(k + 1) * w) << ',' << csv_number(rdf.g[k]) << ','
-            << rdf.pairs[k] << ',' << csv_number(rdf.shell_volume[k]);
+        out << csv_number(rdf.r_over_d[k]) << ',' << csv_number(bin_inner(k, w)) << ','
+            << csv_number(bin_outer(k, w)) << ',' << csv_number(rdf.g[k]) << ',' << rdf.pairs[k]
+            << ',' << csv_number(rdf.shell_volume[k]);
         if (m.thesis_rdf) {
             out << ',' << csv_number(m.thesis_rdf->g[k]);
         }
@@ -168,9 +181,9 @@ void write_g_r_csv(std::ostream& out, const Measurement& m, const Json& prov) {
 }
 
 void write_phi_y_csv(std::ostream& out, const Measurement& m, const Json& prov) {
-    write_comment_header(out, prov);
     const auto& p = m.phi_profile;
     out << "y_mid,y_lo,y_hi,phi\n";
+    write_comment_header(out, prov);
     for (std::size_t k = 0; k < p.phi.size(); ++k) {
         out << csv_number(0.5 * (p.y_lo[k] + p.y_hi[k])) << ',' << csv_number(p.y_lo[k]) << ','
             << csv_number(p.y_hi[k]) << ',' << csv_number(p.phi[k]) << '\n';
@@ -178,7 +191,6 @@ void write_phi_y_csv(std::ostream& out, const Measurement& m, const Json& prov) 
 }
 
 void write_p_z_csv(std::ostream& out, const Measurement& m, const Json& prov) {
-    write_comment_header(out, prov);
     const auto& c = m.local.coordination;
     const auto& names = coordination_tolerance_names();
     std::size_t rows = 0;
@@ -188,6 +200,7 @@ void write_p_z_csv(std::ostream& out, const Measurement& m, const Json& prov) {
         rows = std::max(rows, c.p_z[t].size());
     }
     out << '\n';
+    write_comment_header(out, prov);
     for (std::size_t z = 0; z < rows; ++z) {
         out << z;
         for (std::size_t t = 0; t < c.tolerances.size(); ++t) {

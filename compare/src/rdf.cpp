@@ -48,8 +48,7 @@ void add_shell_volumes(const Vec3& center, double width, std::size_t bins, const
                        std::vector<double>& out) {
     double inner = 0.0;
     for (std::size_t k = 0; k < bins; ++k) {
-        const double radius = static_cast<double>(k + 1) * width;
-        const double outer = ball_box_volume(center, radius, space);
+        const double outer = ball_box_volume(center, bin_outer(k, width), space);
         out[k] += outer - inner;
         inner = outer;
     }
@@ -57,13 +56,30 @@ void add_shell_volumes(const Vec3& center, double width, std::size_t bins, const
 
 void normalise(Rdf& rdf) {
     const std::size_t bins = rdf.pairs.size();
+    if (rdf.density_rule == RdfDensity::Space) {
+        rdf.density = rdf.space_density;
+    } else {
+        double pairs = 0.0;
+        double volume = 0.0;
+        for (std::size_t k = 0; k < bins; ++k) {
+            pairs += static_cast<double>(rdf.pairs[k]);
+            volume += rdf.shell_volume[k];
+        }
+        rdf.density = volume > 0.0 && pairs > 0.0 ? pairs / volume : rdf.space_density;
+    }
     rdf.r_over_d.resize(bins);
     rdf.g.resize(bins);
     for (std::size_t k = 0; k < bins; ++k) {
-        rdf.r_over_d[k] = (static_cast<double>(k) + 0.5) * rdf.bin_width_over_d;
+        rdf.r_over_d[k] = static_cast<double>(k) * rdf.bin_width_over_d;
         const double expected = rdf.density * rdf.shell_volume[k];
         rdf.g[k] = expected > 0.0 ? static_cast<double>(rdf.pairs[k]) / expected : 0.0;
     }
+    const auto window_g = [&](int w) {
+        const double expected = rdf.density * rdf.split_volume[w];
+        return expected > 0.0 ? static_cast<double>(rdf.split_pairs[w]) / expected : 0.0;
+    };
+    const double high = window_g(1);
+    rdf.split_ratio = high > 0.0 ? window_g(0) / high : 0.0;
 }
 
 ThesisRdf thesis_rdf(const std::vector<Particle>& particles, const Box& region, double phi,
@@ -95,16 +111,17 @@ ThesisRdf thesis_rdf(const std::vector<Particle>& particles, const Box& region, 
             continue;
         }
         const double r = (particles[j].center - particles[origin].center).norm();
-        const auto k = static_cast<std::size_t>(r / width);
+        const auto k = bin_of(r, 1.0 / width);
         if (k < bins) {
             ++counts[k];
         }
     }
     const auto n = static_cast<double>(result.region_count);
     for (std::size_t k = 0; k < bins; ++k) {
-        const double r = (static_cast<double>(k) + 0.5) * width;
-        const double shell = 4.0 * std::numbers::pi / 3.0 *
-                             (std::pow(r + 0.5 * width, 3) - std::pow(r - 0.5 * width, 3));
+        const double r = static_cast<double>(k) * width;
+        const double shell =
+            4.0 * std::numbers::pi / 3.0 *
+            (std::pow(r + 0.5 * width, 3) - std::pow(std::max(0.0, r - 0.5 * width), 3));
         result.g[k] = static_cast<double>(counts[k]) / n / (phi * shell);
     }
     return result;

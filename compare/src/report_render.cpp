@@ -1,52 +1,34 @@
 #include "sgmp/compare/report_render.hpp"
 
-#include "html_text.hpp"
-
 #include <cstdio>
 #include <sstream>
 
+#include "html_text.hpp"
+#include "sgmp/compare/csv_text.hpp"
+#include "sgmp/compare/metrics_output.hpp"
 #include "sgmp/pack/metadata.hpp"
 #include "sgmp/pack/version.hpp"
 
 namespace sgmp::compare {
 
 using detail::html_escape;
+
 namespace {
 
 using Json = nlohmann::ordered_json;
 
-/// Six significant digits for people; scripts read the exact values from JSON/CSV.
+/// Four significant digits for people; scripts read the exact values from JSON/CSV.
 std::string fixed(double v) {
     char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.6g", v);
+    std::snprintf(buffer, sizeof buffer, "%.4g", v);
     return buffer;
 }
 
-/// Units in words are appended; "ratio" and "dimensionless" are marked in parentheses.
-std::string unit_suffix(const std::string& unit) {
-    if (unit == "ratio" || unit == "dimensionless") {
-        return " (" + unit + ")";
+std::string mean_sd(const MetricRow& row, double mean, double sd) {
+    if (row.kind == MetricKind::Curve) {
+        return "—";
     }
-    return " " + unit;
-}
-
-std::string with_unit(double v, const std::string& unit) {
-    return fixed(v) + unit_suffix(unit);
-}
-
-std::string mean_sd(double mean, double sd, const std::string& unit) {
-    return fixed(mean) + " ± " + fixed(sd) + unit_suffix(unit);
-}
-
-std::string verdict(bool agree) {
-    return agree ? "agree" : "DISAGREE";
-}
-
-std::string gr_verdict(const Comparison& c) {
-    if (c.reference_packs < 2) {
-        return "n/a";
-    }
-    return verdict(c.gr_agree);
+    return fixed(mean) + " ± " + fixed(sd);
 }
 
 std::string title(const Comparison& c) {
@@ -70,107 +52,54 @@ std::string provenance_value(const PackSummary& p, const std::string& key) {
 }
 
 std::string summary_line(const Comparison& c) {
-    std::vector<std::string> agree;
-    std::vector<std::string> disagree;
-    for (const auto& row : c.rows) {
-        (row.agree ? agree : disagree).push_back(row.name);
-    }
-    if (c.reference_packs >= 2) {
-        (c.gr_agree ? agree : disagree).push_back("g(r)");
-    }
     std::string line = "- **" + title(c) + "** (" + std::to_string(c.candidate_packs) + " vs " +
                        std::to_string(c.reference_packs) + " packs): ";
-    if (disagree.empty()) {
-        line += c.candidate + " agrees with " + c.reference + " on every metric";
-    } else {
-        line += "disagrees on ";
-        for (std::size_t i = 0; i < disagree.size(); ++i) {
-            line += (i ? ", " : "") + disagree[i];
-        }
-        line += "; agrees on " + std::to_string(agree.size()) + " of " +
-                std::to_string(agree.size() + disagree.size());
-    }
-    if (c.reference_packs >= 2) {
-        line += " (g(r) distance ratio " + fixed(c.gr_ratio) + ", a ratio)";
-    } else {
-        line += " (one reference pack: tolerances are the floors, g(r) ratio n/a)";
-    }
-    return line;
-}
-
-}  // namespace
-
-std::vector<std::string> rule_statements() {
-    std::vector<std::string> rules{
-        "Scalar metric: difference = mean(candidate) - mean(reference); tolerance = max(2 x "
-        "sample sd of the reference packs (n - 1), floor of the metric); agree when "
-        "|difference| <= tolerance. With one reference pack the tolerance is the floor.",
-        "g(r): L2 distance sqrt(sum (g_a - g_b)^2 dr) between the mean curves over bin centres "
-        "in [0.8 d, 5 d], divided by the mean L2 distance between pairs of reference packs; "
-        "agree when the ratio <= 1 (needs two or more reference packs).",
-        "Lengths are in units of the mean diameter d. Coordination Z at tolerance X counts "
-        "neighbours with gap |ci - cj| - ri - rj <= X d, over centres in the region.",
-    };
-    std::string floors = "Tolerance floors:";
-    for (const auto& rule : metric_rules()) {
-        floors += " " + rule.name + " " + fixed(rule.floor) + unit_suffix(rule.unit) + ";";
-    }
-    rules.push_back(floors);
-    return rules;
-}
-
-std::string render_markdown(const Report& report, const ReportContext& context) {
-    std::ostringstream md;
-    md << "# " << context.title << "\n\n";
-    md << "Made by sgmp-compare " << sgmp::version() << ": `" << context.command << "`\n\n";
-    md << context.lead_markdown;
-    md << (context.lead_markdown.empty() ? "" : "\n") << "## Summary of every comparison\n\n";
-    if (report.comparisons.empty()) {
-        md << "- No particle count is present on both sides; nothing was compared.\n";
-    }
-    for (const auto& c : report.comparisons) {
-        md << summary_line(c) << "\n";
-    }
-    for (const auto& note : report.notes) {
-        md << "- " << note << "\n";
-    }
-    md << "\n## Rules\n\n";
-    for (const auto& rule : rule_statements()) {
-        md << "- " << rule << "\n";
-    }
-    for (const auto& c : report.comparisons) {
-        md << "\n## " << title(c) << "\n\n";
-        md << "Reference (sets the tolerance): " << c.reference << ", " << c.reference_packs
-           << " packs; candidate: " << c.candidate << ", " << c.candidate_packs << " packs.\n\n";
-        md << "| metric | " << c.candidate << " mean ± sd | " << c.reference
-           << " mean ± sd | difference | tolerance | verdict |\n";
-        md << "| --- | --- | --- | --- | --- | --- |\n";
+    const Verdict order[] = {Verdict::Agree, Verdict::Differ, Verdict::Inconclusive};
+    bool first = true;
+    for (const Verdict v : order) {
+        std::string names;
         for (const auto& row : c.rows) {
-            md << "| " << row.name << " | "
-               << mean_sd(row.candidate_mean, row.candidate_sd, row.unit) << " | "
-               << mean_sd(row.reference_mean, row.reference_sd, row.unit) << " | "
-               << with_unit(row.difference, row.unit) << " | " << with_unit(row.tolerance, row.unit)
-               << " (" << row.tolerance_rule << ") | " << verdict(row.agree) << " |\n";
+            if (row.verdict == v) {
+                names += (names.empty() ? "" : ", ") + row.label;
+            }
         }
-        md << "| g(r) distance ratio | " << fixed(c.gr_distance) << " √d (distance) | "
-           << (c.reference_packs >= 2 ? fixed(c.gr_replicate_distance) + " √d (replicates)"
-                                      : std::string("n/a"))
-           << " | " << (c.gr_ratio_defined ? fixed(c.gr_ratio) + " (ratio)" : std::string("n/a"))
-           << " | 1 (ratio) | " << gr_verdict(c) << " |\n";
-        if (!c.candidate_curves.phi_y_note.empty() || !c.reference_curves.phi_y_note.empty()) {
-            md << "\nphi(y): " << c.candidate_curves.phi_y_note << " "
-               << c.reference_curves.phi_y_note << "\n";
+        if (!names.empty()) {
+            line += (first ? "" : "; ") + std::string(to_string(v)) + " on " + names;
+            first = false;
         }
     }
-    md << "\n## Plots\n\n";
-    if (context.plots_made) {
-        md << "Open index.html (self-contained), or the SVG files:\n\n";
-        for (const auto& file : context.plot_files) {
-            md << "- [" << file << "](" << file << ")\n";
-        }
-    } else {
-        md << "Plots were skipped: " << context.plots_note << "\n";
+    return line + ".";
+}
+
+std::string ratio_text(const MetricRow& row) {
+    return row.ratio ? fixed(*row.ratio) : "n/a";
+}
+
+void comparison_markdown(std::ostringstream& md, const Comparison& c) {
+    md << "\n### " << title(c) << "\n\n";
+    md << "Reference (sets the tolerance): " << c.reference << ", " << c.reference_packs << " packs"
+       << (c.variant_packs > 0 ? " (variant set: " + std::to_string(c.variant_packs) + " packs)"
+                               : "")
+       << "; candidate: " << c.candidate << ", " << c.candidate_packs << " packs.\n\n";
+    md << "| metric | candidate mean ± sd | reference mean ± sd | difference | seed spread | "
+          "model spread | tolerance | ratio | verdict |\n";
+    md << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |\n";
+    for (const auto& row : c.rows) {
+        md << "| " << row.label
+           << (row.unit == "ratio" || row.unit == "dimensionless" ? "" : " (" + row.unit + ")")
+           << " | " << mean_sd(row, row.candidate_mean, row.candidate_sd) << " | "
+           << mean_sd(row, row.reference_mean, row.reference_sd) << " | " << fixed(row.difference)
+           << " | " << fixed(row.seed_spread) << " | " << fixed(row.model_spread) << " | "
+           << fixed(row.tolerance) << " | " << ratio_text(row) << " | " << to_string(row.verdict)
+           << (row.power || row.verdict == Verdict::Info ? "" : " (no power)") << " |\n";
     }
+    if (!c.candidate_curves.phi_y_note.empty() || !c.reference_curves.phi_y_note.empty()) {
+        md << "\nφ(y): " << c.candidate_curves.phi_y_note << " " << c.reference_curves.phi_y_note
+           << "\n";
+    }
+}
+
+void inputs_markdown(std::ostringstream& md, const Report& report) {
     md << "\n## Inputs\n\n";
     md << "| group | file | N | d |";
     for (const auto& key : provenance_columns()) {
@@ -184,13 +113,82 @@ std::string render_markdown(const Report& report, const ReportContext& context) 
     for (const auto& g : report.groups) {
         for (const auto& p : g.packs) {
             md << "| " << g.label << " | " << p.source << " | " << p.count << " | "
-               << fixed(p.diameter) << " (length unit) |";
+               << fixed(p.diameter) << " |";
             for (const auto& key : provenance_columns()) {
                 md << " " << provenance_value(p, key) << " |";
             }
             md << "\n";
         }
     }
+}
+
+}  // namespace
+
+std::vector<std::string> rule_statements() {
+    std::vector<std::string> rules{
+        "Verdicts: agree, differ, inconclusive (the metric cannot tell the reference classes "
+        "apart at that count, or the reference has fewer than two packs) or info (shown "
+        "without a verdict: it differs by construction, as the overlaps of soft DEM spheres "
+        "against hard SGMP spheres).",
+        "Scalar metric: difference = mean(candidate) - mean(reference); tolerance = max(floor, "
+        "sqrt((2 sd of the reference packs)^2 + model spread^2)); model spread = root mean "
+        "square over counts of mean(variant DEM set-up) - mean(reference); ratio = "
+        "|difference| / tolerance; agree when ratio <= 1. With 5 packs a side drawn from one "
+        "distribution the difference exceeds 2 sd with probability about 1 %.",
+        "Curves: g(r) by the L2 distance sqrt(sum (g_a - g_b)^2 dr) of the mean curves over bin "
+        "centres in [1.1 d, 5 d] (the contact peak is judged by Z and P(Z)); P(Z) by the "
+        "total-variation distance (1/2) sum |p_a - p_b|. ratio = distance / (mean distance "
+        "between pairs of reference packs x sqrt(1 + m^2)), m the variant's distance from the "
+        "reference in the same units (root mean square over counts); agree when ratio <= 1.",
+        "Power: a verdict against one reference class is inconclusive where another class "
+        "agrees with it by the same rule: the metric cannot tell the classes apart there.",
+        "Lengths are in units of the mean diameter d. Z at tolerance X counts neighbours with "
+        "gap |ci - cj| - ri - rj <= X d, over centres in the region; g(r) bins are centred on "
+        "multiples of the bin width (contact at d is a bin centre) and its density is the one "
+        "the origins see, so g -> 1 far from contact.",
+    };
+    std::string floors = "Tolerance floors:";
+    for (const auto& rule : metric_rules()) {
+        if (rule.kind == MetricKind::Scalar && rule.judged) {
+            floors += " " + rule.name + " " + fixed(rule.floor) + ";";
+        }
+    }
+    rules.push_back(floors);
+    return rules;
+}
+
+std::string render_markdown(const Report& report, const ReportContext& context) {
+    std::ostringstream md;
+    md << "# " << context.title << "\n\n";
+    md << "Made by sgmp-compare " << sgmp::version() << ": `" << context.command << "`\n\n";
+    md << context.lead_markdown;
+    md << "\n## Rules\n\n";
+    for (const auto& rule : rule_statements()) {
+        md << "- " << rule << "\n";
+    }
+    md << "\n## Plots\n\n";
+    if (context.plots_made) {
+        md << "Open index.html (self-contained), or the SVG files:\n\n";
+        for (const auto& file : context.plot_files) {
+            md << "- [" << file << "](" << file << ")\n";
+        }
+    } else {
+        md << "Plots were skipped: " << context.plots_note << "\n";
+    }
+    md << "\n## Every comparison\n\n";
+    if (report.comparisons.empty()) {
+        md << "- No particle count is present on both sides; nothing was compared.\n";
+    }
+    for (const auto& c : report.comparisons) {
+        md << summary_line(c) << "\n";
+    }
+    for (const auto& note : report.notes) {
+        md << "- " << note << "\n";
+    }
+    for (const auto& c : report.comparisons) {
+        comparison_markdown(md, c);
+    }
+    inputs_markdown(md, report);
     md << "\nAll provenance keys of every input are in report.json. Parameters: `"
        << context.parameters.dump() << "`\n";
     return md.str();
@@ -198,43 +196,45 @@ std::string render_markdown(const Report& report, const ReportContext& context) 
 
 std::string render_csv(const Report& report, const ReportContext& context) {
     std::ostringstream csv;
-    csv << "# tool: sgmp-compare " << sgmp::version() << "\n# command: " << context.command << "\n";
-    for (const auto& rule : rule_statements()) {
-        csv << "# rule: " << rule << "\n";
-    }
-    csv << "count,candidate,reference,metric,unit,candidate_n,candidate_mean,candidate_sd,"
-           "reference_n,reference_mean,reference_sd,difference,tolerance,tolerance_rule,verdict\n";
+    csv << "count,candidate,reference,metric,unit,kind,candidate_n,candidate_mean,candidate_sd,"
+           "reference_n,reference_mean,reference_sd,difference,seed_spread,model_spread,"
+           "tolerance,tolerance_rule,ratio,power,verdict\n";
+    write_csv_preamble(csv, "sgmp-compare", context.command, rule_statements());
     for (const auto& c : report.comparisons) {
-        const auto prefix = std::to_string(c.count) + "," + c.candidate + "," + c.reference + ",";
         for (const auto& row : c.rows) {
-            csv << prefix << row.name << "," << row.unit << "," << c.candidate_packs << ","
-                << format_number(row.candidate_mean) << "," << format_number(row.candidate_sd)
-                << "," << c.reference_packs << "," << format_number(row.reference_mean) << ","
-                << format_number(row.reference_sd) << "," << format_number(row.difference) << ","
-                << format_number(row.tolerance) << "," << row.tolerance_rule << ","
-                << (row.agree ? "agree" : "disagree") << "\n";
+            const bool scalar = row.kind == MetricKind::Scalar;
+            const auto value = [&](double v) { return scalar ? format_number(v) : std::string(); };
+            csv << c.count << ',' << csv_field(c.candidate) << ',' << csv_field(c.reference) << ','
+                << row.name << ',' << csv_field(row.unit) << ',' << (scalar ? "scalar" : "curve")
+                << ',' << c.candidate_packs << ',' << value(row.candidate_mean) << ','
+                << value(row.candidate_sd) << ',' << c.reference_packs << ','
+                << value(row.reference_mean) << ',' << value(row.reference_sd) << ','
+                << format_number(row.difference) << ',' << format_number(row.seed_spread) << ','
+                << format_number(row.model_spread) << ',' << format_number(row.tolerance) << ','
+                << row.tolerance_rule << ',' << (row.ratio ? format_number(*row.ratio) : "") << ','
+                << (row.power ? "yes" : "no") << ',' << to_string(row.verdict) << '\n';
         }
-        csv << prefix << "g_r_distance_ratio,ratio," << c.candidate_packs << ","
-            << format_number(c.gr_distance) << ",," << c.reference_packs << ","
-            << (c.reference_packs >= 2 ? format_number(c.gr_replicate_distance) : "") << ",,"
-            << (c.gr_ratio_defined ? format_number(c.gr_ratio) : "") << ",1,ratio <= 1,"
-            << (c.reference_packs < 2 ? "n/a" : (c.gr_agree ? "agree" : "disagree")) << "\n";
     }
     return csv.str();
 }
 
 Json render_json(const Report& report, const ReportContext& context) {
     Json j;
+    j["schema_version"] = kSchemaVersion;
     j["tool"] = "sgmp-compare";
     j["version"] = sgmp::version();
     j["command"] = context.command;
     j["parameters"] = context.parameters;
     j["rules"] = rule_statements();
-    Json floors;
+    Json metrics;
     for (const auto& rule : metric_rules()) {
-        floors[rule.name] = Json{{"unit", rule.unit}, {"floor", rule.floor}};
+        metrics[rule.name] = Json{{"label", rule.label},
+                                  {"unit", rule.unit},
+                                  {"kind", rule.kind == MetricKind::Scalar ? "scalar" : "curve"},
+                                  {"floor", rule.floor},
+                                  {"judged", rule.judged}};
     }
-    j["metrics"] = floors;
+    j["metrics"] = metrics;
     j["g_r_range_over_d"] = {kGrCompareFrom, kGrCompareTo};
     Json groups = Json::array();
     for (const auto& g : report.groups) {
@@ -245,8 +245,10 @@ Json render_json(const Report& report, const ReportContext& context) {
                 prov[k] = v;
             }
             Json scalars;
-            for (std::size_t m = 0; m < metric_rules().size(); ++m) {
-                scalars[metric_rules()[m].name] = p.scalars[m];
+            for (const auto& rule : metric_rules()) {
+                if (rule.kind == MetricKind::Scalar) {
+                    scalars[rule.name] = p.scalar(rule.name);
+                }
             }
             packs.push_back(Json{{"file", p.source},
                                  {"count", p.count},
@@ -261,30 +263,30 @@ Json render_json(const Report& report, const ReportContext& context) {
     for (const auto& c : report.comparisons) {
         Json rows = Json::array();
         for (const auto& row : c.rows) {
+            const bool scalar = row.kind == MetricKind::Scalar;
             rows.push_back(Json{{"metric", row.name},
                                 {"unit", row.unit},
-                                {"candidate_mean", row.candidate_mean},
-                                {"candidate_sd", row.candidate_sd},
-                                {"reference_mean", row.reference_mean},
-                                {"reference_sd", row.reference_sd},
+                                {"candidate_mean", scalar ? Json(row.candidate_mean) : Json()},
+                                {"candidate_sd", scalar ? Json(row.candidate_sd) : Json()},
+                                {"reference_mean", scalar ? Json(row.reference_mean) : Json()},
+                                {"reference_sd", scalar ? Json(row.reference_sd) : Json()},
                                 {"difference", row.difference},
+                                {"seed_spread", row.seed_spread},
+                                {"model_spread", row.model_spread},
                                 {"tolerance", row.tolerance},
                                 {"tolerance_rule", row.tolerance_rule},
-                                {"verdict", row.agree ? "agree" : "disagree"}});
+                                {"ratio", row.ratio ? Json(*row.ratio) : Json()},
+                                {"power", row.power},
+                                {"verdict", to_string(row.verdict)}});
         }
-        Json gr{{"distance", c.gr_distance},
-                {"replicate_distance",
-                 c.reference_packs >= 2 ? Json(c.gr_replicate_distance) : Json(nullptr)},
-                {"ratio", c.gr_ratio_defined ? Json(c.gr_ratio) : Json(nullptr)},
-                {"verdict", c.reference_packs < 2 ? "n/a" : (c.gr_agree ? "agree" : "disagree")}};
         comparisons.push_back(Json{{"count", c.count},
                                    {"candidate", c.candidate},
                                    {"reference", c.reference},
                                    {"candidate_packs", c.candidate_packs},
                                    {"reference_packs", c.reference_packs},
-                                   {"disagreements", c.disagreements()},
-                                   {"metrics", rows},
-                                   {"g_r", gr}});
+                                   {"variant_packs", c.variant_packs},
+                                   {"differ", c.count_of(Verdict::Differ)},
+                                   {"metrics", rows}});
     }
     j["comparisons"] = comparisons;
     j["notes"] = report.notes;
@@ -298,7 +300,7 @@ namespace {
 /// The plots section: every SVG inline with its file name as caption.
 std::string plots_html(const ReportContext& context, const std::vector<std::string>& svgs) {
     std::ostringstream html;
-    html << "<h2>Plots</h2>\n";
+    html << "<h2 id=\"plots\">Plots</h2>\n";
     if (!context.plots_made) {
         html << "<p>Plots were skipped: " << html_escape(context.plots_note) << "</p>\n";
         return html.str();
@@ -310,74 +312,65 @@ std::string plots_html(const ReportContext& context, const std::vector<std::stri
     return html.str();
 }
 
+const char* kStyle =
+    "<style>body{font-family:sans-serif;max-width:1360px;margin:auto;padding:0 12px;"
+    "line-height:1.35}table{border-collapse:collapse;font-size:13px;margin:6px 0}"
+    "td,th{border:1px solid #bbb;padding:2px 5px}th{background:#f2f2f2}"
+    "td:has(> .agree:only-child){background:#e6f0fa}"
+    ".agree{color:#0072B2;font-weight:bold}.differ{color:#D55E00;font-weight:bold}"
+    ".inconclusive{color:#777}.info{color:#555;font-style:italic}"
+    "span.mark{font-family:monospace;font-size:15px}"
+    "figure{display:inline-block;margin:4px}figcaption{font-size:12px;color:#555}"
+    "nav{background:#f7f7f7;padding:4px 10px;border:1px solid #ddd}</style>";
+
+/// Verdict words and marks in table cells get their colour class.
+std::string colour_verdicts(std::string html) {
+    const std::pair<std::string, std::string> marks[] = {
+        {"<td>agree</td>", "<td class=\"agree\">agree</td>"},
+        {"<td>differ</td>", "<td class=\"differ\">differ</td>"},
+        {"<td>inconclusive</td>", "<td class=\"inconclusive\">inconclusive</td>"},
+        {"<td>inconclusive (no power)</td>",
+         "<td class=\"inconclusive\">inconclusive (no power)</td>"},
+        {"<td>info</td>", "<td class=\"info\">info</td>"},
+        {"✓", "<span class=\"agree\">✓</span>"},
+        {"✗", "<span class=\"differ\">✗</span>"},
+        {"◌", "<span class=\"inconclusive\">◌</span>"},
+    };
+    for (const auto& [from, to] : marks) {
+        std::string out;
+        std::size_t start = 0;
+        for (std::size_t at = html.find(from); at != std::string::npos;
+             at = html.find(from, start)) {
+            out.append(html, start, at - start);
+            out += to;
+            start = at + from.size();
+        }
+        out.append(html, start, std::string::npos);
+        html = std::move(out);
+    }
+    return html;
+}
+
 }  // namespace
 
 std::string render_html(const Report& report, const ReportContext& context,
                         const std::vector<std::string>& svgs) {
+    (void)report;
+    const std::string markdown = render_markdown(report, context);
+    // The plots go after the lead sections (before "## Rules") when plotted per count.
+    std::string body = colour_verdicts(markdown_to_html(markdown));
+    const std::string plots = plots_html(context, svgs);
+    const std::string anchor = "<h2>Rules</h2>";
+    const auto at = body.find(anchor);
+    if (at != std::string::npos) {
+        body.insert(at, plots);
+    } else {
+        body += plots;
+    }
     std::ostringstream html;
     html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>"
-         << html_escape(context.title)
-         << "</title>"
-            "<style>body{font-family:sans-serif;max-width:1100px;margin:auto}"
-            "table{border-collapse:collapse}td,th{border:1px solid #999;padding:2px 6px}"
-            ".DISAGREE{color:#b00;font-weight:bold}</style></head><body>\n";
-    html << "<h1>" << html_escape(context.title) << "</h1>\n<p>Made by sgmp-compare "
-         << sgmp::version() << ": <code>" << html_escape(context.command) << "</code></p>\n"
-         << markdown_to_html(context.lead_markdown)
-         << (context.plots_per_count ? plots_html(context, svgs) : std::string())
-         << "<h2>Summary of every comparison</h2>\n<ul>\n";
-    for (const auto& c : report.comparisons) {
-        html << "<li>" << html_escape(summary_line(c).substr(2)) << "</li>\n";
-    }
-    for (const auto& note : report.notes) {
-        html << "<li>" << html_escape(note) << "</li>\n";
-    }
-    html << "</ul>\n<h2>Rules</h2>\n<ul>\n";
-    for (const auto& rule : rule_statements()) {
-        html << "<li>" << html_escape(rule) << "</li>\n";
-    }
-    html << "</ul>\n";
-    for (const auto& c : report.comparisons) {
-        html << "<h2>" << html_escape(title(c)) << "</h2>\n<table><tr><th>metric</th><th>"
-             << html_escape(c.candidate) << " mean ± sd</th><th>" << html_escape(c.reference)
-             << " mean ± sd</th><th>difference</th><th>tolerance</th><th>verdict</th></tr>\n";
-        for (const auto& row : c.rows) {
-            html << "<tr><td>" << row.name << "</td><td>"
-                 << html_escape(mean_sd(row.candidate_mean, row.candidate_sd, row.unit))
-                 << "</td><td>"
-                 << html_escape(mean_sd(row.reference_mean, row.reference_sd, row.unit))
-                 << "</td><td>" << html_escape(with_unit(row.difference, row.unit)) << "</td><td>"
-                 << html_escape(with_unit(row.tolerance, row.unit)) << " (" << row.tolerance_rule
-                 << ")</td><td class=\"" << verdict(row.agree) << "\">" << verdict(row.agree)
-                 << "</td></tr>\n";
-        }
-        html << "<tr><td>g(r) distance ratio</td><td colspan=\"2\">distance "
-             << fixed(c.gr_distance) << " √d; replicates "
-             << (c.reference_packs >= 2 ? fixed(c.gr_replicate_distance) + " √d" : "n/a")
-             << "</td><td>" << (c.gr_ratio_defined ? fixed(c.gr_ratio) + " (ratio)" : "n/a")
-             << "</td><td>1 (ratio)</td><td class=\"" << gr_verdict(c) << "\">" << gr_verdict(c)
-             << "</td></tr>\n</table>\n";
-    }
-    if (!context.plots_per_count) {
-        html << plots_html(context, svgs);
-    }
-    html << "<h2>Inputs</h2>\n<table><tr><th>group</th><th>file</th><th>N</th>";
-    for (const auto& key : provenance_columns()) {
-        html << "<th>" << key << "</th>";
-    }
-    html << "</tr>\n";
-    for (const auto& g : report.groups) {
-        for (const auto& p : g.packs) {
-            html << "<tr><td>" << html_escape(g.label) << "</td><td>" << html_escape(p.source)
-                 << "</td><td>" << p.count << "</td>";
-            for (const auto& key : provenance_columns()) {
-                html << "<td>" << html_escape(provenance_value(p, key)) << "</td>";
-            }
-            html << "</tr>\n";
-        }
-    }
-    html << "</table>\n<p>Parameters: <code>" << html_escape(context.parameters.dump())
-         << "</code></p>\n</body></html>\n";
+         << html_escape(context.title) << "</title>" << kStyle << "</head><body>\n"
+         << body << "</body></html>\n";
     return html.str();
 }
 

@@ -3,7 +3,9 @@
 
 #include "sgmp/compare/baseline.hpp"
 #include "sgmp/compare/crossval.hpp"
+#include "sgmp/compare/crossval_render.hpp"
 #include "sgmp/compare/manifest.hpp"
+#include "sgmp/compare/metrics_output.hpp"
 #include "sgmp/compare/report_render.hpp"
 #include "sgmp/compare/thesis_table.hpp"
 #include "sgmp/pack/input_error.hpp"
@@ -25,17 +27,20 @@ std::string manifest_error(const std::string& text) {
 
 const std::string kManifestHeader = "role,group,count,seed,seconds,path\n";
 
-MetricRow metric(const std::string& name, double candidate, double reference, double tolerance,
-                 const std::string& rule = "2 sd") {
+MetricRow metric(const std::string& name, double candidate, double reference, double tolerance) {
     MetricRow row;
     row.name = name;
-    row.unit = name == "phi" ? "ratio" : "contacts/particle";
+    row.label = metric_rule(name).label;
+    row.unit = metric_rule(name).unit;
+    row.kind = metric_rule(name).kind;
     row.candidate_mean = candidate;
     row.reference_mean = reference;
     row.difference = candidate - reference;
+    row.seed_spread = tolerance;
     row.tolerance = tolerance;
-    row.tolerance_rule = rule;
-    row.agree = std::abs(row.difference) <= tolerance;
+    row.tolerance_rule = "seed";
+    row.ratio = std::abs(row.difference) / tolerance;
+    row.verdict = *row.ratio <= 1.0 ? Verdict::Agree : Verdict::Differ;
     return row;
 }
 
@@ -47,11 +52,15 @@ Comparison comparison(const std::string& candidate, const std::string& reference
     c.count = count;
     c.candidate_packs = 3;
     c.reference_packs = 3;
-    c.rows = {metric("phi", phi_c, phi_r, tol), metric("z_mean_tol_1e-2", 5.0, 6.0, 0.3)};
-    c.gr_ratio = gr_ratio;
-    c.gr_ratio_defined = true;
-    c.gr_agree = gr_ratio <= 1.0;
-    c.gr_beyond_contact_ratio = gr_ratio / 2.0;
+    for (const auto& rule : metric_rules()) {
+        if (rule.name == "phi") {
+            c.rows.push_back(metric("phi", phi_c, phi_r, tol));
+        } else if (rule.name == "g_r") {
+            c.rows.push_back(metric("g_r", gr_ratio, 0.0, 1.0));
+        } else {
+            c.rows.push_back(metric(rule.name, 5.0, 6.0, 0.3));
+        }
+    }
     return c;
 }
 
@@ -88,7 +97,7 @@ BOOST_AUTO_TEST_CASE(manifest_is_read_strictly) {
                "m.csv: empty manifest: expected the header 'role,group,count,seed,seconds,path'");
     BOOST_TEST(manifest_error(kManifestHeader) == "m.csv:1: the manifest lists no packs");
     BOOST_TEST(manifest_error(kManifestHeader + "judge,a,150,1,,p\n") ==
-               "m.csv:2: role 'judge' must be 'candidate' or 'reference'");
+               "m.csv:2: role 'judge' must be 'candidate', 'reference' or 'variant'");
     BOOST_TEST(manifest_error(kManifestHeader + "candidate,a,many,1,,p\n") ==
                "m.csv:2: count 'many' must be a positive integer");
     BOOST_TEST(manifest_error(kManifestHeader + "candidate,a,150,1,-3,p\n") ==
@@ -102,8 +111,23 @@ BOOST_AUTO_TEST_CASE(manifest_is_read_strictly) {
 BOOST_AUTO_TEST_CASE(groups_are_planned_every_candidate_against_every_reference) {
     const GroupPlan plan = plan_groups(sample_manifest());
     BOOST_TEST(plan.labels.size() == 4u);
-    BOOST_TEST(plan.comparisons.size() == 4u);
+    BOOST_TEST(plan.plan.comparisons.size() == 4u);
+    BOOST_TEST(plan.plan.classes.size() == 2u);
+    BOOST_TEST(plan.plan.variants.empty());
     BOOST_TEST(plan.paths[0].size() == 2u);
+    // A variant set belongs to the reference group it names, and is compared with nothing.
+    std::istringstream with_variant(kManifestHeader +
+                                    "candidate,a,150,1,,p1\nreference,R,150,1,,p2\n"
+                                    "variant,R,150,1,,p3\n");
+    const GroupPlan v = plan_groups(read_manifest(with_variant, "m"));
+    BOOST_TEST(v.labels.size() == 3u);
+    BOOST_TEST(v.labels[2] == "R (variant)");
+    BOOST_TEST(v.plan.comparisons.size() == 1u);
+    BOOST_TEST(v.plan.variants.at(1) == 2u);
+    std::istringstream orphan(kManifestHeader +
+                              "candidate,a,150,1,,p1\nreference,R,150,1,,p2\n"
+                              "variant,S,150,1,,p3\n");
+    BOOST_CHECK_THROW(plan_groups(read_manifest(orphan, "m")), std::invalid_argument);
     std::istringstream only_candidates(kManifestHeader + "candidate,a,150,1,,p\n");
     BOOST_CHECK_THROW(plan_groups(read_manifest(only_candidates, "m")), std::invalid_argument);
 }
@@ -120,38 +144,47 @@ BOOST_AUTO_TEST_CASE(headline_carries_verdicts_and_the_thesis_beside_us) {
     const HeadlineRow& column = cv.rows[0];
     BOOST_TEST(column.group == "single-column");
     BOOST_TEST(*column.seconds == 0.003, boost::test_tools::tolerance(1e-12));
-    BOOST_TEST(*column.speedup == 46000.0, boost::test_tools::tolerance(1e-9));
+    BOOST_TEST(*column.thesis_speedup == 46000.0, boost::test_tools::tolerance(1e-9));
     BOOST_TEST_REQUIRE(column.against.size() == 2u);
     BOOST_TEST(column.against[0].reference == "DEM mu=0.5");
-    BOOST_TEST(column.against[0].phi_agree);   // |0.60 − 0.61| ≤ 0.02
-    BOOST_TEST(!column.against[1].phi_agree);  // |0.60 − 0.64| > 0.01
-    BOOST_TEST(column.against[0].gr_agree);
-    BOOST_TEST(!column.against[1].gr_agree);
+    BOOST_TEST(column.against[0].row("phi").verdict == Verdict::Agree);  // |0.60 − 0.61| ≤ 0.02
+    BOOST_TEST(column.against[1].row("phi").verdict == Verdict::Differ);  // |0.60 − 0.64| > 0.01
+    BOOST_TEST(column.against[0].row("g_r").verdict == Verdict::Agree);
+    BOOST_TEST(column.against[1].row("g_r").verdict == Verdict::Differ);
+    BOOST_TEST(*column.against[0].speedup == 500.0, boost::test_tools::tolerance(1e-9));
     BOOST_TEST(!cv.rows[1].thesis.has_value());
     BOOST_TEST(!column.thesis_start.has_value());
     BOOST_TEST(cv.rows[1].thesis_start->starting_height == 3.38);
     const std::string md = render_crossval_markdown(cv);
-    BOOST_TEST(md.find("**single-column vs DEM mu=0.01**: φ agrees at 0 of 1 counts; differs at "
-                       "N = 150 (SGMP − DEM -0.0400 (ratio))") != std::string::npos);
+    // The stand-in lines, the verdict matrix (one mark per count), the headline and the
+    // thesis table.
+    BOOST_TEST(md.find("- **DEM mu=0.5**: no mode stands in; closest **single-column** (2 agree, "
+                       "15 differ, 0 inconclusive") != std::string::npos);
+    BOOST_TEST(md.find("| single-column | DEM mu=0.5 | ✓ | ✗ |") != std::string::npos);
+    BOOST_TEST(md.find("| 150 | single-column | 0.003 | 0.6000 | 5.00 | 5.00 | 5.000 | ✓✗✗✗✗✓ | "
+                       "0.8 | 500× |") != std::string::npos);
     BOOST_TEST(
         md.find("| 150 | single-column | 0.0000 | 138 (5.1) | 0.003 | 46000× | 0.6160 | 0.6000 | "
                 "-0.0160 | — | — |") != std::string::npos);
-    // The informative ratio beyond contact is carried through and summarised.
-    BOOST_TEST(*column.against[1].gr_beyond_contact_ratio == 1.25);
-    BOOST_TEST(md.find("leaving out the contact peak (r ≥ 1.1·d) the ratio is 1.25") !=
-               std::string::npos);
     const auto json = crossval_json(cv);
-    BOOST_TEST(json["headline"][0]["against"][1]["phi_agree"] == false);
-    BOOST_TEST(render_headline_csv(cv).find("150,single-column,DEM mu=0.01,") != std::string::npos);
+    BOOST_TEST(json["schema_version"] == kSchemaVersion);
+    BOOST_TEST(json["headline"][0]["against"][1]["metrics"]["phi"]["verdict"] == "differ");
+    const std::string csv = render_headline_csv(cv, "cmd");
+    BOOST_TEST(csv.rfind("count,candidate,reference,metric,", 0) == 0u);  // header row first
+    BOOST_TEST(csv.find("150,single-column,DEM mu=0.01,phi,0.6,0,0.64,0,0.01,4.0000000000000036,"
+                        "differ,") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(baseline_takes_the_strictest_reference_tolerance) {
     const auto entries = baseline_entries(sample_report());
-    BOOST_TEST_REQUIRE(entries.size() == 4u);  // 2 groups × 2 metrics
+    BOOST_TEST_REQUIRE(entries.size() == 2u * 14u);  // 2 groups × 14 scalar metrics
     BOOST_TEST(entries[0].metric == "phi");
     BOOST_TEST(entries[0].value == 0.60);
     BOOST_TEST(entries[0].tolerance == 0.01);
     BOOST_TEST(entries[0].tolerance_source == "2 sd of DEM mu=0.01 (3 packs)");
+    for (const auto& e : entries) {
+        BOOST_TEST(e.metric != "g_r");  // curves are not kept as values
+    }
 }
 
 BOOST_AUTO_TEST_CASE(regression_passes_identical_runs_and_flags_moved_metrics) {
@@ -169,8 +202,8 @@ BOOST_AUTO_TEST_CASE(regression_passes_identical_runs_and_flags_moved_metrics) {
     const auto rows = regress(baseline, moved);
     BOOST_TEST(!rows[0].pass);
     BOOST_TEST(rows[1].pass);
-    BOOST_TEST(!rows[3].pass);
-    BOOST_TEST(!rows[3].current.has_value());
+    BOOST_TEST(!rows.back().pass);
+    BOOST_TEST(!rows.back().current.has_value());
     const std::string table = render_regression_table(rows, true);
     BOOST_TEST(table.find("missing") != std::string::npos);
     BOOST_TEST(table.find("FAIL") != std::string::npos);
@@ -183,15 +216,17 @@ BOOST_AUTO_TEST_SUITE_END()
 
 BOOST_AUTO_TEST_SUITE(markdown_html)
 
-BOOST_AUTO_TEST_CASE(lead_sections_render_as_html) {
+BOOST_AUTO_TEST_CASE(markdown_renders_through_md4c) {
+    // Emphasis, code, lists and GitHub pipe tables; raw HTML is escaped, not passed through.
     const std::string html = sgmp::compare::markdown_to_html(
-        "## Head <1>\n\nSome **bold** and `code`.\n- item a\n- item b\n\n| x | verdict |\n"
-        "| ---: | --- |\n| 1 | DIFFER |\n");
-    BOOST_TEST(html ==
-               "<h2>Head &lt;1&gt;</h2>\n<p>Some <b>bold</b> and <code>code</code>.</p>\n"
-               "<ul>\n<li>item a</li>\n<li>item b</li>\n</ul>\n<table>\n"
-               "<tr><th>x</th><th>verdict</th></tr>\n"
-               "<tr><td>1</td><td class=\"DISAGREE\">DIFFER</td></tr>\n</table>\n");
+        "## Head <1>\n\nSome **bold** and `code`.\n\n- item a\n- item b\n\n| x | verdict |\n"
+        "| ---: | --- |\n| 1 | differ |\n");
+    BOOST_TEST(html.find("<h2>Head &lt;1&gt;</h2>") != std::string::npos);
+    BOOST_TEST(html.find("<strong>bold</strong>") != std::string::npos);
+    BOOST_TEST(html.find("<code>code</code>") != std::string::npos);
+    BOOST_TEST(html.find("<li>item b</li>") != std::string::npos);
+    BOOST_TEST(html.find("<td>differ</td>") != std::string::npos);
+    BOOST_TEST(html.find("**") == std::string::npos);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -95,7 +95,7 @@ BOOST_AUTO_TEST_CASE(g_of_r_has_the_shells_at_the_right_distances) {
         const double origins = static_cast<double>(rdf.origins);
         std::vector<bool> expected(rdf.pairs.size(), false);
         for (const auto& [distance, count] : c.shells) {
-            const auto bin = static_cast<std::size_t>(distance / rdf.bin_width_over_d);
+            const auto bin = bin_of(distance, 1.0 / rdf.bin_width_over_d);
             expected[bin] = true;
             BOOST_TEST(static_cast<double>(rdf.pairs[bin]) / origins == count,
                        "shell at " << distance << " d");
@@ -103,14 +103,13 @@ BOOST_AUTO_TEST_CASE(g_of_r_has_the_shells_at_the_right_distances) {
         // Nothing between the shells below the fourth one.
         const double last = c.shells.back().first;
         for (std::size_t k = 0; k < rdf.pairs.size(); ++k) {
-            if (!expected[k] && (static_cast<double>(k) + 1.0) * rdf.bin_width_over_d < last) {
+            if (!expected[k] && bin_outer(k, rdf.bin_width_over_d) < last) {
                 BOOST_TEST(rdf.pairs[k] == 0, "bin " << k);
             }
         }
         // The first peak of g is the contact shell.
         const auto peak = std::max_element(rdf.g.begin(), rdf.g.end()) - rdf.g.begin();
-        BOOST_TEST(static_cast<std::size_t>(peak) ==
-                   static_cast<std::size_t>(1.0 / rdf.bin_width_over_d));
+        BOOST_TEST(static_cast<std::size_t>(peak) == bin_of(1.0, 1.0 / rdf.bin_width_over_d));
     }
 }
 
@@ -140,9 +139,9 @@ BOOST_AUTO_TEST_CASE(thesis_rdf_follows_its_equations) {
     BOOST_REQUIRE(m.thesis_rdf.has_value());
     const auto& t = *m.thesis_rdf;
     BOOST_TEST(t.region_count == m.local.rdf.origins);
-    const std::size_t bin = static_cast<std::size_t>(1.0 / 0.03);
+    const std::size_t bin = bin_of(1.0, 1.0 / 0.03);  // bins centred on k·ΔR
     const double width = 0.03 * kD;
-    const double r = (bin + 0.5) * width;
+    const double r = static_cast<double>(bin) * width;
     const double shell =
         4.0 * std::numbers::pi / 3.0 * (std::pow(r + width / 2, 3) - std::pow(r - width / 2, 3));
     const double expected = 12.0 / static_cast<double>(t.region_count) / (m.phi * shell);

@@ -1,14 +1,13 @@
 #pragma once
 /// @file crossval.hpp
-/// The cross-validation view of an agreement report: SGMP arrangements (candidate groups)
-/// against DEM friction classes (reference groups), one headline row per arrangement and
-/// particle count — φ of the control volume, mean coordination Z at δ = 10⁻² and the g(r)
-/// distance ratio against each reference, with verdicts — and the thesis' runtime and φ
-/// beside ours with the speed-up factor (thesis runtime / our mean runtime), and the
-/// height of the starting arrangement beside the thesis' (Tables 6.2, 7.2, 8.2).
+/// The cross-validation model of an agreement report: SGMP modes (candidate groups) against
+/// DEM friction classes (reference groups). Per mode and count, the headline metrics
+/// (headline_metrics()) with their verdicts against each class; the runtime of a pack beside
+/// the DEM pour of the same N and beside the thesis' runtime; the height of the starting
+/// arrangement beside the thesis' (Tables 6.2, 7.2, 8.2); and per class the mode that
+/// stands in for it best. The views are in crossval_render.hpp.
 
 #include <cstddef>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,22 +18,17 @@
 
 namespace sgmp::compare {
 
-/// Metric keys of the headline (fixed names of the per-pack JSON).
-inline constexpr const char* kHeadlinePhi = "phi";
-inline constexpr const char* kHeadlineZ = "z_mean_tol_1e-2";
+/// Metric keys of the headline, in column order.
+const std::vector<std::string>& headline_metrics();
 
 /// One candidate group at one count against one reference group.
 struct HeadlineVerdict {
     std::string reference;
-    double phi_reference = 0.0;
-    double phi_tolerance = 0.0;
-    bool phi_agree = false;
-    double z_reference = 0.0;
-    double z_tolerance = 0.0;
-    bool z_agree = false;
-    std::optional<double> gr_ratio;
-    bool gr_agree = false;
-    std::optional<double> gr_beyond_contact_ratio;  // on [1.1·d, 5·d], informative
+    std::vector<MetricRow> rows;  // every metric of the comparison, metric_rules() order
+    std::optional<double> reference_seconds;  // mean wall seconds of the reference's packs
+    std::optional<double> speedup;            // reference_seconds / candidate seconds
+
+    [[nodiscard]] const MetricRow& row(const std::string& name) const;
 };
 
 struct HeadlineRow {
@@ -43,19 +37,39 @@ struct HeadlineRow {
     std::size_t packs = 0;
     std::optional<double> seconds;  // mean wall seconds per pack
     double diameter = 0.0;
-    double phi = 0.0;
-    double z = 0.0;
     std::vector<HeadlineVerdict> against;  // in reference order
     std::optional<ThesisResult> thesis;
-    std::optional<double> speedup;       // thesis runtime / seconds
-    std::optional<double> start_height;  // mean `start_height` key of the packs
+    std::optional<double> thesis_speedup;  // thesis runtime / seconds
+    std::optional<double> start_height;    // mean `start_height` key of the packs
     std::optional<ThesisStart> thesis_start;
+
+    /// Candidate mean of a scalar metric (from the first comparison).
+    [[nodiscard]] double value(const std::string& name) const;
+};
+
+/// How well one mode stands in for one class, over every count and judged metric.
+struct StandIn {
+    std::string candidate;
+    std::string reference;
+    std::size_t agree = 0;
+    std::size_t differ = 0;
+    std::size_t inconclusive = 0;
+    std::optional<double> speedup;  // at the largest count compared
+    std::size_t speedup_count = 0;
+    /// The worst differing verdict: metric label, count and ratio.
+    std::string worst_metric;
+    std::size_t worst_count = 0;
+    double worst_ratio = 0.0;
+
+    [[nodiscard]] bool stands_in() const { return differ == 0 && agree > 0; }
 };
 
 struct CrossValidation {
     std::vector<std::string> candidates;  // group labels in manifest order
     std::vector<std::string> references;
-    std::vector<HeadlineRow> rows;  // by candidate group, then count
+    std::vector<std::size_t> counts;  // every count compared, ascending
+    std::vector<HeadlineRow> rows;    // by candidate group, then count
+    std::vector<StandIn> stand_ins;   // by reference, then candidate (best first)
 };
 
 /// The thesis' published tables (either may be empty).
@@ -69,22 +83,14 @@ struct ThesisTables {
 CrossValidation cross_validate(const Report& report, const std::vector<ManifestEntry>& manifest,
                                const ThesisTables& thesis);
 
-/// The (candidate, reference) group index pairs to compare: every candidate against every
-/// reference, groups in manifest order.
+/// The groups of a manifest and what to compare: every candidate against every reference;
+/// references are the classes; a `variant` group (`role` variant, `group` naming its
+/// reference) is the reference's model-spread set and is compared with nothing.
 struct GroupPlan {
     std::vector<std::string> labels;
     std::vector<std::vector<std::string>> paths;  // per label
-    std::vector<std::pair<std::size_t, std::size_t>> comparisons;
+    ReportPlan plan;
 };
 GroupPlan plan_groups(const std::vector<ManifestEntry>& manifest);
-
-/// Plain-text headline table for the terminal.
-std::string render_headline_text(const CrossValidation& cv);
-/// Markdown sections: a summary of where the candidates agree and where not, the headline
-/// table, and the thesis beside ours.
-std::string render_crossval_markdown(const CrossValidation& cv);
-/// The headline as CSV (one row per candidate group, count and reference).
-std::string render_headline_csv(const CrossValidation& cv);
-nlohmann::ordered_json crossval_json(const CrossValidation& cv);
 
 }  // namespace sgmp::compare

@@ -42,7 +42,8 @@ struct LocalStructureOptions {
     std::vector<double> tolerances;
     double mean_diameter = 0.0;
     double bin_width_over_d = 0.02;
-    std::size_t bins = 250;
+    std::size_t bins = 251;  // bins_for(range / width): centred on 0, ΔR, …, 5·d
+    RdfDensity density_rule = RdfDensity::Neighbours;
     double q6_cutoff = 1.2;
     Box space;            // of neighbour centres, for g(r)
     Container container;  // for wall contacts

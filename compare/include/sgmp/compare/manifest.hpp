@@ -3,7 +3,9 @@
 /// The list of packs a cross-validation reads: a CSV file with the header
 /// `role,group,count,seed,seconds,path`, one pack per line. `role` is `candidate` (packs
 /// under test, e.g. one SGMP arrangement per group) or `reference` (packs whose
-/// seed-to-seed spread sets the tolerances, e.g. one DEM friction class per group);
+/// seed-to-seed spread sets the tolerances, e.g. one DEM friction class per group) or
+/// `variant` (a second, independent set-up of a reference group named by `group`, whose
+/// distance from it is the model spread);
 /// `seconds` is the wall time that made the pack (empty when unknown).
 
 #include <cstddef>
@@ -15,7 +17,7 @@
 
 namespace sgmp::compare {
 
-enum class Role { Candidate, Reference };
+enum class Role { Candidate, Reference, Variant };
 
 struct ManifestEntry {
     Role role = Role::Candidate;

@@ -26,9 +26,10 @@ struct MeasureOptions {
     bool gr_thesis = false;       // also the thesis' single-particle RDF
     bool gr_container_space =
         false;  // g(r) space: the container up to the top sphere, not the centres' space
-    double q6_cutoff = 1.2;        // Q6 bonds within this·(r_i + r_j)
-    double overlap_floor = 1e-9;   // overlaps deeper than this·d are counted
-    std::size_t worst_count = 10;  // worst overlaps listed
+    RdfDensity gr_density = RdfDensity::Neighbours;  // g(r)'s density estimate (rdf.hpp)
+    double q6_cutoff = 1.2;                          // Q6 bonds within this·(r_i + r_j)
+    double overlap_floor = 1e-9;                     // overlaps deeper than this·d are counted
+    std::size_t worst_count = 10;                    // worst overlaps listed
 };
 
 /// Throws std::invalid_argument naming the option and the rule when an option is invalid.

@@ -1,8 +1,8 @@
 #pragma once
 /// @file metrics_output.hpp
 /// Per-pack outputs: the metrics JSON (fixed keys: count, diameter, phi, overlaps, z_mean_tol_*,
-/// q6_*, region, plus more) and the curve CSVs (g_r, phi_y, p_z), each with a header row after '#'
-/// provenance lines.
+/// q6_*, region, plus more) and the curve CSVs (g_r, phi_y, p_z), each with its header row first,
+/// then '#' provenance lines (csv_text.hpp).
 
 #include <nlohmann/json.hpp>
 #include <ostream>
@@ -11,6 +11,11 @@
 #include "sgmp/compare/measure.hpp"
 
 namespace sgmp::compare {
+
+/// Version of every JSON layout sgmp-compare writes (key `schema_version`); raised when a
+/// key changes meaning or disappears. 2: centred g(r) bins, g's density from the
+/// neighbours, split_ratio, verdicts agree / differ / inconclusive.
+inline constexpr int kSchemaVersion = 2;
 
 /// What made an output: tool, version, input path, the input's provenance and the options.
 nlohmann::ordered_json provenance(const std::string& input, const Pack& pack,
@@ -29,7 +34,8 @@ void write_phi_y_csv(std::ostream& out, const Measurement& m,
 void write_p_z_csv(std::ostream& out, const Measurement& m,
                    const nlohmann::ordered_json& provenance);
 
-/// The provenance as "# key: value" comment lines (one JSON value per line).
+/// The provenance as "# key: value" comment lines (one JSON value per line), written right
+/// after a CSV's header row (the layout of csv_text.hpp).
 void write_comment_header(std::ostream& out, const nlohmann::ordered_json& provenance);
 
 }  // namespace sgmp::compare

@@ -1,0 +1,359 @@
+#include "sgmp/compare/crossval_render.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+#include "sgmp/compare/csv_text.hpp"
+#include "sgmp/compare/metrics_output.hpp"
+#include "sgmp/compare/report_render.hpp"
+
+namespace sgmp::compare {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string fixed(double value, int decimals) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+    return buffer;
+}
+
+std::string sig(double value) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.3g", value);
+    return buffer;
+}
+
+std::string optional_fixed(const std::optional<double>& value, int decimals) {
+    return value ? fixed(*value, decimals) : "—";
+}
+
+std::string speed(const std::optional<double>& factor) {
+    if (!factor) {
+        return "—";
+    }
+    return *factor >= 100.0 ? fixed(*factor, 0) + "×" : sig(*factor) + "×";
+}
+
+/// The marks of one metric over every count of the cross-validation.
+std::string marks(const CrossValidation& cv, const std::string& candidate, std::size_t reference,
+                  const std::string& metric) {
+    std::string text;
+    for (const std::size_t n : cv.counts) {
+        std::string mark(verdict_mark(Verdict::Info));
+        for (const auto& row : cv.rows) {
+            if (row.group == candidate && row.count == n && !row.against[reference].rows.empty()) {
+                mark = verdict_mark(row.against[reference].row(metric).verdict);
+            }
+        }
+        text += mark;
+    }
+    return text;
+}
+
+std::string count_list(const std::vector<std::size_t>& counts) {
+    std::string text;
+    for (std::size_t i = 0; i < counts.size(); ++i) {
+        text += (i == 0 ? "" : ", ") + std::to_string(counts[i]);
+    }
+    return text;
+}
+
+void stand_in_markdown(std::ostringstream& md, const CrossValidation& cv) {
+    md << "## Which SGMP mode stands in for which DEM class\n\n";
+    md << "A mode stands in for a class when no judged metric differs at any count "
+          "(verdicts counted over every count and judged metric; speed: the DEM pour's mean "
+          "wall time over the mode's at the largest count).\n\n";
+    for (std::size_t r = 0; r < cv.references.size(); ++r) {
+        std::vector<const StandIn*> per;
+        for (const auto& s : cv.stand_ins) {
+            if (s.reference == cv.references[r]) {
+                per.push_back(&s);
+            }
+        }
+        if (per.empty()) {
+            continue;
+        }
+        const StandIn& best = *per.front();
+        md << "- **" << cv.references[r] << "**: ";
+        md << (best.stands_in() ? "**" + best.candidate + "** stands in"
+                                : "no mode stands in; closest **" + best.candidate + "**");
+        md << " (" << best.agree << " agree, " << best.differ << " differ, " << best.inconclusive
+           << " inconclusive";
+        if (best.differ > 0) {
+            md << "; worst: " << best.worst_metric << " at N = " << best.worst_count << ", ratio "
+               << sig(best.worst_ratio);
+        }
+        md << "; " << speed(best.speedup)
+           << " faster than the DEM pour at N = " << best.speedup_count << ").";
+        if (per.size() > 1) {
+            md << " Others:";
+            for (std::size_t i = 1; i < per.size(); ++i) {
+                md << (i == 1 ? " " : "; ") << per[i]->candidate << " " << per[i]->agree << "/"
+                   << per[i]->differ << "/" << per[i]->inconclusive;
+            }
+            md << " (agree/differ/inconclusive).";
+        }
+        md << "\n";
+    }
+}
+
+void matrix_markdown(std::ostringstream& md, const CrossValidation& cv) {
+    md << "\n## Verdict matrix\n\n";
+    md << "One mark per particle count, N = " << count_list(cv.counts)
+       << " in order: ✓ agree, ✗ differ, ◌ inconclusive (the DEM classes themselves cannot be "
+          "told apart there), · not compared. Rules at the end of the page.\n\n";
+    md << "| SGMP mode | DEM class |";
+    std::vector<const MetricRule*> judged;
+    for (const auto& rule : metric_rules()) {
+        if (rule.judged) {
+            judged.push_back(&rule);
+            md << " " << rule.label << " |";
+        }
+    }
+    md << "\n| --- | --- |";
+    for (std::size_t i = 0; i < judged.size(); ++i) {
+        md << " --- |";
+    }
+    md << "\n";
+    for (const auto& candidate : cv.candidates) {
+        for (std::size_t r = 0; r < cv.references.size(); ++r) {
+            md << "| " << candidate << " | " << cv.references[r] << " |";
+            for (const auto* rule : judged) {
+                md << " " << marks(cv, candidate, r, rule->name) << " |";
+            }
+            md << "\n";
+        }
+    }
+}
+
+void headline_markdown(std::ostringstream& md, const CrossValidation& cv) {
+    md << "\n## Headline\n\n";
+    md << "SGMP means over seeds; against each DEM class the marks of φ, Z(δ = 10⁻³), "
+          "Z(δ = 10⁻²), split ratio, P(Z) at δ = 10⁻³ and g(r) (in that order), the g(r) "
+          "ratio (distance over the DEM scale; ≤ 1 agrees) and the speed-up over the DEM "
+          "pour. Seconds: mean wall time per SGMP pack.\n\n";
+    md << "| N | SGMP mode | s | φ | Z(10⁻³) | Z(10⁻²) | split |";
+    for (const auto& ref : cv.references) {
+        md << " " << ref << ": marks | g(r) ratio | speed-up |";
+    }
+    md << "\n| ---: | --- | ---: | ---: | ---: | ---: | ---: |";
+    for (std::size_t r = 0; r < cv.references.size(); ++r) {
+        md << " --- | ---: | ---: |";
+    }
+    md << "\n";
+    for (const auto& row : cv.rows) {
+        md << "| " << row.count << " | " << row.group << " | " << optional_fixed(row.seconds, 3)
+           << " | " << fixed(row.value("phi"), 4) << " | " << fixed(row.value("z_mean_tol_1e-3"), 2)
+           << " | " << fixed(row.value("z_mean_tol_1e-2"), 2) << " | "
+           << fixed(row.value("split_ratio"), 3) << " |";
+        for (const auto& v : row.against) {
+            if (v.rows.empty()) {
+                md << " · | — | — |";
+                continue;
+            }
+            std::string text;
+            for (const auto& name : headline_metrics()) {
+                text += verdict_mark(v.row(name).verdict);
+            }
+            const auto& gr = v.row("g_r");
+            md << " " << text << " | " << (gr.ratio ? sig(*gr.ratio) : "—") << " | "
+               << speed(v.speedup) << " |";
+        }
+        md << "\n";
+    }
+}
+
+void thesis_markdown(std::ostringstream& md, const CrossValidation& cv) {
+    md << "\n## Beside the thesis\n\n";
+    md << "The thesis' runtime (s, one core of a 2.0 GHz Core Duo) and control-volume φ "
+          "(Tables 5.1, 6.1, 7.1, 8.1) next to ours; speed-up = thesis runtime / our mean "
+          "runtime. d: sphere diameter (length units). Start height: top of the starting "
+          "arrangement above the floor (length units; thesis Tables 6.2, 7.2, 8.2, which give "
+          "none for the single column). — marks what the thesis does not give.\n\n";
+    md << "| N | SGMP mode | d | thesis s | our s | speed-up | thesis φ | our φ | φ − thesis φ | "
+          "thesis start height | our start height |\n"
+          "| ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+    const std::string none = "—";
+    for (const auto& row : cv.rows) {
+        const auto& t = row.thesis;
+        const double phi = row.value("phi");
+        md << "| " << row.count << " | " << row.group << " | " << fixed(row.diameter, 4) << " | "
+           << (t ? fixed(t->runtime_seconds, 0) + " (" + t->table + ")" : none) << " | "
+           << optional_fixed(row.seconds, 3) << " | " << speed(row.thesis_speedup) << " | "
+           << (t ? fixed(t->packing_fraction, 4) : none) << " | " << fixed(phi, 4) << " | "
+           << (t ? (phi >= t->packing_fraction ? "+" : "") + fixed(phi - t->packing_fraction, 4)
+                 : none)
+           << " | "
+           << (row.thesis_start ? fixed(row.thesis_start->starting_height, 2) + " (" +
+                                      row.thesis_start->table + ")"
+                                : none)
+           << " | " << optional_fixed(row.start_height, 2) << " |\n";
+    }
+}
+
+std::string number_or_empty(const std::optional<double>& v) {
+    return v ? format_number(*v) : std::string();
+}
+
+Json optional_json(const std::optional<double>& v) {
+    return v ? Json(*v) : Json();
+}
+
+}  // namespace
+
+std::string_view verdict_mark(Verdict verdict) {
+    switch (verdict) {
+        case Verdict::Agree:
+            return "✓";
+        case Verdict::Differ:
+            return "✗";
+        case Verdict::Inconclusive:
+            return "◌";
+        case Verdict::Info:
+            return "·";
+    }
+    return "·";
+}
+
+std::string render_headline_text(const CrossValidation& cv) {
+    std::ostringstream out;
+    out << "marks: phi, Z(1e-3), Z(1e-2), split ratio, P(Z) at 1e-3, g(r); "
+           "✓ agree, ✗ differ, ◌ inconclusive\n";
+    out << "N      SGMP mode          seconds  phi     Z(1e-3) Z(1e-2) split";
+    for (const auto& ref : cv.references) {
+        out << " | " << ref << ": marks  g(r) ratio  speed-up";
+    }
+    out << "\n";
+    for (const auto& row : cv.rows) {
+        char head[192];
+        std::snprintf(head, sizeof head, "%-6zu %-18s %7s  %.4f  %5.2f   %5.2f  %5.3f", row.count,
+                      row.group.c_str(), optional_fixed(row.seconds, 3).c_str(), row.value("phi"),
+                      row.value("z_mean_tol_1e-3"), row.value("z_mean_tol_1e-2"),
+                      row.value("split_ratio"));
+        out << head;
+        for (const auto& v : row.against) {
+            if (v.rows.empty()) {
+                out << " | -";
+                continue;
+            }
+            std::string text;
+            for (const auto& name : headline_metrics()) {
+                text += verdict_mark(v.row(name).verdict);
+            }
+            const auto& gr = v.row("g_r");
+            char cell[96];
+            std::snprintf(cell, sizeof cell, "  %8s  %8s", gr.ratio ? sig(*gr.ratio).c_str() : "-",
+                          speed(v.speedup).c_str());
+            out << " | " << text << cell;
+        }
+        out << "\n";
+    }
+    return out.str();
+}
+
+std::string render_crossval_markdown(const CrossValidation& cv) {
+    std::ostringstream md;
+    stand_in_markdown(md, cv);
+    matrix_markdown(md, cv);
+    headline_markdown(md, cv);
+    thesis_markdown(md, cv);
+    return md.str();
+}
+
+std::string render_headline_csv(const CrossValidation& cv, const std::string& command) {
+    std::ostringstream csv;
+    csv << "count,candidate,reference,metric,candidate_mean,candidate_sd,reference_mean,"
+           "reference_sd,tolerance,ratio,verdict,candidate_seconds,reference_seconds,"
+           "speedup_vs_reference,thesis_seconds,thesis_phi,speedup_vs_thesis,diameter,"
+           "start_height,thesis_start_height\n";
+    write_csv_preamble(csv, "sgmp-compare crossval", command, rule_statements());
+    for (const auto& row : cv.rows) {
+        for (const auto& v : row.against) {
+            if (v.rows.empty()) {
+                continue;
+            }
+            for (const auto& name : headline_metrics()) {
+                const auto& m = v.row(name);
+                const bool scalar = m.kind == MetricKind::Scalar;
+                csv << row.count << ',' << csv_field(row.group) << ',' << csv_field(v.reference)
+                    << ',' << name << ',' << (scalar ? format_number(m.candidate_mean) : "") << ','
+                    << (scalar ? format_number(m.candidate_sd) : "") << ','
+                    << (scalar ? format_number(m.reference_mean) : "") << ','
+                    << (scalar ? format_number(m.reference_sd) : "") << ','
+                    << format_number(m.tolerance) << ',' << (m.ratio ? format_number(*m.ratio) : "")
+                    << ',' << to_string(m.verdict) << ',' << number_or_empty(row.seconds) << ','
+                    << number_or_empty(v.reference_seconds) << ',' << number_or_empty(v.speedup)
+                    << ',' << (row.thesis ? format_number(row.thesis->runtime_seconds) : "") << ','
+                    << (row.thesis ? format_number(row.thesis->packing_fraction) : "") << ','
+                    << number_or_empty(row.thesis_speedup) << ',' << format_number(row.diameter)
+                    << ',' << number_or_empty(row.start_height) << ','
+                    << (row.thesis_start ? format_number(row.thesis_start->starting_height) : "")
+                    << '\n';
+            }
+        }
+    }
+    return csv.str();
+}
+
+Json crossval_json(const CrossValidation& cv) {
+    Json rows = Json::array();
+    for (const auto& row : cv.rows) {
+        Json against = Json::array();
+        for (const auto& v : row.against) {
+            Json metrics = Json::object();
+            for (const auto& m : v.rows) {
+                metrics[m.name] = {{"verdict", to_string(m.verdict)},
+                                   {"ratio", m.ratio ? Json(*m.ratio) : Json()},
+                                   {"reference_mean",
+                                    m.kind == MetricKind::Scalar ? Json(m.reference_mean) : Json()},
+                                   {"tolerance", m.tolerance}};
+            }
+            against.push_back({{"reference", v.reference},
+                               {"reference_seconds", optional_json(v.reference_seconds)},
+                               {"speedup", optional_json(v.speedup)},
+                               {"metrics", metrics}});
+        }
+        Json item{{"candidate", row.group},
+                  {"count", row.count},
+                  {"packs", row.packs},
+                  {"diameter", row.diameter},
+                  {"seconds", optional_json(row.seconds)},
+                  {"phi", row.value("phi")},
+                  {"z_mean_tol_1e-3", row.value("z_mean_tol_1e-3")},
+                  {"z_mean_tol_1e-2", row.value("z_mean_tol_1e-2")},
+                  {"split_ratio", row.value("split_ratio")},
+                  {"against", against}};
+        if (row.thesis) {
+            item["thesis"] = {{"table", row.thesis->table},
+                              {"runtime_seconds", row.thesis->runtime_seconds},
+                              {"phi", row.thesis->packing_fraction}};
+            item["speedup_vs_thesis"] = optional_json(row.thesis_speedup);
+        }
+        if (row.start_height) {
+            item["start_height"] = *row.start_height;
+        }
+        if (row.thesis_start) {
+            item["thesis_start"] = {{"table", row.thesis_start->table},
+                                    {"grid", row.thesis_start->grid},
+                                    {"starting_height", row.thesis_start->starting_height}};
+        }
+        rows.push_back(item);
+    }
+    Json stand_ins = Json::array();
+    for (const auto& s : cv.stand_ins) {
+        stand_ins.push_back({{"candidate", s.candidate},
+                             {"reference", s.reference},
+                             {"stands_in", s.stands_in()},
+                             {"agree", s.agree},
+                             {"differ", s.differ},
+                             {"inconclusive", s.inconclusive},
+                             {"speedup", optional_json(s.speedup)},
+                             {"speedup_count", s.speedup_count}});
+    }
+    return {{"schema_version", kSchemaVersion}, {"candidates", cv.candidates},
+            {"references", cv.references},      {"counts", cv.counts},
+            {"stand_ins", stand_ins},           {"headline", rows}};
+}
+
+}  // namespace sgmp::compare

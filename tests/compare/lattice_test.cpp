@@ -113,6 +113,25 @@ BOOST_AUTO_TEST_CASE(g_of_r_has_the_shells_at_the_right_distances) {
     }
 }
 
+BOOST_AUTO_TEST_CASE(split_ratio_of_the_lattices) {
+    // Pairs in the windows |r − √3 d| ≤ 0.05 d and |r − 2 d| ≤ 0.05 d over their volumes
+    // 4π/3 [(r0 + a)³ − (r0 − a)³]: FCC has 24 and 12 neighbours there, simple cubic 8 and 6,
+    // BCC none at √3 d. Exact up to rounding of the volumes (1e-9 relative).
+    const auto volume = [](double r0) {
+        const double a = kSplitWindowHalfWidth;
+        return std::pow(r0 + a, 3) - std::pow(r0 - a, 3);
+    };
+    const double fcc = (24.0 / volume(std::sqrt(3.0))) / (12.0 / volume(2.0));
+    const double sc = (8.0 / volume(std::sqrt(3.0))) / (6.0 / volume(2.0));
+    const std::vector<double> expected{fcc, 0.0, sc};
+    for (std::size_t i = 0; i < cases().size(); ++i) {
+        const double split = measure_lattice(cases()[i]).local.rdf.split_ratio;
+        BOOST_TEST(std::abs(split - expected[i]) <= 1e-9 * std::max(1.0, expected[i]),
+                   "lattice " << i << ": " << split << " vs " << expected[i]);
+    }
+    BOOST_TEST(fcc == 2.6664, boost::test_tools::tolerance(1e-4));
+}
+
 BOOST_AUTO_TEST_CASE(q6_of_the_lattices) {
     // Steinhardt values: FCC 0.57452 (12 neighbours), simple cubic 1/(2√2) = 0.35355
     // (6 neighbours), BCC with its 8 + 6 neighbours inside 1.2 d: 0.51069.

@@ -69,6 +69,31 @@ BOOST_AUTO_TEST_CASE(uniform_random_points_give_g_equal_to_one) {
     }
 }
 
+BOOST_AUTO_TEST_CASE(split_ratio_of_a_hand_built_cluster) {
+    // One origin with three neighbours at √3·d and two at 2·d (and one far above, which lifts
+    // the top of the space so every window lies inside it): split = (3 / V(√3)) / (2 / V(2))
+    // with V(r0) = (r0 + 0.05)³ − (r0 − 0.05)³, whatever the density. 1e-9 relative: volume
+    // rounding only.
+    const double d = 0.1;
+    const double s3 = std::sqrt(3.0) * d;
+    const std::vector<Vec3> centres{Vec3(0, 0, 0),       Vec3(s3, 0, 0),    Vec3(-s3, 0, 0),
+                                    Vec3(0, 0, s3),      Vec3(0, 2 * d, 0), Vec3(0, -2 * d, 0),
+                                    Vec3(0.3, 0.45, 0.3)};
+    Pack pack;
+    for (std::size_t i = 0; i < centres.size(); ++i) {
+        pack.particles.push_back(Particle{static_cast<std::int64_t>(i), centres[i], d / 2, 0});
+    }
+    MeasureOptions options;
+    options.region = Box{Vec3::Constant(-0.01), Vec3::Constant(0.01)};  // the origin alone
+    const Measurement m = measure(pack, options);
+    const auto volume = [](double r0) { return std::pow(r0 + 0.05, 3) - std::pow(r0 - 0.05, 3); };
+    const double expected = (3.0 / volume(std::sqrt(3.0))) / (2.0 / volume(2.0));
+    BOOST_TEST(m.local.rdf.split_pairs[0] == 3);
+    BOOST_TEST(m.local.rdf.split_pairs[1] == 2);
+    BOOST_TEST(std::abs(m.local.rdf.split_ratio - expected) <= 1e-9 * expected,
+               m.local.rdf.split_ratio << " vs " << expected);
+}
+
 BOOST_AUTO_TEST_CASE(g_of_r_space_choices) {
     // Default: neighbour centres lie in the container shrunk by d/2, up to the highest
     // centre; --gr-container-space: the container up to the top sphere.

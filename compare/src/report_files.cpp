@@ -40,6 +40,8 @@ ReportContext write_report(const fs::path& directory, bool overwrite, const Repo
     write_directory_atomically(directory, overwrite, [&](const fs::path& temporary) {
         const PlotResult plots = make_plots(
             context.plots_per_count ? panels_per_count(report) : panels_per_comparison(report),
+            context.plots_per_count ? trends_of(report, {"phi", "z_mean_tol_1e-3", "split_ratio"})
+                                    : std::vector<Trend>{},
             temporary);
         context.plots_made = plots.made;
         context.plots_note = plots.note;

@@ -1,6 +1,7 @@
 #include "sgmp/compare/report_plots.hpp"
 
 #include <unistd.h>
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <set>
@@ -61,7 +62,157 @@ std::string mean_label(const std::string& label, std::size_t packs) {
     return label + " (mean of " + std::to_string(packs) + ")";
 }
 
+/// Okabe–Ito colours (distinguishable with the common colour-vision deficiencies), no yellow.
+constexpr const char* kPalette =
+    "set linetype 1 lc rgb '#0072B2' lw 2\nset linetype 2 lc rgb '#D55E00' lw 2\n"
+    "set linetype 3 lc rgb '#009E73' lw 2\nset linetype 4 lc rgb '#CC79A7' lw 2\n"
+    "set linetype 5 lc rgb '#E69F00' lw 2\nset linetype 6 lc rgb '#56B4E9' lw 2\n"
+    "set linetype 7 lc rgb '#000000' lw 2\nset linetype 8 lc rgb '#999999' lw 2\n"
+    "set linetype cycle 8\n";
+
+/// Tick labels 10ᵏ for a log axis from 10⁻⁶ to 10⁻¹.
+constexpr const char* kPowerTicks =
+    "'10⁻⁶' 1e-6, '10⁻⁵' 1e-5, '10⁻⁴' 1e-4, '10⁻³' 1e-3, '10⁻²' 1e-2, '10⁻¹' 1e-1";
+
+/// Mean ± 2 sd as three columns (x, low, high), for bands.
+std::string band_columns(const std::vector<double>& x, const std::vector<double>& mean,
+                         const std::vector<double>& sd) {
+    std::ostringstream out;
+    for (std::size_t k = 0; k < x.size() && k < mean.size() && k < sd.size(); ++k) {
+        out << format_number(x[k]) << ' ' << format_number(mean[k] - 2.0 * sd[k]) << ' '
+            << format_number(mean[k] + 2.0 * sd[k]) << '\n';
+    }
+    return out.str();
+}
+
+/// g(r) beyond contact (r ≥ 1.1 d, where the verdict is judged) at a readable scale, the
+/// references as mean ± 2 sd bands, and an inset of the contact region 0.9–1.15 d.
+void write_gr_plot(std::ostringstream& gp, const fs::path& plots, const PlotPanel& panel) {
+    const std::string& stem = panel.stem;
+    std::ostringstream main;
+    std::ostringstream inset;
+    for (std::size_t k = 0; k < panel.curves.size(); ++k) {
+        const auto& curve = panel.curves[k];
+        const std::string file = stem + "_gr_" + std::to_string(k) + ".dat";
+        write_text(plots / file, columns(curve.curves->gr_r, curve.curves->gr));
+        const std::string colour = " lt " + std::to_string(k + 1);
+        if (curve.reference) {
+            const std::string band = stem + "_grband_" + std::to_string(k) + ".dat";
+            write_text(plots / band,
+                       band_columns(curve.curves->gr_r, curve.curves->gr, curve.curves->gr_sd));
+            main << "'" << band << "' using 1:2:3 with filledcurves fs transparent solid 0.25"
+                 << colour << " notitle, ";
+        }
+        main << "'" << file << "' with lines" << colour << (curve.reference ? " dt 2" : "")
+             << " title " << quoted(curve.label + (curve.reference ? " ± 2 sd" : "")) << ", ";
+        inset << "'" << file << "' with lines" << colour << (curve.reference ? " dt 2" : "")
+              << " notitle, ";
+    }
+    const auto trimmed = [](std::string text) { return text.substr(0, text.size() - 2); };
+    gp << "set output '" << stem << "_gr.svg'\nset multiplot\nset title "
+       << quoted("g(r) beyond contact: " + panel.what)
+       << "\nset xlabel 'r / d (mean diameter)'\nset ylabel 'g(r) (ratio)'\nunset logscale\n"
+       << "set xrange [1.1:5]\nset yrange [0:*]\nplot " << trimmed(main.str()) << "\n"
+       << "set origin 0.36,0.56\nset size 0.28,0.34\nunset title\n"
+       << "set xlabel 'contact region, r / d' offset 0,0.5\nunset ylabel\n"
+       << "set xrange [0.9:1.15]\nset yrange [0:*]\nset xtics 0.1\nset ytics 10\n"
+       << "set object 1 rectangle from graph 0,0 to graph 1,1 behind fc rgb 'white' fs solid\n"
+       << "plot " << trimmed(inset.str()) << "\n"
+       << "unset object 1\nunset multiplot\nset origin 0,0\nset size 1,1\n"
+       << "set xrange [*:*]\nset yrange [*:*]\nset xtics autofreq\nset ytics autofreq\n";
+}
+
+/// φ(N), Z(N) and split ratio (N): every candidate as points and lines, every reference as
+/// a mean ± 2 sd band over its seeds.
+std::vector<std::string> write_trend_plots(std::ostringstream& gp, const fs::path& plots,
+                                           const std::vector<Trend>& trends) {
+    std::vector<std::string> files;
+    std::vector<std::string> metrics;
+    for (const auto& t : trends) {
+        if (std::find(metrics.begin(), metrics.end(), t.metric) == metrics.end()) {
+            metrics.push_back(t.metric);
+        }
+    }
+    for (const auto& metric : metrics) {
+        std::ostringstream plot;
+        std::size_t k = 0;
+        std::string label;
+        for (const auto& t : trends) {
+            if (t.metric != metric) {
+                continue;
+            }
+            label = t.metric_label;
+            ++k;
+            const std::string file = "trend_" + metric + "_" + std::to_string(k) + ".dat";
+            const std::string colour = " lt " + std::to_string(k);
+            if (t.reference) {
+                write_text(plots / file, band_columns(t.count, t.mean, t.sd));
+                plot << "'" << file << "' using 1:2:3 with filledcurves fs transparent solid 0.3"
+                     << colour << " title " << quoted(t.label + " ± 2 sd") << ", ";
+            } else {
+                write_text(plots / file, columns(t.count, t.mean));
+                plot << "'" << file << "' with linespoints pt 7 ps 0.8" << colour << " title "
+                     << quoted(t.label) << ", ";
+            }
+        }
+        const std::string text = plot.str();
+        gp << "set output 'trend_" << metric << ".svg'\nset title " << quoted(label + " against N")
+           << "\nset logscale x\nset xlabel 'N (particles)'\nset ylabel " << quoted(label)
+           << "\nplot " << text.substr(0, text.size() - 2) << "\nunset logscale\n";
+        files.push_back("plots/trend_" + metric + ".svg");
+    }
+    return files;
+}
+
 }  // namespace
+
+std::vector<Trend> trends_of(const Report& report, const std::vector<std::string>& metrics) {
+    std::vector<Trend> trends;
+    const auto series = [&](const std::string& metric, const std::string& label,
+                            bool reference) -> Trend& {
+        for (auto& t : trends) {
+            if (t.metric == metric && t.label == label && t.reference == reference) {
+                return t;
+            }
+        }
+        trends.push_back(Trend{metric, metric_rule(metric).label, label, reference, {}, {}, {}});
+        return trends.back();
+    };
+    for (const auto& metric : metrics) {
+        for (const auto& c : report.comparisons) {
+            const MetricRow& row = c.row(metric);
+            const auto n = static_cast<double>(c.count);
+            Trend& a = series(metric, c.candidate, false);
+            if (a.count.empty() || a.count.back() != n) {
+                a.count.push_back(n);
+                a.mean.push_back(row.candidate_mean);
+                a.sd.push_back(row.candidate_sd);
+            }
+            Trend& b = series(metric, c.reference, true);
+            if (std::find(b.count.begin(), b.count.end(), n) == b.count.end()) {
+                b.count.push_back(n);
+                b.mean.push_back(row.reference_mean);
+                b.sd.push_back(row.reference_sd);
+            }
+        }
+    }
+    for (auto& t : trends) {  // references in count order (comparisons come per candidate)
+        std::vector<std::size_t> order(t.count.size());
+        for (std::size_t i = 0; i < order.size(); ++i) {
+            order[i] = i;
+        }
+        std::sort(order.begin(), order.end(),
+                  [&](std::size_t x, std::size_t y) { return t.count[x] < t.count[y]; });
+        Trend sorted = t;
+        for (std::size_t i = 0; i < order.size(); ++i) {
+            sorted.count[i] = t.count[order[i]];
+            sorted.mean[i] = t.mean[order[i]];
+            sorted.sd[i] = t.sd[order[i]];
+        }
+        t = sorted;
+    }
+    return trends;
+}
 
 std::optional<fs::path> find_gnuplot() {
     if (const char* forced = std::getenv("SGMP_GNUPLOT")) {
@@ -120,7 +271,8 @@ std::vector<PlotPanel> panels_per_count(const Report& report) {
     return panels;
 }
 
-PlotResult make_plots(const std::vector<PlotPanel>& panels, const fs::path& directory) {
+PlotResult make_plots(const std::vector<PlotPanel>& panels, const std::vector<Trend>& trends,
+                      const fs::path& directory) {
     PlotResult result;
     const auto gnuplot = find_gnuplot();
     if (!gnuplot) {
@@ -134,11 +286,12 @@ PlotResult make_plots(const std::vector<PlotPanel>& panels, const fs::path& dire
     const fs::path plots = directory / "plots";
     fs::create_directories(plots);
     std::ostringstream gp;
-    gp << "set terminal svg size 800,500 dynamic noenhanced font 'sans,12' background rgb "
-          "'white'\nset key top right\nset grid\n";
+    gp << "set terminal svg size 900,460 dynamic noenhanced font 'sans,12' background rgb "
+          "'white'\nset key outside right top samplen 2\nset grid\n"
+       << kPalette;
     const auto& tolerances = coordination_tolerances();
     const auto& names = coordination_tolerance_names();
-    std::vector<std::string> files;
+    std::vector<std::string> files = write_trend_plots(gp, plots, trends);
     for (const PlotPanel& panel : panels) {
         const std::string& stem = panel.stem;
         const std::string& what = panel.what;
@@ -149,16 +302,7 @@ PlotResult make_plots(const std::vector<PlotPanel>& panels, const fs::path& dire
             return stem + "_" + kind + "_" + std::to_string(k) + ".dat";
         };
 
-        gp << "set output '" << stem << "_gr.svg'\nset title " << quoted("g(r): " + what)
-           << "\nset xlabel 'r / d (mean diameter)'\nset ylabel 'g(r) (ratio)'\nunset logscale\n"
-           << "plot ";
-        for (std::size_t k = 0; k < panel.curves.size(); ++k) {
-            const auto& curve = panel.curves[k];
-            write_text(plots / data_file("gr", k), columns(curve.curves->gr_r, curve.curves->gr));
-            gp << (k == 0 ? "" : ", ") << "'" << data_file("gr", k) << "' with lines lw 2"
-               << style(curve) << " title " << quoted(curve.label);
-        }
-        gp << "\n";
+        write_gr_plot(gp, plots, panel);
         files.push_back("plots/" + stem + "_gr.svg");
 
         // Two tolerances for a pair of curves; only δ = 1e-2 when more curves share a plot.
@@ -187,9 +331,9 @@ PlotResult make_plots(const std::vector<PlotPanel>& panels, const fs::path& dire
         files.push_back("plots/" + stem + "_pz.svg");
 
         gp << "set output '" << stem << "_zdelta.svg'\nset title "
-           << quoted("Z(delta), gap <= delta d: " + what)
-           << "\nset logscale x\nset xlabel 'delta (ratio to d)'\nset ylabel 'mean Z "
-              "(contacts/particle)'\nplot ";
+           << quoted("Z(delta), gap <= delta d: " + what) << "\nset logscale x\nset xtics ("
+           << kPowerTicks
+           << ")\nset xlabel 'δ (gap over d)'\nset ylabel 'mean Z (contacts/particle)'\nplot ";
         for (std::size_t k = 0; k < panel.curves.size(); ++k) {
             const auto& curve = panel.curves[k];
             std::vector<double> deltas;
@@ -204,12 +348,11 @@ PlotResult make_plots(const std::vector<PlotPanel>& panels, const fs::path& dire
             gp << (k == 0 ? "" : ", ") << "'" << data_file("zd", k) << "' with linespoints lw 2"
                << style(curve) << " title " << quoted(curve.label);
         }
-        gp << "\nunset logscale\n";
+        gp << "\nunset logscale\nset xtics autofreq\n";
         files.push_back("plots/" + stem + "_zdelta.svg");
 
         gp << "set output '" << stem << "_phiy.svg'\nset title " << quoted("phi(y): " + what)
-           << "\nset key bottom left\nset xlabel 'phi (ratio)'\nset ylabel 'y (length "
-              "units)'\nplot ";
+           << "\nset xlabel 'φ (ratio)'\nset ylabel 'y (length units)'\nplot ";
         for (std::size_t k = 0; k < panel.curves.size(); ++k) {
             const auto& curve = panel.curves[k];
             write_text(plots / data_file("phiy", k),
@@ -217,7 +360,7 @@ PlotResult make_plots(const std::vector<PlotPanel>& panels, const fs::path& dire
             gp << (k == 0 ? "" : ", ") << "'" << data_file("phiy", k)
                << "' using 2:1 with lines lw 2" << style(curve) << " title " << quoted(curve.label);
         }
-        gp << "\nset key top right\n";
+        gp << "\n";
         files.push_back("plots/" + stem + "_phiy.svg");
     }
     gp << "unset output\n";

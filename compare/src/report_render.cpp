@@ -157,7 +157,10 @@ std::vector<std::string> rule_statements() {
     return rules;
 }
 
-std::string render_markdown(const Report& report, const ReportContext& context) {
+namespace {
+
+/// The Markdown page; the HTML page draws its own plots section instead of the file list.
+std::string markdown_page(const Report& report, const ReportContext& context, bool plot_list) {
     std::ostringstream md;
     md << "# " << context.title << "\n\n";
     md << "Made by sgmp-compare " << sgmp::version() << ": `" << context.command << "`\n\n";
@@ -166,8 +169,11 @@ std::string render_markdown(const Report& report, const ReportContext& context) 
     for (const auto& rule : rule_statements()) {
         md << "- " << rule << "\n";
     }
-    md << "\n## Plots\n\n";
-    if (context.plots_made) {
+    if (plot_list) {
+        md << "\n## Plots\n\n";
+    }
+    if (!plot_list) {
+    } else if (context.plots_made) {
         md << "Open index.html (self-contained), or the SVG files:\n\n";
         for (const auto& file : context.plot_files) {
             md << "- [" << file << "](" << file << ")\n";
@@ -192,6 +198,12 @@ std::string render_markdown(const Report& report, const ReportContext& context) 
     md << "\nAll provenance keys of every input are in report.json. Parameters: `"
        << context.parameters.dump() << "`\n";
     return md.str();
+}
+
+}  // namespace
+
+std::string render_markdown(const Report& report, const ReportContext& context) {
+    return markdown_page(report, context, true);
 }
 
 std::string render_csv(const Report& report, const ReportContext& context) {
@@ -297,19 +309,52 @@ Json render_json(const Report& report, const ReportContext& context) {
 
 namespace {
 
-/// The plots section: every SVG inline with its file name as caption.
+/// The plots section: the trends against N inline, then the plots of each count (or
+/// comparison) in a collapsible block; every SVG inline with its file name as caption.
 std::string plots_html(const ReportContext& context, const std::vector<std::string>& svgs) {
     std::ostringstream html;
-    html << "<h2 id=\"plots\">Plots</h2>\n";
+    html << "<h2>Plots</h2>\n";
     if (!context.plots_made) {
         html << "<p>Plots were skipped: " << html_escape(context.plots_note) << "</p>\n";
         return html.str();
     }
+    std::string group;
+    bool open = false;
     for (std::size_t i = 0; i < svgs.size(); ++i) {
-        html << "<figure>" << svgs[i] << "<figcaption>" << html_escape(context.plot_files[i])
+        const std::string& file = context.plot_files[i];
+        const std::string name = file.substr(file.find('/') + 1);
+        const bool trend = name.rfind("trend_", 0) == 0;
+        const std::string stem = trend ? "" : name.substr(0, name.rfind('_'));
+        if (!trend && stem != group) {
+            html << (open ? "</details>\n" : "") << "<details><summary>" << html_escape(stem)
+                 << ": g(r), P(Z), Z(δ), φ(y)</summary>\n";
+            group = stem;
+            open = true;
+        }
+        html << "<figure>" << svgs[i] << "<figcaption>" << html_escape(file)
              << "</figcaption></figure>\n";
     }
+    html << (open ? "</details>\n" : "");
     return html.str();
+}
+
+/// Ids for the page's h2 headings and a table of contents linking them.
+std::string with_contents(std::string body) {
+    std::ostringstream nav;
+    nav << "<nav><b>Contents</b>:";
+    std::size_t n = 0;
+    for (std::size_t at = body.find("<h2>"); at != std::string::npos;
+         at = body.find("<h2>", at + 1)) {
+        const std::size_t end = body.find("</h2>", at);
+        const std::string title = body.substr(at + 4, end - at - 4);
+        const std::string id = "s" + std::to_string(++n);
+        body.replace(at, 4, "<h2 id=\"" + id + "\">");
+        nav << (n == 1 ? " " : " · ") << "<a href=\"#" << id << "\">" << title << "</a>";
+    }
+    nav << "</nav>\n";
+    const std::size_t first = body.find("<h2");
+    body.insert(first == std::string::npos ? 0 : first, nav.str());
+    return body;
 }
 
 const char* kStyle =
@@ -321,6 +366,7 @@ const char* kStyle =
     ".inconclusive{color:#777}.info{color:#555;font-style:italic}"
     "span.mark{font-family:monospace;font-size:15px}"
     "figure{display:inline-block;margin:4px}figcaption{font-size:12px;color:#555}"
+    "figure svg{width:640px;height:auto}summary{cursor:pointer;margin:4px 0}"
     "nav{background:#f7f7f7;padding:4px 10px;border:1px solid #ddd}</style>";
 
 /// Verdict words and marks in table cells get their colour class.
@@ -355,8 +401,7 @@ std::string colour_verdicts(std::string html) {
 
 std::string render_html(const Report& report, const ReportContext& context,
                         const std::vector<std::string>& svgs) {
-    (void)report;
-    const std::string markdown = render_markdown(report, context);
+    const std::string markdown = markdown_page(report, context, false);
     // The plots go after the lead sections (before "## Rules") when plotted per count.
     std::string body = colour_verdicts(markdown_to_html(markdown));
     const std::string plots = plots_html(context, svgs);
@@ -370,7 +415,7 @@ std::string render_html(const Report& report, const ReportContext& context,
     std::ostringstream html;
     html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>"
          << html_escape(context.title) << "</title>" << kStyle << "</head><body>\n"
-         << body << "</body></html>\n";
+         << with_contents(body) << "</body></html>\n";
     return html.str();
 }
 

@@ -1,7 +1,9 @@
 #pragma once
 /// @file report_plots.hpp
-/// Plots of a report drawn by gnuplot as SVG: per comparison, g(r) of both sides overlaid,
-/// P(Z), Z(δ) and φ(y) (mean curves over each side's packs).
+/// Plots of a report drawn by gnuplot as SVG: the trends of φ, Z and the split ratio
+/// against N, and per comparison (or per count) g(r) beyond contact with a contact-region
+/// inset, P(Z), Z(δ) and φ(y) (mean curves over each side's packs; references as bands
+/// of mean ± 2 sd where shown). Okabe–Ito colours, legends outside the data.
 
 #include <filesystem>
 #include <optional>
@@ -41,8 +43,24 @@ std::vector<PlotPanel> panels_per_comparison(const Report& report);
 /// once); P(Z) is then drawn at δ = 1e-2 only.
 std::vector<PlotPanel> panels_per_count(const Report& report);
 
-/// Writes the data files and gnuplot script into `directory`/plots and runs gnuplot there.
-/// The panels point into the report they were made from, which must outlive the call.
-PlotResult make_plots(const std::vector<PlotPanel>& panels, const std::filesystem::path& directory);
+/// One group's values of a scalar metric against N: a candidate (points and lines) or a
+/// reference (a mean ± 2 sd band).
+struct Trend {
+    std::string metric;
+    std::string metric_label;
+    std::string label;
+    bool reference = false;
+    std::vector<double> count;
+    std::vector<double> mean;
+    std::vector<double> sd;
+};
+/// The trends of `metrics` over every comparison of the report.
+std::vector<Trend> trends_of(const Report& report, const std::vector<std::string>& metrics);
+
+/// Writes the data files and gnuplot script into `directory`/plots and runs gnuplot there:
+/// one plot per trend metric (trend_<metric>.svg), then the panels. The panels point into
+/// the report they were made from, which must outlive the call.
+PlotResult make_plots(const std::vector<PlotPanel>& panels, const std::vector<Trend>& trends,
+                      const std::filesystem::path& directory);
 
 }  // namespace sgmp::compare

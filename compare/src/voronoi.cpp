@@ -13,6 +13,8 @@
 #include <string>
 #include <tuple>
 
+#include "sgmp/compare/parallel.hpp"
+
 namespace sgmp::compare {
 namespace {
 
@@ -20,6 +22,10 @@ namespace {
 constexpr double kParticlesPerBlock = 6.0;
 /// Initial particle slots per block (voro++ doubles them when a block fills).
 constexpr int kInitialBlockMemory = 8;
+/// Threads split the measured cells, each with its own copy of the tessellation's container
+/// (~60 bytes per particle): at most kMaxTasks copies, and only for ≥ kCellsPerTask cells each.
+constexpr std::size_t kMaxTasks = 4;
+constexpr std::size_t kCellsPerTask = 20000;
 
 std::string text_of(const Vec3& v) {
     std::ostringstream out;
@@ -107,54 +113,61 @@ struct Cell {
     double volume = 0.0;
     double sphere_volume = 0.0;
     bool at_cap = false;
+    bool empty = false;
 };
 
-/// Tessellates with `VoroContainer` (voro::container or voro::container_poly) and returns
-/// the cells of the origins flagged in `measured`, indexed like `sorted`; cells of other
-/// origins are left at volume 0.
+/// Tessellates with `VoroContainer` (voro::container or voro::container_poly) and fills
+/// `cells[slot[k]]` for the origins k (indices into `sorted`) with slot[k] ≥ 0. The measured
+/// origins are cut into `tasks` ranges of slots; each task builds its own, identical,
+/// container, so a cell comes out with the same bits whichever task computes it.
 template <class VoroContainer, class Put>
-std::vector<Cell> tessellate(const std::vector<Particle>& particles, const std::vector<int>& sorted,
-                             const std::vector<char>& measured, const Box& bounds, Put put) {
+void tessellate(const std::vector<Particle>& particles, const std::vector<int>& sorted,
+                const std::vector<int>& slot, const Box& bounds, std::size_t tasks, Put put,
+                std::vector<Cell>& cells) {
     const Vec3 sides = bounds.hi - bounds.lo;
     const auto blocks = block_grid(sides, particles.size());
-    VoroContainer voro(bounds.lo.x(), bounds.hi.x(), bounds.lo.y(), bounds.hi.y(), bounds.lo.z(),
-                       bounds.hi.z(), blocks[0], blocks[1], blocks[2], false, false, false,
-                       kInitialBlockMemory);
-    for (std::size_t k = 0; k < sorted.size(); ++k) {
-        put(voro, static_cast<int>(k), particles[static_cast<std::size_t>(sorted[k])]);
-    }
-    if (static_cast<std::size_t>(voro.total_particles()) != sorted.size()) {
-        reject("a centre lies on a container wall (the tessellation could not place it)");
-    }
     const double cap = bounds.hi.y();
     const double cap_tolerance = 1e-9 * sides.maxCoeff();
-    std::vector<Cell> cells(sorted.size());
-    voro::voronoicell cell;
-    voro::c_loop_all loop(voro);
-    if (loop.start()) {
+    parallel_for(tasks, [&](std::size_t task) {
+        const std::size_t first = task * cells.size() / tasks;
+        const std::size_t last = (task + 1) * cells.size() / tasks;
+        VoroContainer voro(bounds.lo.x(), bounds.hi.x(), bounds.lo.y(), bounds.hi.y(),
+                           bounds.lo.z(), bounds.hi.z(), blocks[0], blocks[1], blocks[2], false,
+                           false, false, kInitialBlockMemory);
+        for (std::size_t k = 0; k < sorted.size(); ++k) {
+            put(voro, static_cast<int>(k), particles[static_cast<std::size_t>(sorted[k])]);
+        }
+        if (static_cast<std::size_t>(voro.total_particles()) != sorted.size()) {
+            reject("a centre lies on a container wall (the tessellation could not place it)");
+        }
+        voro::voronoicell cell;
+        voro::c_loop_all loop(voro);
+        if (!loop.start()) {
+            return;
+        }
         do {
-            const auto k = static_cast<std::size_t>(loop.pid());
-            if (!measured[k]) {
+            const int s = slot[static_cast<std::size_t>(loop.pid())];
+            if (s < 0 || static_cast<std::size_t>(s) < first ||
+                static_cast<std::size_t>(s) >= last) {
                 continue;
             }
-            const Particle& p = particles[static_cast<std::size_t>(sorted[k])];
+            Cell& out = cells[static_cast<std::size_t>(s)];
             if (!voro.compute_cell(cell, loop)) {
-                reject("particle " + std::to_string(p.id) + " at " + text_of(p.center) +
-                       " has an empty cell (a sphere swallowed by a larger overlapping one)");
+                out.empty = true;
+                continue;
             }
-            Cell& out = cells[k];
+            const double r = particles[static_cast<std::size_t>(sorted[loop.pid()])].radius;
             out.volume = cell.volume();
-            out.sphere_volume = 4.0 / 3.0 * std::numbers::pi * p.radius * p.radius * p.radius;
+            out.sphere_volume = 4.0 / 3.0 * std::numbers::pi * r * r * r;
             out.phi = out.sphere_volume / out.volume;
-            // voro++ stores vertices relative to the centre, doubled.
+            // voro++ stores the vertices relative to the centre, doubled.
             double top = -std::numeric_limits<double>::infinity();
             for (int v = 0; v < cell.p; ++v) {
                 top = std::max(top, cell.pts[3 * v + 1]);
             }
-            out.at_cap = p.center.y() + 0.5 * top >= cap - cap_tolerance;
+            out.at_cap = loop.y() + 0.5 * top >= cap - cap_tolerance;
         } while (loop.inc());
-    }
-    return cells;
+    });
 }
 
 }  // namespace
@@ -177,29 +190,42 @@ VoronoiPhi voronoi_local_phi(const std::vector<Particle>& particles, const Conta
     const double mean_diameter = 2.0 * radius_sum / static_cast<double>(particles.size());
     const Box bounds = container.box_up_to(top + mean_diameter);
 
-    std::vector<char> measured(sorted.size(), 0);
+    std::vector<int> slot(sorted.size(), -1);  // index among the measured origins
     std::int64_t count = 0;
     for (std::size_t k = 0; k < sorted.size(); ++k) {
         if (region.contains(particles[static_cast<std::size_t>(sorted[k])].center)) {
-            measured[k] = 1;
-            ++count;
+            slot[k] = static_cast<int>(count++);
         }
     }
     if (count == 0) {
         reject("region " + text_of(region.lo) + "–" + text_of(region.hi) + " holds no centre");
     }
 
-    const std::vector<Cell> cells =
-        equal_radii
-            ? tessellate<voro::container>(particles, sorted, measured, bounds,
-                                          [](voro::container& voro, int k, const Particle& p) {
-                                              voro.put(k, p.center.x(), p.center.y(), p.center.z());
-                                          })
-            : tessellate<voro::container_poly>(
-                  particles, sorted, measured, bounds,
-                  [](voro::container_poly& voro, int k, const Particle& p) {
-                      voro.put(k, p.center.x(), p.center.y(), p.center.z(), p.radius);
-                  });
+    std::vector<Cell> cells(static_cast<std::size_t>(count));
+    const std::size_t tasks = std::clamp<std::size_t>(
+        std::min<std::size_t>(thread_count(), cells.size() / kCellsPerTask), 1, kMaxTasks);
+    if (equal_radii) {
+        tessellate<voro::container>(
+            particles, sorted, slot, bounds, tasks,
+            [](voro::container& voro, int k, const Particle& p) {
+                voro.put(k, p.center.x(), p.center.y(), p.center.z());
+            },
+            cells);
+    } else {
+        tessellate<voro::container_poly>(
+            particles, sorted, slot, bounds, tasks,
+            [](voro::container_poly& voro, int k, const Particle& p) {
+                voro.put(k, p.center.x(), p.center.y(), p.center.z(), p.radius);
+            },
+            cells);
+    }
+    for (std::size_t k = 0; k < sorted.size(); ++k) {
+        if (slot[k] >= 0 && cells[static_cast<std::size_t>(slot[k])].empty) {
+            const Particle& p = particles[static_cast<std::size_t>(sorted[k])];
+            reject("particle " + std::to_string(p.id) + " at " + text_of(p.center) +
+                   " has an empty cell (a sphere swallowed by a larger overlapping one)");
+        }
+    }
 
     VoronoiPhi result;
     result.cells = count;
@@ -207,11 +233,7 @@ VoronoiPhi voronoi_local_phi(const std::vector<Particle>& particles, const Conta
     const auto bins = static_cast<double>(options.histogram_bins);
     double phi_sum = 0.0;
     double sphere_volume = 0.0;
-    for (std::size_t k = 0; k < cells.size(); ++k) {
-        if (!measured[k]) {
-            continue;
-        }
-        const Cell& cell = cells[k];
+    for (const Cell& cell : cells) {
         phi_sum += cell.phi;
         result.cell_volume += cell.volume;
         sphere_volume += cell.sphere_volume;
@@ -222,11 +244,9 @@ VoronoiPhi voronoi_local_phi(const std::vector<Particle>& particles, const Conta
     const auto n = static_cast<double>(count);
     result.mean = phi_sum / n;
     double square_sum = 0.0;
-    for (std::size_t k = 0; k < cells.size(); ++k) {
-        if (measured[k]) {
-            const double deviation = cells[k].phi - result.mean;
-            square_sum += deviation * deviation;
-        }
+    for (const Cell& cell : cells) {
+        const double deviation = cell.phi - result.mean;
+        square_sum += deviation * deviation;
     }
     result.sd = std::sqrt(square_sum / n);
     result.global = sphere_volume / result.cell_volume;

@@ -12,8 +12,10 @@
 #include <string>
 
 #include "sgmp/compare/measure.hpp"
+#include "sgmp/compare/parallel.hpp"
 #include "sgmp/compare/voronoi.hpp"
 #include "sgmp/pack/pack_file.hpp"
+#include "synthetic_packs.hpp"
 
 using namespace sgmp;
 using namespace sgmp::compare;
@@ -242,6 +244,24 @@ BOOST_AUTO_TEST_CASE(result_does_not_depend_on_particle_order) {
             BOOST_TEST(first.histogram == second.histogram);
         }
     }
+}
+
+BOOST_AUTO_TEST_CASE(result_does_not_depend_on_the_thread_count) {
+    // 45,000 cells: enough for the kernel to split them between two or more containers.
+    const Pack pack = sgmp::testing::jittered_fcc_pack(45000, 1.06, 0.015, 5);
+    const Container container;
+    set_thread_count(1);
+    const auto serial = voronoi_local_phi(pack.particles, container, everything(container));
+    set_thread_count(4);
+    const auto threaded = voronoi_local_phi(pack.particles, container, everything(container));
+    set_thread_count(0);
+    BOOST_TEST(serial.cells == 45000);
+    BOOST_TEST(serial.mean == threaded.mean);
+    BOOST_TEST(serial.sd == threaded.sd);
+    BOOST_TEST(serial.global == threaded.global);
+    BOOST_TEST(serial.cell_volume == threaded.cell_volume);
+    BOOST_TEST(serial.cap_cells == threaded.cap_cells);
+    BOOST_TEST(serial.histogram == threaded.histogram);
 }
 
 BOOST_AUTO_TEST_CASE(bad_input_is_rejected_with_the_value_and_the_rule) {

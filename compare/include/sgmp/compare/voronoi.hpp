@@ -45,10 +45,11 @@ struct VoronoiPhi {
 
 /// Local packing fractions of the centres inside `region`, from the cells of all
 /// `particles` in `container` capped as above. Deterministic: the same set of particles
-/// gives the same bytes in any order. Throws std::invalid_argument for no particles, a
-/// radius that is not positive and finite, a centre outside the container or not finite, an
-/// empty container or region, a region holding no centre, zero histogram bins, and a cell
-/// that vanishes (a radical cell swallowed by a much larger overlapping sphere).
+/// gives the same bytes in any order and for any thread count (threads split the measured
+/// cells, each with its own copy of voro++'s container). Throws std::invalid_argument for no
+/// particles, a radius that is not positive and finite, a centre outside the container or not
+/// finite, an empty container or region, a region holding no centre, zero histogram bins, and a
+/// cell that vanishes (a radical cell swallowed by a much larger overlapping sphere).
 VoronoiPhi voronoi_local_phi(const std::vector<Particle>& particles, const Container& container,
                              const Box& region, const VoronoiOptions& options = {});
 

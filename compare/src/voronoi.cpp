@@ -177,9 +177,9 @@ VoronoiPhi voronoi_local_phi(const std::vector<Particle>& particles, const Conta
     check_input(particles, container, region, options);
 
     const std::vector<int> sorted = canonical_order(particles);
+    // Summed in canonical order: the cap must not depend on the input order.
     double top = -std::numeric_limits<double>::infinity();
-    double radius_sum =
-        0.0;  // summed in canonical order: the cap must not depend on the input order
+    double radius_sum = 0.0;
     bool equal_radii = true;
     for (const int i : sorted) {
         const Particle& p = particles[static_cast<std::size_t>(i)];

@@ -37,6 +37,8 @@ void add_common(CLI::App* command, CommonOptions& o) {
                      "the range, so g -> 1 far from contact for any pack shape) or 'space' "
                      "(N / volume of the g(r) space)")
         ->check(CLI::IsMember({"neighbours", "space"}));
+    command->add_flag("!--no-voronoi", o.measure.voronoi,
+                      "skip the Voronoi local packing fraction (voro++; its own stage)");
     command->add_option("--q6-cutoff", o.measure.q6_cutoff,
                         "Q6 bonds join centres within this x (ri + rj) (default 1.2)");
     command->add_option("--overlap-floor", o.measure.overlap_floor,
@@ -101,7 +103,8 @@ Measurement measure_pack(const std::string& path, const Pack& pack, const Common
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::cerr << "timings " << path << ": index " << t.index << " s, phi " << t.phi
                   << " s, phi(y) " << t.phi_profile << " s, overlaps " << t.overlaps
-                  << " s, Z(delta)+g(r)+Q6 " << t.local << " s, total " << total << " s\n";
+                  << " s, Z(delta)+g(r)+Q6 " << t.local << " s, Voronoi " << t.voronoi
+                  << " s, total " << total << " s\n";
     }
     return m;
 }

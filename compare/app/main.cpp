@@ -59,11 +59,14 @@ int run_measure(const std::vector<std::string>& packs, CommonOptions& o, const s
             write_phi_y_csv(phi, m, prov);
             std::ofstream pz(dir / (stem + ".p_z.csv"));
             write_p_z_csv(pz, m, prov);
+            std::ofstream voronoi(dir / (stem + ".voronoi_phi.csv"));
+            write_voronoi_csv(voronoi, m, prov);
+            voronoi.flush();
             json.flush();
             g.flush();
             phi.flush();
             pz.flush();
-            if (!json || !g || !phi || !pz) {
+            if (!json || !g || !phi || !pz || !voronoi) {
                 throw std::runtime_error((dir / stem).string() + ": cannot write outputs");
             }
         }
@@ -111,9 +114,10 @@ int main(int argc, char** argv) {
 
     std::vector<std::string> packs;
     CommonOptions measure_options;
-    CLI::App* measure_cmd = app.add_subcommand("measure",
-                                               "measure packs: per pack <stem>.metrics.json, "
-                                               "<stem>.g_r.csv, <stem>.phi_y.csv, <stem>.p_z.csv");
+    CLI::App* measure_cmd = app.add_subcommand(
+        "measure",
+        "measure packs: per pack <stem>.metrics.json, "
+        "<stem>.g_r.csv, <stem>.phi_y.csv, <stem>.p_z.csv, <stem>.voronoi_phi.csv");
     measure_cmd->add_option("packs", packs, "pack files (extended XYZ or LIGGGHTS dump, .gz ok)")
         ->required();
     add_common(measure_cmd, measure_options);

@@ -267,6 +267,8 @@ const std::vector<MetricRule>& metric_rules() {
         {"z_mean_tol_2e-2", "Z(δ = 2·10⁻²)", "contacts/particle", K::Scalar, 0.1, true},
         {"z_mean_tol_5e-2", "Z(δ = 5·10⁻²)", "contacts/particle", K::Scalar, 0.1, true},
         {"split_ratio", "split ratio g(√3·d)/g(2·d)", "ratio", K::Scalar, 0.02, true},
+        {"voronoi_phi_mean", "Voronoi local φ, mean", "ratio", K::Scalar, 0.005, true},
+        {"voronoi_phi_sd", "Voronoi local φ, sd", "ratio", K::Scalar, 0.002, true},
         {"q6_global", "Q6 (global)", "dimensionless", K::Scalar, 0.01, true},
         {"q6_local_mean", "Q6 (local mean)", "dimensionless", K::Scalar, 0.01, true},
         {"g_r", "g(r), r ≥ 1.1·d", "ratio", K::Curve, 0.0, true},
@@ -357,6 +359,10 @@ PackSummary summarise(const std::string& source, const Pack& pack, const Measure
             v = c.z_mean[static_cast<std::size_t>(it - names.begin())];
         } else if (rule.name == "split_ratio") {
             v = m.local.rdf.split_ratio;
+        } else if (rule.name == "voronoi_phi_mean") {
+            v = m.voronoi ? m.voronoi->mean : 0.0;
+        } else if (rule.name == "voronoi_phi_sd") {
+            v = m.voronoi ? m.voronoi->sd : 0.0;
         } else if (rule.name == "q6_global") {
             v = m.local.bond_order.q6_global;
         } else if (rule.name == "q6_local_mean") {

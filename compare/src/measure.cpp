@@ -174,6 +174,10 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
         m.thesis_rdf = thesis_rdf(particles, m.region, m.phi, options.gr_bin_width * d, local.bins);
     }
     stage_times.local = watch.lap();
+    if (options.voronoi) {
+        m.voronoi = voronoi_local_phi(particles, m.container, m.region);
+    }
+    stage_times.voronoi = watch.lap();
     return m;
 }
 

@@ -57,6 +57,7 @@ Json provenance(const std::string& input, const Pack& pack, const MeasureOptions
     parameters["gr_density"] = o.gr_density == RdfDensity::Space ? "space" : "neighbours";
     parameters["q6_cutoff"] = o.q6_cutoff;
     parameters["overlap_floor_over_d"] = o.overlap_floor;
+    parameters["voronoi"] = o.voronoi;
     return Json{{"tool", "sgmp-compare"},
                 {"version", sgmp::version()},
                 {"input", input},
@@ -80,6 +81,10 @@ Json metrics_json(const Measurement& m, const Json& prov) {
     j["q6_global"] = m.local.bond_order.q6_global;
     j["q6_local_mean"] = m.local.bond_order.q6_local_mean;
     j["split_ratio"] = m.local.rdf.split_ratio;
+    if (m.voronoi) {
+        j["voronoi_phi_mean"] = m.voronoi->mean;
+        j["voronoi_phi_sd"] = m.voronoi->sd;
+    }
     j["region"] = box_json(m.region);
     // Further detail.
     j["overlap_mean_over_d"] = m.overlaps.pairs.mean_over_d;
@@ -109,6 +114,10 @@ Json metrics_json(const Measurement& m, const Json& prov) {
         {"split_ratio",
          "g(sqrt(3) d) / g(2 d): mean g in the windows |r - sqrt(3) d| <= 0.05 d and |r - 2 d| "
          "<= 0.05 d, each from its pair count over its edge-corrected window volume"},
+        {"voronoi_phi",
+         "local packing fraction (4/3 pi r^3) / V_cell of the centres in the region, cells of the "
+         "Voronoi (radical for unequal radii) tessellation bounded by the container walls, the "
+         "floor and a lid one diameter above the top sphere (voro++); sd over cells (population)"},
         {"q6", "Steinhardt Q6, bonds |c_i-c_j| <= q6_cutoff*(r_i + r_j), origins in the region"},
         {"g_r",
          "origins: centres in the region; neighbours: all particles; shells counted inside the "
@@ -136,6 +145,13 @@ Json metrics_json(const Measurement& m, const Json& prov) {
              {"split_pairs", {rdf.split_pairs[0], rdf.split_pairs[1]}},
              {"split_volume", {rdf.split_volume[0], rdf.split_volume[1]}},
              {"space", box_json(rdf.space)}};
+    if (m.voronoi) {
+        j["voronoi_detail"] = Json{{"cells", m.voronoi->cells},
+                                   {"global", m.voronoi->global},
+                                   {"cell_volume", m.voronoi->cell_volume},
+                                   {"cap_cells", m.voronoi->cap_cells},
+                                   {"histogram_bins", m.voronoi->histogram.size()}};
+    }
     j["q6_detail"] = Json{{"cutoff", m.local.bond_order.cutoff},
                           {"origins_with_bonds", m.local.bond_order.origins_with_bonds}};
     if (m.thesis_rdf) {
@@ -187,6 +203,23 @@ void write_phi_y_csv(std::ostream& out, const Measurement& m, const Json& prov) 
     for (std::size_t k = 0; k < p.phi.size(); ++k) {
         out << csv_number(0.5 * (p.y_lo[k] + p.y_hi[k])) << ',' << csv_number(p.y_lo[k]) << ','
             << csv_number(p.y_hi[k]) << ',' << csv_number(p.phi[k]) << '\n';
+    }
+}
+
+void write_voronoi_csv(std::ostream& out, const Measurement& m, const Json& prov) {
+    out << "phi_mid,phi_lo,phi_hi,density\n";
+    write_comment_header(out, prov);
+    out << "# density: of the local packing fraction over the cells in the region (integrates to "
+           "1 over phi)\n";
+    if (!m.voronoi) {
+        return;
+    }
+    const auto& h = m.voronoi->histogram;
+    const double width = 1.0 / static_cast<double>(h.size());
+    for (std::size_t k = 0; k < h.size(); ++k) {
+        const double lo = static_cast<double>(k) * width;
+        out << csv_number(lo + 0.5 * width) << ',' << csv_number(lo) << ','
+            << csv_number(lo + width) << ',' << csv_number(h[k]) << '\n';
     }
 }
 

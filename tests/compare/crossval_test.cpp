@@ -159,7 +159,7 @@ BOOST_AUTO_TEST_CASE(headline_carries_verdicts_and_the_thesis_beside_us) {
     // The stand-in lines, the verdict matrix (one mark per count), the headline and the
     // thesis table.
     BOOST_TEST(md.find("- **DEM mu=0.5**: no mode stands in; closest **single-column** (2 agree, "
-                       "15 differ, 0 inconclusive") != std::string::npos);
+                       "17 differ, 0 inconclusive") != std::string::npos);
     BOOST_TEST(md.find("| single-column | DEM mu=0.5 | ✓ | ✗ |") != std::string::npos);
     BOOST_TEST(md.find("| 150 | single-column | 0.003 | 0.6000 | 5.00 | 5.00 | 5.000 | ✓✗✗✗✗✓ | "
                        "0.8 | 500× |") != std::string::npos);
@@ -177,7 +177,7 @@ BOOST_AUTO_TEST_CASE(headline_carries_verdicts_and_the_thesis_beside_us) {
 
 BOOST_AUTO_TEST_CASE(baseline_takes_the_strictest_reference_tolerance) {
     const auto entries = baseline_entries(sample_report());
-    BOOST_TEST_REQUIRE(entries.size() == 2u * 14u);  // 2 groups × 14 scalar metrics
+    BOOST_TEST_REQUIRE(entries.size() == 2u * 16u);  // 2 groups × 16 scalar metrics
     BOOST_TEST(entries[0].metric == "phi");
     BOOST_TEST(entries[0].value == 0.60);
     BOOST_TEST(entries[0].tolerance == 0.01);

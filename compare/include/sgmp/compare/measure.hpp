@@ -1,7 +1,8 @@
 #pragma once
 /// @file measure.hpp
 /// All metrics of one pack in one region (definitions in compare/README.md): packing fraction and
-/// its profile, overlaps, coordination at several tolerances, g(r) and Q6.
+/// its profile, overlaps, coordination at several tolerances, g(r), the split ratio, Q6 and
+/// the Voronoi local packing fraction.
 
 #include <optional>
 #include <string>
@@ -10,6 +11,7 @@
 #include "sgmp/compare/local_structure.hpp"
 #include "sgmp/compare/overlaps.hpp"
 #include "sgmp/compare/packing_fraction.hpp"
+#include "sgmp/compare/voronoi.hpp"
 #include "sgmp/pack/pack.hpp"
 
 namespace sgmp::compare {
@@ -29,7 +31,8 @@ struct MeasureOptions {
     RdfDensity gr_density = RdfDensity::Neighbours;  // g(r)'s density estimate (rdf.hpp)
     double q6_cutoff = 1.2;                          // Q6 bonds within this·(r_i + r_j)
     double overlap_floor = 1e-9;                     // overlaps deeper than this·d are counted
-    std::size_t worst_count = 10;                    // worst overlaps listed
+    bool voronoi = true;           // Voronoi local packing fraction (its own stage)
+    std::size_t worst_count = 10;  // worst overlaps listed
 };
 
 /// Throws std::invalid_argument naming the option and the rule when an option is invalid.
@@ -49,6 +52,7 @@ struct Measurement {
     PhiProfile phi_profile;
     OverlapStats overlaps;
     LocalStructure local;
+    std::optional<VoronoiPhi> voronoi;  // absent when not asked for
     std::optional<ThesisRdf> thesis_rdf;
 };
 
@@ -67,6 +71,7 @@ struct StageTimes {
     double phi_profile = 0.0;
     double overlaps = 0.0;
     double local = 0.0;
+    double voronoi = 0.0;
 };
 const StageTimes& last_stage_times();
 

@@ -1,8 +1,8 @@
 #pragma once
 /// @file metrics_output.hpp
 /// Per-pack outputs: the metrics JSON (fixed keys: count, diameter, phi, overlaps, z_mean_tol_*,
-/// q6_*, region, plus more) and the curve CSVs (g_r, phi_y, p_z), each with its header row first,
-/// then '#' provenance lines (csv_text.hpp).
+/// q6_*, region, plus more) and the curve CSVs (g_r, phi_y, p_z, voronoi_phi), each with its header
+/// row first, then '#' provenance lines (csv_text.hpp).
 
 #include <nlohmann/json.hpp>
 #include <ostream>
@@ -33,6 +33,9 @@ void write_phi_y_csv(std::ostream& out, const Measurement& m,
                      const nlohmann::ordered_json& provenance);
 void write_p_z_csv(std::ostream& out, const Measurement& m,
                    const nlohmann::ordered_json& provenance);
+/// The distribution of the Voronoi local packing fraction (rows only when measured).
+void write_voronoi_csv(std::ostream& out, const Measurement& m,
+                       const nlohmann::ordered_json& provenance);
 
 /// The provenance as "# key: value" comment lines (one JSON value per line), written right
 /// after a CSV's header row (the layout of csv_text.hpp).

@@ -102,13 +102,15 @@ void matrix_markdown(std::ostringstream& md, const CrossValidation& cv) {
     md << "\n## Verdict matrix\n\n";
     md << "One mark per particle count, N = " << count_list(cv.counts)
        << " in order: ✓ agree, ✗ differ, ◌ inconclusive (the DEM classes themselves cannot be "
-          "told apart there), · not compared. Rules at the end of the page.\n\n";
+          "told apart there), · not compared. Columns: φ of the control volume; Z at gap "
+          "tolerance δ; the split ratio g(√3·d)/g(2·d); the Voronoi local φ, mean and sd; Q6 "
+          "global and local; g(r) beyond contact; P(Z) at δ. Rules at the end of the page.\n\n";
     md << "| SGMP mode | DEM class |";
     std::vector<const MetricRule*> judged;
     for (const auto& rule : metric_rules()) {
         if (rule.judged) {
             judged.push_back(&rule);
-            md << " " << rule.label << " |";
+            md << " " << rule.short_label << " |";
         }
     }
     md << "\n| --- | --- |";

@@ -61,6 +61,7 @@ struct MetricRule {
     MetricKind kind = MetricKind::Scalar;
     double floor = 0.0;  // smallest tolerance (scalars)
     bool judged = true;  // false: information only, no verdict
+    std::string short_label;  // column heading of the verdict matrix
 };
 /// Every metric, scalars first, in report order.
 const std::vector<MetricRule>& metric_rules();

@@ -112,6 +112,9 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
     const double width = options.bin_width_over_d * d;
     const double outer = bin_outer(options.bins - 1, width);
     const SplitWindows split(d, outer);
+    // Bins that can hold a distance of the split windows (a cheap test before the exact one).
+    const std::size_t split_first_bin = bin_of(split.lo[0], 1.0 / width) - 1;
+    const std::size_t split_bins = bin_of(split.hi[1], 1.0 / width) + 1 - split_first_bin;
     double max_radius = 0.0;
     for (const Particle& p : particles) {
         max_radius = std::max(max_radius, p.radius);
@@ -174,7 +177,9 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
                         if (bin < options.bins) {
                             ++part.pairs[bin];
                         }
-                        split.count(distance, part.split_pairs);
+                        if (bin - split_first_bin <= split_bins) {  // unsigned: one compare
+                            split.count(distance, part.split_pairs);
+                        }
                         const double rb = candidates.r[k];
                         const double gap = distance - a.radius - rb;
                         if (gap <= max_threshold) {

@@ -2,9 +2,11 @@
 // Private helper: one line of a simple CSV (no quoting) split at commas.
 
 #include <charconv>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 namespace sgmp::compare::detail {
@@ -26,7 +28,8 @@ inline std::vector<std::string> split_csv_line(std::string_view line) {
     }
 }
 
-/// The whole field as a number (integer or floating point); nullopt when it is not one.
+/// The whole field as a number (integer or floating point); nullopt when it is not one,
+/// or when it is a floating-point field holding nan or inf.
 template <class Number>
 std::optional<Number> parse_csv_number(const std::string& text) {
     Number value{};
@@ -34,6 +37,11 @@ std::optional<Number> parse_csv_number(const std::string& text) {
     const auto result = std::from_chars(text.data(), end, value);
     if (text.empty() || result.ec != std::errc() || result.ptr != end) {
         return std::nullopt;
+    }
+    if constexpr (std::is_floating_point_v<Number>) {
+        if (!std::isfinite(value)) {
+            return std::nullopt;
+        }
     }
     return value;
 }

@@ -69,8 +69,9 @@ std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& so
         if (!fields[4].empty()) {
             const auto seconds = detail::parse_csv_number<double>(fields[4]);
             if (!seconds || *seconds < 0.0) {
-                throw InputError(source, number,
-                                 "seconds '" + fields[4] + "' must be a number >= 0 or empty");
+                throw InputError(
+                    source, number,
+                    "seconds '" + fields[4] + "' must be a finite number >= 0 or empty");
             }
             entry.seconds = *seconds;
         }

@@ -257,6 +257,25 @@ Pack read_final(const fs::path& dump, const PourParameters& p) {
     return pack;
 }
 
+/// A settled pour's invariants, checked before anything is written: every sphere inside
+/// the container and no pair overlapping by more than the soft-contact bound (all spheres
+/// present and ids 1..N are checked by read_final). A DEM blow-up or a corrupt dump fails
+/// here instead of entering the reference set.
+void check_settled(const PourResult& result) {
+    if (result.max_wall_penetration_over_d > kMaxSettledPenetrationOverD) {
+        throw PourError("the LIGGGHTS result has a sphere " +
+                        format_number(result.max_wall_penetration_over_d) +
+                        " d through a wall or the floor; a settled pour stays within " +
+                        format_number(kMaxSettledPenetrationOverD) + " d");
+    }
+    if (result.max_overlap_over_d > kMaxSettledOverlapOverD) {
+        throw PourError("the LIGGGHTS result has two spheres overlapping by " +
+                        format_number(result.max_overlap_over_d) +
+                        " d; a settled pour stays within " +
+                        format_number(kMaxSettledOverlapOverD) + " d");
+    }
+}
+
 void record(Metadata& m, const PourRequest& request, const PourLog& log, const PourResult& r) {
     const PourParameters& p = request.parameters;
     const LiggghtsSeeds seeds = liggghts_seeds(p.seed);
@@ -352,6 +371,7 @@ PourResult pour(const PourRequest& request, const PourObserver& observer) {
     result.max_overlap_over_d = pair_overlaps(result.pack).max_overlap / d;
     result.max_wall_penetration_over_d = max_wall_penetration(result.pack, Container{}) / d;
     result.phi_control_volume = packing_fraction(result.pack, control_volume());
+    check_settled(result);
     if (request.start && request.start->colours.size() == p.count) {
         for (std::size_t i = 0; i < p.count; ++i) {
             result.pack.particles[i].color = request.start->colours[i];

@@ -9,11 +9,13 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "config_file.hpp"
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/engine/pack_checks.hpp"
 #include "sgmp/pack/atomic_file.hpp"
@@ -207,10 +209,7 @@ class Progress {
     Clock::time_point start_;
 };
 
-/// `--config FILE` (after the subcommand): the file's `key = value` lines (TOML/INI, keys
-/// named as the long options — `phi-target` or, as pack headers write it, `phi_target` —
-/// optionally in a [pack] / [arrange] section) become options placed before the command
-/// line's own, so options typed on the command line win.
+/// `--config FILE` (config_file.hpp): its options are placed before the command line's.
 std::vector<std::string> expand_config(std::vector<std::string> args) {
     for (std::size_t i = 0; i < args.size(); ++i) {
         std::string path;
@@ -224,30 +223,13 @@ std::vector<std::string> expand_config(std::vector<std::string> args) {
         if (!std::filesystem::is_regular_file(path)) {
             throw UsageError{"--config " + path + ": must name a readable file"};
         }
-        const std::string command = args.empty() ? "" : args.front();
-        std::vector<std::string> injected;
-        for (const CLI::ConfigItem& item : CLI::ConfigTOML().from_file(path)) {
-            if (item.name == "++" || item.name == "--") {
-                continue;  // section markers
-            }
-            if (!item.parents.empty() && item.parents != std::vector<std::string>{command}) {
-                throw UsageError{"--config " + path + ": key '" + item.fullname() +
-                                 "' belongs to no option of '" + command + "'"};
-            }
-            // Pack headers record parameters in snake_case: accept those names too.
-            std::string name = item.name;
-            std::replace(name.begin(), name.end(), '_', '-');
-            const std::string option = "--" + name;
-            if (item.inputs.size() == 1 &&
-                (item.inputs[0] == "true" || item.inputs[0] == "false")) {
-                if (item.inputs[0] == "true")
-                    injected.push_back(option);  // a flag
-                continue;
-            }
-            injected.push_back(option);
-            injected.insert(injected.end(), item.inputs.begin(), item.inputs.end());
+        std::ifstream in(path);
+        try {
+            const auto injected = sgmp::app::config_arguments(in, args.front());
+            args.insert(args.begin() + 1, injected.begin(), injected.end());
+        } catch (const std::invalid_argument& e) {
+            throw UsageError{"--config " + path + ": " + e.what()};
         }
-        args.insert(args.begin() + 1, injected.begin(), injected.end());
         return args;
     }
     return args;

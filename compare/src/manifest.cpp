@@ -35,7 +35,12 @@ std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& so
         if (line.find_first_not_of(" \t\r") == std::string::npos) {
             continue;
         }
-        const auto fields = detail::split_csv_line(line);
+        const auto quoted = detail::split_quoted_csv_line(line);
+        if (!quoted) {
+            throw InputError(source, number,
+                             "a quoted field lacks its closing quote or has text after it");
+        }
+        const auto& fields = *quoted;
         if (fields.size() != 6) {
             throw InputError(
                 source, number,
@@ -69,9 +74,8 @@ std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& so
         if (!fields[4].empty()) {
             const auto seconds = detail::parse_csv_number<double>(fields[4]);
             if (!seconds || *seconds < 0.0) {
-                throw InputError(
-                    source, number,
-                    "seconds '" + fields[4] + "' must be a finite number >= 0 or empty");
+                throw InputError(source, number,
+                                 "seconds '" + fields[4] + "' must be a number >= 0 or empty");
             }
             entry.seconds = *seconds;
         }

@@ -4,7 +4,8 @@
 /// `role,group,count,seed,seconds,path`, one pack per line. `role` is `candidate` (packs
 /// under test, e.g. one SGMP arrangement per group) or `reference` (packs whose
 /// seed-to-seed spread sets the tolerances, e.g. one DEM friction class per group);
-/// `seconds` is the wall time that made the pack (empty when unknown).
+/// `seconds` is the wall time that made the pack (empty when unknown). Fields holding a
+/// comma or a quote are double-quoted, with quotes doubled (RFC 4180).
 
 #include <cstddef>
 #include <cstdint>

@@ -1,8 +1,11 @@
 #include "sgmp/reference/pour.hpp"
 
+#include <signal.h>
 #include <stdlib.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <deque>
 #include <fstream>
@@ -27,6 +30,28 @@ namespace fs = std::filesystem;
 constexpr std::size_t kTailLines = 25;
 
 /// The directory LIGGGHTS runs in: the caller's (kept) or a temporary (removed).
+/// Work directories of earlier runs that were killed (SIGKILL leaves no chance to clean
+/// up): named sgmp-reference-PID-XXXXXX, removed when no process PID is running.
+void remove_orphaned_work_directories() {
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(fs::temp_directory_path(), ec)) {
+        const std::string name = entry.path().filename().string();
+        const std::string prefix = "sgmp-reference-";
+        if (name.rfind(prefix, 0) != 0 || !entry.is_directory(ec)) {
+            continue;
+        }
+        const std::size_t dash = name.find('-', prefix.size());
+        const std::string pid = name.substr(prefix.size(), dash - prefix.size());
+        if (dash == std::string::npos || pid.empty() ||
+            pid.find_first_not_of("0123456789") != std::string::npos || pid.size() > 9) {
+            continue;
+        }
+        if (::kill(static_cast<pid_t>(std::stol(pid)), 0) != 0 && errno == ESRCH) {
+            fs::remove_all(entry.path(), ec);
+        }
+    }
+}
+
 class WorkDirectory {
   public:
     explicit WorkDirectory(const fs::path& requested) {
@@ -41,7 +66,10 @@ class WorkDirectory {
             fs::remove(path_ / "final.dump", ec);  // never read a dump of an earlier run
             return;
         }
-        std::string pattern = (fs::temp_directory_path() / "sgmp-reference-XXXXXX").string();
+        remove_orphaned_work_directories();
+        std::string pattern = (fs::temp_directory_path() /
+                               ("sgmp-reference-" + std::to_string(::getpid()) + "-XXXXXX"))
+                                  .string();
         if (mkdtemp(pattern.data()) == nullptr) {
             throw PourError("cannot create a temporary work directory in " +
                             fs::temp_directory_path().string());

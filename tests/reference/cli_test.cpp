@@ -2,6 +2,7 @@
 // programs first on PATH. Each fault must give a one-line message, a non-zero exit and
 // no pack file.
 #include <signal.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <boost/test/unit_test.hpp>
@@ -168,6 +169,24 @@ BOOST_AUTO_TEST_CASE(sigkill_of_sgmp_reference_ends_liggghts_too) {
     (void)run_program(kExe, options);
     BOOST_TEST(process_ended((fake.dir / "liggghts.pid").string()));
     BOOST_TEST(!fs::exists(fake.out));
+}
+
+BOOST_AUTO_TEST_CASE(work_directories_of_killed_runs_are_removed) {
+    // A SIGKILLed sgmp-reference leaves its work directory in TMPDIR; the next pour removes
+    // those whose process is gone (pid 4999999 is above Linux's largest) and keeps others.
+    FakeLiggghts fake(kBanner + "exit 1\n");
+    const fs::path tmp = fake.dir / "tmp";
+    const fs::path orphan = tmp / "sgmp-reference-4999999-abcdef";
+    const fs::path alive = tmp / ("sgmp-reference-" + std::to_string(::getpid()) + "-abcdef");
+    fs::create_directories(orphan);
+    fs::create_directories(alive);
+    ::setenv("TMPDIR", tmp.c_str(), 1);
+    const ProgramRun run = fake.pour({"--quiet"});
+    ::unsetenv("TMPDIR");
+    BOOST_TEST(run.exit_code == 1);
+    BOOST_TEST(!fs::exists(orphan));
+    BOOST_TEST(fs::exists(alive));
+    BOOST_TEST(std::distance(fs::directory_iterator(tmp), fs::directory_iterator()) == 1);
 }
 
 BOOST_AUTO_TEST_CASE(values_once_accepted_silently_are_refused_with_the_prefix) {

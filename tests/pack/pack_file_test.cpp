@@ -8,6 +8,7 @@
 #include <csignal>
 #include <stdexcept>
 
+#include "sgmp/pack/interrupt.hpp"
 #include "sgmp/pack/random.hpp"
 
 #include "sgmp/pack/atomic_file.hpp"
@@ -78,6 +79,41 @@ std::string write_past_the_size_limit(const fs::path& target, int& status) {
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(pack_file)
+
+BOOST_AUTO_TEST_CASE(sigint_in_the_middle_of_a_write_removes_the_temporary_and_exits_130) {
+    // In a child: the interrupt handler is installed, a .gz and a directory are half
+    // written, then SIGINT arrives. The child must exit 130 and leave nothing behind.
+    ScratchDirectory scratch("pack_file_interrupt");
+    for (const bool directory : {false, true}) {
+        const pid_t pid = ::fork();
+        BOOST_TEST_REQUIRE(pid >= 0);
+        if (pid == 0) {
+            ::alarm(20);
+            install_interrupt_handler("pack_tests");
+            const auto interrupt = [] {
+                ::kill(::getpid(), SIGINT);
+                ::pause();  // the watcher thread exits the process
+            };
+            if (directory) {
+                write_directory_atomically(scratch.path() / "out", false, [&](const fs::path& d) {
+                    write_text(d / "part.txt", "half of the output");
+                    interrupt();
+                });
+            } else {
+                write_file_atomically(scratch.path() / "big.xyz.gz", false, [&](std::ostream& out) {
+                    out << std::string(1 << 20, 'x');
+                    interrupt();
+                });
+            }
+            ::_exit(0);
+        }
+        int raw = 0;
+        ::waitpid(pid, &raw, 0);
+        BOOST_TEST_INFO(std::string(directory ? "directory" : "file"));
+        BOOST_TEST((WIFEXITED(raw) ? WEXITSTATUS(raw) : -1) == 130);
+        BOOST_TEST(entries_in(scratch.path()) == 0u);
+    }
+}
 
 BOOST_AUTO_TEST_CASE(a_full_disk_fails_a_compressed_or_plain_write_in_one_line) {
     // The gzip compressor once retried a failed write for ever (100 % CPU).

@@ -83,13 +83,16 @@ void validate(const MeasureOptions& o) {
     }
     // Bounds that keep memory finite: slabs are counted below, bonds grow as the cube.
     if (o.slab_thickness < 1e-3) {
-        throw std::invalid_argument("--slab must be at least 0.001 d");
+        throw std::invalid_argument("--slab " + format_number(o.slab_thickness) +
+                                    ": must be at least 0.001 d");
     }
     if (o.gr_range > 100.0) {
-        throw std::invalid_argument("--gr-range must be at most 100 d");
+        throw std::invalid_argument("--gr-range " + format_number(o.gr_range) +
+                                    ": must be at most 100 d");
     }
     if (o.q6_cutoff > 10.0) {
-        throw std::invalid_argument("--q6-cutoff must be at most 10");
+        throw std::invalid_argument("--q6-cutoff " + format_number(o.q6_cutoff) +
+                                    ": must be at most 10");
     }
 }
 

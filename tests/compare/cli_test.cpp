@@ -126,10 +126,12 @@ BOOST_AUTO_TEST_CASE(no_option_or_pack_allocates_without_bound) {
     // A sphere a billion sides up: default slabs of 1 d would number about 10^10.
     write("tall.xyz", "2\n" + kHeader + "1 0 0 0 0.05 0\n2 0 1e9 0 0.05 0\n");
     const std::vector<std::pair<std::string, std::string>> bad{
-        {"measure a.xyz --out o --slab 1e-12", "sgmp-compare: --slab must be at least 0.001 d"},
+        {"measure a.xyz --out o --slab 1e-12",
+         "sgmp-compare: --slab 1e-12: must be at least 0.001 d"},
         {"measure a.xyz --out o --gr-range 1e6 --gr-bin 100",
-         "sgmp-compare: --gr-range must be at most 100 d"},
-        {"measure a.xyz --out o --q6-cutoff 1e9", "sgmp-compare: --q6-cutoff must be at most 10"},
+         "sgmp-compare: --gr-range 1e+06: must be at most 100 d"},
+        {"measure a.xyz --out o --q6-cutoff 1e9",
+         "sgmp-compare: --q6-cutoff 1e+09: must be at most 10"},
         {"measure a.xyz --out o --threads 4294967295",
          "sgmp-compare: --threads: must be a number in [0, 256] (0: all cores)"},
         {"measure tall.xyz --out o",

@@ -4,8 +4,7 @@
 /// `role,group,count,seed,seconds,path`, one pack per line. `role` is `candidate` (packs
 /// under test, e.g. one SGMP arrangement per group) or `reference` (packs whose
 /// seed-to-seed spread sets the tolerances, e.g. one DEM friction class per group);
-/// `seconds` is the wall time that made the pack (empty when unknown). Fields holding a
-/// comma or a quote are double-quoted, with quotes doubled (RFC 4180).
+/// `seconds` is the wall time that made the pack (empty when unknown).
 
 #include <cstddef>
 #include <cstdint>
@@ -29,7 +28,8 @@ struct ManifestEntry {
 
 /// Reads a manifest strictly; throws sgmp::InputError ("source:line: reason") on a wrong
 /// header, a wrong number of fields, an unknown role, a non-numeric count, seed or seconds,
-/// an empty group or path, or a path listed twice.
+/// an empty group or path, or a path listed twice. Fields holding a comma or a quote are
+/// double-quoted, with quotes doubled (RFC 4180).
 std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& source);
 
 }  // namespace sgmp::compare

@@ -14,5 +14,5 @@ add_library(sgmp_engine
 target_include_directories(sgmp_engine PUBLIC include)
 target_link_libraries(sgmp_engine PUBLIC sgmp_pack PRIVATE sgmp_warnings)
 
-add_executable(sgmp app/main.cpp)
+add_executable(sgmp app/main.cpp app/config_file.cpp)
 target_link_libraries(sgmp PRIVATE sgmp_engine sgmp_pack CLI11::CLI11 sgmp_warnings)

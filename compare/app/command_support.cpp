@@ -8,6 +8,7 @@
 #include "sgmp/compare/parallel.hpp"
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/input_error.hpp"
+#include "sgmp/pack/option_rules.hpp"
 #include "sgmp/pack/pack_file.hpp"
 
 namespace fs = std::filesystem;
@@ -43,8 +44,12 @@ void add_common(CLI::App* command, CommonOptions& o) {
                         "Q6 bonds join centres within this x (ri + rj) (default 1.2)");
     command->add_option("--overlap-floor", o.measure.overlap_floor,
                         "overlaps deeper than this x d are counted (default 1e-9)");
-    command->add_option("--threads", o.threads,
-                        "worker threads (default all cores; results do not depend on it)");
+    command
+        ->add_option("--threads", o.threads,
+                     "worker threads, at most 256 (default all cores; results do not depend on it)")
+        ->check([](const std::string& text) {
+            return finite_range_rule(text, 0.0, 256.0, "[0, 256] (0: all cores)");
+        });
     command->add_flag("--timings", o.timings, "print the seconds of each stage to stderr");
 }
 

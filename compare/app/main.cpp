@@ -15,6 +15,7 @@
 #include "sgmp/compare/report_files.hpp"
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/input_error.hpp"
+#include "sgmp/pack/interrupt.hpp"
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/pack/version.hpp"
 
@@ -151,9 +152,10 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        std::cerr << "sgmp-compare: " << e.what() << " (see --help)\n";
+        std::cerr << "sgmp-compare: " << printable(e.what()) << " (see --help)\n";
         return 2;
     }
+    install_interrupt_handler("sgmp-compare");
     const std::string cmd = command_line(argc, argv);
     try {
         if (*measure_cmd) {
@@ -166,10 +168,10 @@ int main(int argc, char** argv) {
         }
         return run_report(a, b, label_a, label_b, report_options, cmd);
     } catch (const UsageError& error) {
-        std::cerr << "sgmp-compare: " << error.what() << "\n";
+        std::cerr << "sgmp-compare: " << printable(error.what()) << "\n";
         return 2;
     } catch (const std::exception& error) {
-        std::cerr << "sgmp-compare: " << error.what() << "\n";
+        std::cerr << "sgmp-compare: " << printable(error.what()) << "\n";
         return 1;
     }
 }

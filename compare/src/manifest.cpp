@@ -35,7 +35,12 @@ std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& so
         if (line.find_first_not_of(" \t\r") == std::string::npos) {
             continue;
         }
-        const auto fields = detail::split_csv_line(line);
+        const auto quoted = detail::split_quoted_csv_line(line);
+        if (!quoted) {
+            throw InputError(source, number,
+                             "a quoted field lacks its closing quote or has text after it");
+        }
+        const auto& fields = *quoted;
         if (fields.size() != 6) {
             throw InputError(
                 source, number,

@@ -59,6 +59,9 @@ const std::vector<std::string>& coordination_tolerance_names() {
     return names;
 }
 
+/// Most phi(y) slabs one measurement makes.
+constexpr double kMaxSlabs = 1e6;
+
 void validate(const MeasureOptions& o) {
     const auto positive = [](double v, const char* name) {
         if (!(v > 0.0) || !std::isfinite(v)) {
@@ -77,6 +80,19 @@ void validate(const MeasureOptions& o) {
     }
     if (o.gr_range / o.gr_bin_width > 1e5) {
         throw std::invalid_argument("--gr-range / --gr-bin must be at most 100000 bins");
+    }
+    // Bounds that keep memory finite: slabs are counted below, bonds grow as the cube.
+    if (o.slab_thickness < 1e-3) {
+        throw std::invalid_argument("--slab " + format_number(o.slab_thickness) +
+                                    ": must be at least 0.001 d");
+    }
+    if (o.gr_range > 100.0) {
+        throw std::invalid_argument("--gr-range " + format_number(o.gr_range) +
+                                    ": must be at most 100 d");
+    }
+    if (o.q6_cutoff > 10.0) {
+        throw std::invalid_argument("--q6-cutoff " + format_number(o.q6_cutoff) +
+                                    ": must be at most 10");
     }
 }
 
@@ -129,6 +145,14 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     const double d = m.mean_diameter;
     if (!(d > 0.0) || !std::isfinite(d)) {
         throw std::invalid_argument("the pack's mean diameter must be positive and finite");
+    }
+    const double slabs =
+        (std::max(m.top, m.region.hi.y()) - m.container.floor) / (options.slab_thickness * d);
+    if (!(slabs <= kMaxSlabs)) {
+        throw std::invalid_argument("--slab " + format_number(options.slab_thickness) + " gives " +
+                                    format_number(std::ceil(slabs)) +
+                                    " slabs from the floor to the top sphere; at most " +
+                                    std::to_string(static_cast<long>(kMaxSlabs)) + " are allowed");
     }
     const std::vector<Particle> particles = spatially_ordered(pack.particles, d);
 

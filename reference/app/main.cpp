@@ -2,15 +2,18 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <atomic>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <string>
 
 #include "sgmp/engine/arrangement.hpp"
 #include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/input_error.hpp"
+#include "sgmp/pack/interrupt.hpp"
 #include "sgmp/pack/metadata.hpp"
+#include "sgmp/pack/option_rules.hpp"
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/pack/version.hpp"
 #include "sgmp/reference/pour.hpp"
@@ -20,18 +23,16 @@ namespace {
 using sgmp::reference::PourPhase;
 using sgmp::reference::PourProgress;
 
-volatile std::sig_atomic_t g_interrupted = 0;
-
-extern "C" void on_signal(int) {
-    g_interrupted = 1;
-}
+std::atomic<bool> g_interrupted = false;
+/// While LIGGGHTS runs, an interrupt stops it through should_stop (the pour removes its
+/// work directory and reports); at any other time it removes the temporaries and exits.
+std::atomic<bool> g_pouring = false;
 
 void install_signal_handlers() {
-    struct sigaction action {};
-    action.sa_handler = on_signal;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, nullptr);
-    sigaction(SIGTERM, &action, nullptr);
+    sgmp::install_interrupt_handler("sgmp-reference", [] {
+        g_interrupted = true;
+        return g_pouring.load();
+    });
 }
 
 /// Progress on stderr: rewritten in place on a terminal, one line every few seconds
@@ -129,7 +130,8 @@ int main(int argc, char** argv) {
         ->add_option("--seed", p.seed,
                      "Seed of the LIGGGHTS insertion and the colour "
                      "labels (integer)")
-        ->required();
+        ->required()
+        ->check([](const std::string& text) { return sgmp::seed_rule(text); });
     pour_cmd
         ->add_option("--friction", p.friction,
                      "Sliding friction coefficient mu, particles and walls")
@@ -145,7 +147,9 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 64));
     pour_cmd->add_option("--timeout", timeout, "Wall-clock limit in seconds; 0 means none")
         ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
+        ->check([](const std::string& text) {
+            return sgmp::finite_range_rule(text, 0.0, 2592000.0, "[0, 2592000] s (30 days)");
+        });
     pour_cmd
         ->add_option("--from-arrangement", arrangement,
                      std::string("Start from an SGMP starting arrangement (") +
@@ -222,22 +226,24 @@ int main(int argc, char** argv) {
 
     try {
         app.parse(argc, argv);
+    } catch (const CLI::Success& e) {
+        return app.exit(e);  // help and --version
     } catch (const CLI::ParseError& e) {
-        // Help and --version exit 0; every usage error exits 2.
-        return app.exit(e) == 0 ? 0 : 2;
+        std::cerr << "sgmp-reference: " << sgmp::printable(e.what()) << " (see --help)\n";
+        return 2;
     }
 
     p.tangential_damping = tangential_damping == "on";
     try {
         p.validate();
     } catch (const std::invalid_argument& e) {
-        std::cerr << "sgmp-reference: " << e.what() << '\n';
+        std::cerr << "sgmp-reference: " << sgmp::printable(e.what()) << '\n';
         return 2;
     }
     try {
         sgmp::check_writable(out, force);
     } catch (const std::exception& e) {
-        std::cerr << "sgmp-reference: --out " << e.what() << '\n';
+        std::cerr << "sgmp-reference: --out " << sgmp::printable(e.what()) << '\n';
         return 2;
     }
     if (timeout > 0.0) {
@@ -249,13 +255,19 @@ int main(int argc, char** argv) {
         p.arrangement = arrangement;
     }
     install_signal_handlers();
-    request.should_stop = [] { return g_interrupted != 0; };
+    request.should_stop = [] { return g_interrupted.load(); };
 
     ProgressPrinter printer(quiet);
     try {
+        g_pouring = true;
         const auto result = sgmp::reference::pour(
             request, [&printer](const PourProgress& progress) { printer(progress); });
+        g_pouring = false;
         printer.finish();
+        if (g_interrupted) {
+            std::cerr << "sgmp-reference: interrupted after the pour: no pack written\n";
+            return sgmp::kInterruptedStatus;
+        }
         sgmp::write_pack_file(out, result.pack, force);
         if (!quiet) {
             char summary[256];
@@ -269,17 +281,17 @@ int main(int argc, char** argv) {
         return 0;
     } catch (const sgmp::reference::PourError& e) {
         printer.finish();
-        std::cerr << "sgmp-reference: " << e.what() << '\n';
+        std::cerr << "sgmp-reference: " << sgmp::printable(e.what()) << '\n';
         if (!e.log_tail().empty()) {
             std::cerr << "--- last lines of LIGGGHTS output ---\n";
             for (const auto& line : e.log_tail()) {
-                std::cerr << "  " << line << '\n';
+                std::cerr << "  " << sgmp::printable(line) << '\n';
             }
         }
-        return g_interrupted != 0 ? 130 : 1;
+        return g_interrupted ? sgmp::kInterruptedStatus : 1;
     } catch (const std::exception& e) {
         printer.finish();
-        std::cerr << "sgmp-reference: " << e.what() << '\n';
-        return 1;
+        std::cerr << "sgmp-reference: " << sgmp::printable(e.what()) << '\n';
+        return g_interrupted ? sgmp::kInterruptedStatus : 1;
     }
 }

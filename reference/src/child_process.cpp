@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -18,8 +19,14 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 /// In the child: own process group, output to the pipe, then exec. Never returns.
-[[noreturn]] void exec_child(const ChildOptions& options, int write_end) {
+[[noreturn]] void exec_child(const ChildOptions& options, int write_end, pid_t parent) {
     setpgid(0, 0);
+    // Killed with its parent, even by SIGKILL, so it never outlives sgmp-reference (mpirun
+    // in turn ends its ranks when it dies). The parent may have died before this line.
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) {
+        _exit(127);
+    }
     dup2(write_end, STDOUT_FILENO);
     dup2(write_end, STDERR_FILENO);
     close(write_end);
@@ -117,6 +124,7 @@ ChildResult run_child(const ChildOptions& options,
         throw std::runtime_error(std::string("cannot create a pipe: ") + std::strerror(errno));
     }
     const auto start = Clock::now();
+    const pid_t parent = getpid();
     const pid_t pid = fork();
     if (pid < 0) {
         close(fds[0]);
@@ -125,7 +133,7 @@ ChildResult run_child(const ChildOptions& options,
     }
     if (pid == 0) {
         close(fds[0]);
-        exec_child(options, fds[1]);
+        exec_child(options, fds[1], parent);
     }
     setpgid(pid, pid);  // also in the parent, so a kill right away reaches the group
     close(fds[1]);

@@ -1,8 +1,11 @@
 #include "sgmp/reference/pour.hpp"
 
+#include <signal.h>
 #include <stdlib.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <deque>
 #include <fstream>
@@ -27,6 +30,28 @@ namespace fs = std::filesystem;
 constexpr std::size_t kTailLines = 25;
 
 /// The directory LIGGGHTS runs in: the caller's (kept) or a temporary (removed).
+/// Work directories of earlier runs that were killed (SIGKILL leaves no chance to clean
+/// up): named sgmp-reference-PID-XXXXXX, removed when no process PID is running.
+void remove_orphaned_work_directories() {
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(fs::temp_directory_path(), ec)) {
+        const std::string name = entry.path().filename().string();
+        const std::string prefix = "sgmp-reference-";
+        if (name.rfind(prefix, 0) != 0 || !entry.is_directory(ec)) {
+            continue;
+        }
+        const std::size_t dash = name.find('-', prefix.size());
+        const std::string pid = name.substr(prefix.size(), dash - prefix.size());
+        if (dash == std::string::npos || pid.empty() ||
+            pid.find_first_not_of("0123456789") != std::string::npos || pid.size() > 9) {
+            continue;
+        }
+        if (::kill(static_cast<pid_t>(std::stol(pid)), 0) != 0 && errno == ESRCH) {
+            fs::remove_all(entry.path(), ec);
+        }
+    }
+}
+
 class WorkDirectory {
   public:
     explicit WorkDirectory(const fs::path& requested) {
@@ -41,7 +66,10 @@ class WorkDirectory {
             fs::remove(path_ / "final.dump", ec);  // never read a dump of an earlier run
             return;
         }
-        std::string pattern = (fs::temp_directory_path() / "sgmp-reference-XXXXXX").string();
+        remove_orphaned_work_directories();
+        std::string pattern = (fs::temp_directory_path() /
+                               ("sgmp-reference-" + std::to_string(::getpid()) + "-XXXXXX"))
+                                  .string();
         if (mkdtemp(pattern.data()) == nullptr) {
             throw PourError("cannot create a temporary work directory in " +
                             fs::temp_directory_path().string());
@@ -257,6 +285,25 @@ Pack read_final(const fs::path& dump, const PourParameters& p) {
     return pack;
 }
 
+/// A settled pour's invariants, checked before anything is written: every sphere inside
+/// the container and no pair overlapping by more than the soft-contact bound (all spheres
+/// present and ids 1..N are checked by read_final). A DEM blow-up or a corrupt dump fails
+/// here instead of entering the reference set.
+void check_settled(const PourResult& result) {
+    if (result.max_wall_penetration_over_d > kMaxSettledPenetrationOverD) {
+        throw PourError("the LIGGGHTS result has a sphere " +
+                        format_number(result.max_wall_penetration_over_d) +
+                        " d through a wall or the floor; a settled pour stays within " +
+                        format_number(kMaxSettledPenetrationOverD) + " d");
+    }
+    if (result.max_overlap_over_d > kMaxSettledOverlapOverD) {
+        throw PourError("the LIGGGHTS result has two spheres overlapping by " +
+                        format_number(result.max_overlap_over_d) +
+                        " d; a settled pour stays within " +
+                        format_number(kMaxSettledOverlapOverD) + " d");
+    }
+}
+
 void record(Metadata& m, const PourRequest& request, const PourLog& log, const PourResult& r) {
     const PourParameters& p = request.parameters;
     const LiggghtsSeeds seeds = liggghts_seeds(p.seed);
@@ -352,6 +399,7 @@ PourResult pour(const PourRequest& request, const PourObserver& observer) {
     result.max_overlap_over_d = pair_overlaps(result.pack).max_overlap / d;
     result.max_wall_penetration_over_d = max_wall_penetration(result.pack, Container{}) / d;
     result.phi_control_volume = packing_fraction(result.pack, control_volume());
+    check_settled(result);
     if (request.start && request.start->colours.size() == p.count) {
         for (std::size_t i = 0; i < p.count; ++i) {
             result.pack.particles[i].color = request.start->colours[i];

@@ -8,14 +8,20 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "config_file.hpp"
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/engine/pack_checks.hpp"
 #include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/input_error.hpp"
+#include "sgmp/pack/interrupt.hpp"
+#include "sgmp/pack/option_rules.hpp"
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/pack/sphere_box_volume.hpp"
 #include "sgmp/pack/version.hpp"
@@ -59,7 +65,8 @@ void add_common(CLI::App& app, Options& o) {
         ->required();
     app.add_option("--seed", o.seed,
                    "random seed (colours, loose-random positions, random choices)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check([](const std::string& text) { return sgmp::seed_rule(text); });
     app.add_option("--out", o.out, "output pack file (extended XYZ; .gz compresses)")->required();
     app.add_flag("--force", o.force, "overwrite an existing output file");
     app.add_option("--phi-target", o.phi_target,
@@ -82,7 +89,10 @@ void add_protocol(CLI::App& app, Options& o) {
     app.add_option("--sweep-stages", o.sweep_stages,
                    "multi-stage sweep, increasing counts such as 8,120,720: a stage is tried "
                    "only when the previous one found no free position (overrides "
-                   "--sweep-positions)");
+                   "--sweep-positions)")
+        ->check([](const std::string& text) {
+            return text.empty() ? "must list at least one count, e.g. 8,120,720" : "";
+        });
     app.add_option("--lower-neighbours", o.lower_neighbours,
                    "size of the lower columnar neighbour list (>= 1; recorded, does not change "
                    "results: the fall scans the whole column below)")
@@ -199,10 +209,7 @@ class Progress {
     Clock::time_point start_;
 };
 
-/// `--config FILE` (after the subcommand): the file's `key = value` lines (TOML/INI, keys
-/// named as the long options — `phi-target` or, as pack headers write it, `phi_target` —
-/// optionally in a [pack] / [arrange] section) become options placed before the command
-/// line's own, so options typed on the command line win.
+/// `--config FILE` (config_file.hpp): its options are placed before the command line's.
 std::vector<std::string> expand_config(std::vector<std::string> args) {
     for (std::size_t i = 0; i < args.size(); ++i) {
         std::string path;
@@ -213,38 +220,33 @@ std::vector<std::string> expand_config(std::vector<std::string> args) {
         } else {
             continue;
         }
-        const std::string command = args.empty() ? "" : args.front();
-        std::vector<std::string> injected;
-        for (const CLI::ConfigItem& item : CLI::ConfigTOML().from_file(path)) {
-            if (item.name == "++" || item.name == "--") {
-                continue;  // section markers
-            }
-            if (!item.parents.empty() && item.parents != std::vector<std::string>{command}) {
-                throw UsageError{"--config " + path + ": key '" + item.fullname() +
-                                 "' belongs to no option of '" + command + "'"};
-            }
-            // Pack headers record parameters in snake_case: accept those names too.
-            std::string name = item.name;
-            std::replace(name.begin(), name.end(), '_', '-');
-            const std::string option = "--" + name;
-            if (item.inputs.size() == 1 &&
-                (item.inputs[0] == "true" || item.inputs[0] == "false")) {
-                if (item.inputs[0] == "true")
-                    injected.push_back(option);  // a flag
-                continue;
-            }
-            injected.push_back(option);
-            injected.insert(injected.end(), item.inputs.begin(), item.inputs.end());
+        if (!std::filesystem::is_regular_file(path)) {
+            throw UsageError{"--config " + path + ": must name a readable file"};
         }
-        args.insert(args.begin() + 1, injected.begin(), injected.end());
+        std::ifstream in(path);
+        try {
+            const auto injected = sgmp::app::config_arguments(in, args.front());
+            args.insert(args.begin() + 1, injected.begin(), injected.end());
+        } catch (const std::invalid_argument& e) {
+            throw UsageError{"--config " + path + ": " + e.what()};
+        }
         return args;
     }
     return args;
 }
 
+/// --out must be writable before any work starts (a usage error, exit 2).
+void check_out(const Options& o) {
+    try {
+        check_writable(o.out, o.force);
+    } catch (const std::runtime_error& e) {
+        throw UsageError{std::string("--out ") + e.what()};
+    }
+}
+
 int run_pack(const Options& o) {
     const PackRequest request = to_request(o);
-    check_writable(o.out, o.force);
+    check_out(o);
     Progress progress;
     const Pack pack =
         make_pack(request, [&](std::size_t done, std::size_t total) { progress(done, total); });
@@ -263,7 +265,7 @@ int run_pack(const Options& o) {
 
 int run_arrange(const Options& o) {
     const PackRequest request = to_request(o);
-    check_writable(o.out, o.force);
+    check_out(o);
     const Pack pack = make_start_pack(request);
     write_pack_file(o.out, pack, o.force);
     std::printf("sgmp: arranged %zu particles, %s, d=%.6g, start height %.4f -> %s\n",
@@ -308,21 +310,23 @@ int main(int argc, char** argv) {
         std::reverse(args.begin(), args.end());  // CLI11 takes the arguments reversed
         app.parse(args);
     } catch (const UsageError& e) {
-        std::cerr << "sgmp: " << e.message << "\n";
+        std::cerr << "sgmp: " << printable(e.message) << "\n";
         return 2;
     } catch (const CLI::Success& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        std::cerr << "sgmp: " << e.what() << "\n";
+        std::cerr << "sgmp: " << printable(e.what()) << "\n";
         return 2;
     }
+    install_interrupt_handler("sgmp");
     try {
         return pack->parsed() ? run_pack(pack_options) : run_arrange(arrange_options);
     } catch (const UsageError& e) {
-        std::cerr << "sgmp: " << e.message << "\n";
+        std::cerr << "sgmp: " << printable(e.message) << "\n";
         return 2;
     } catch (const std::exception& e) {
-        std::cerr << "sgmp: " << e.what() << "\n";
-        return 2;
+        // A runtime failure (a failed write, a full disk): exit 1, not the usage code.
+        std::cerr << "sgmp: " << printable(e.what()) << "\n";
+        return 1;
     }
 }

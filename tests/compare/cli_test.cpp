@@ -8,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "sgmp/compare/manifest.hpp"
+#include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/pack_file.hpp"
 #include "synthetic_packs.hpp"
 
@@ -117,6 +119,98 @@ BOOST_AUTO_TEST_CASE(usage_errors_give_status_2) {
         BOOST_TEST(lines(r.err) == 1u, arguments << ": " << r.err);
         BOOST_TEST(!fs::exists(scratch() / "o"), arguments);
     }
+}
+
+BOOST_AUTO_TEST_CASE(no_option_or_pack_allocates_without_bound) {
+    good_pack("a.xyz", 1);
+    // A sphere a billion sides up: default slabs of 1 d would number about 10^10.
+    write("tall.xyz", "2\n" + kHeader + "1 0 0 0 0.05 0\n2 0 1e9 0 0.05 0\n");
+    const std::vector<std::pair<std::string, std::string>> bad{
+        {"measure a.xyz --out o --slab 1e-12",
+         "sgmp-compare: --slab 1e-12: must be at least 0.001 d"},
+        {"measure a.xyz --out o --gr-range 1e6 --gr-bin 100",
+         "sgmp-compare: --gr-range 1e+06: must be at most 100 d"},
+        {"measure a.xyz --out o --q6-cutoff 1e9",
+         "sgmp-compare: --q6-cutoff 1e+09: must be at most 10"},
+        {"measure a.xyz --out o --threads 4294967295",
+         "sgmp-compare: --threads: must be a number in [0, 256] (0: all cores)"},
+        {"measure tall.xyz --out o",
+         "sgmp-compare: tall.xyz: --slab 1 gives 10000000007 slabs from the floor to the top "
+         "sphere; at most 1000000 are allowed"},
+    };
+    for (const auto& [arguments, message] : bad) {
+        const Result r = run(arguments);
+        BOOST_TEST(r.status == 2, arguments << ": " << r.err);
+        BOOST_TEST(r.err.substr(0, message.size()) == message, arguments << ": " << r.err);
+        BOOST_TEST(lines(r.err) == 1u, arguments << ": " << r.err);
+        BOOST_TEST(!fs::exists(scratch() / "o"), arguments);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(a_crafted_header_is_refused_and_leaves_no_temporary) {
+    // Once an out-of-bounds read (SIGSEGV) that left a .m.tmp-PID directory behind.
+    write("crafted.xyz", "1\nProperties=foo:R:5:pos:R:3:radius:R:1:bar:R:4294967287\n\n");
+    const Result r = run("measure crafted.xyz --out m");
+    BOOST_TEST(r.status == 1, r.err);
+    BOOST_TEST(r.err.find("sgmp-compare: crafted.xyz:2: Properties entry 'bar' has count") == 0u,
+               r.err);
+    BOOST_TEST(lines(r.err) == 1u);
+    for (const auto& entry : fs::directory_iterator(scratch())) {
+        BOOST_TEST(entry.path().filename().string().find(".m.tmp-") == std::string::npos);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(sigint_removes_the_temporary_directory_and_exits_130) {
+    // Three packs of 200,000 spheres take seconds to read and measure; SIGINT comes as
+    // soon as the temporary output directory exists.
+    const sgmp::Pack big = sgmp::testing::jittered_fcc_pack(200000, 1.05, 0.02, 5);
+    for (const char* name : {"big1.xyz", "big2.xyz", "big3.xyz"}) {
+        sgmp::write_pack_file(scratch() / name, big, true);
+    }
+    const std::string command =
+        "cd '" + scratch().string() + "' && { '" + kTool.string() +
+        "' measure big1.xyz big2.xyz big3.xyz --out big 2>stderr.txt & pid=$!; "
+        "for i in $(seq 1000); do [ -d .big.tmp-$pid ] && break; sleep 0.01; done; "
+        "kill -INT $pid; wait $pid; echo $? >status.txt; }";
+    BOOST_TEST(std::system(command.c_str()) == 0);
+    BOOST_TEST(slurp(scratch() / "status.txt") == "130\n");
+    BOOST_TEST(slurp(scratch() / "stderr.txt") ==
+               "sgmp-compare: interrupted by SIGINT; its temporary files are removed\n");
+    BOOST_TEST(!fs::exists(scratch() / "big"));
+    for (const auto& entry : fs::directory_iterator(scratch())) {
+        BOOST_TEST(entry.path().filename().string().find(".big.tmp-") == std::string::npos);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(manifest_paths_may_hold_commas_and_quotes) {
+    std::istringstream in(
+        "role,group,count,seed,seconds,path\n"
+        "candidate,g,150,1,0.5,\"out, \"\"x y\"\"/a.xyz\"\n"
+        "reference,\"DEM, mu=0.5\",150,1,,plain/b.xyz\n");
+    const auto entries = sgmp::compare::read_manifest(in, "m.csv");
+    BOOST_TEST_REQUIRE(entries.size() == 2u);
+    BOOST_TEST(entries[0].path == "out, \"x y\"/a.xyz");
+    BOOST_TEST(entries[1].group == "DEM, mu=0.5");
+    BOOST_TEST(entries[1].path == "plain/b.xyz");
+    std::istringstream open_quote("role,group,count,seed,seconds,path\ncandidate,g,150,1,,\"a\n");
+    std::string message;
+    try {
+        (void)sgmp::compare::read_manifest(open_quote, "m.csv");
+    } catch (const sgmp::InputError& error) {
+        message = error.what();
+    }
+    BOOST_TEST(message == "m.csv:2: a quoted field lacks its closing quote or has text after it");
+}
+
+BOOST_AUTO_TEST_CASE(a_manifest_with_seconds_nan_is_refused) {
+    std::istringstream in("role,group,count,seed,seconds,path\ncandidate,g,150,1,nan,a.xyz\n");
+    std::string message;
+    try {
+        (void)sgmp::compare::read_manifest(in, "m.csv");
+    } catch (const sgmp::InputError& error) {
+        message = error.what();
+    }
+    BOOST_TEST(message == "m.csv:2: seconds 'nan' must be a number >= 0 or empty");
 }
 
 BOOST_AUTO_TEST_CASE(measure_and_report_write_complete_directories) {

@@ -177,6 +177,50 @@ BOOST_AUTO_TEST_CASE(arrange_writes_the_starting_positions) {
     BOOST_TEST(pack.particles.back().id == 300);
 }
 
+BOOST_AUTO_TEST_CASE(values_once_accepted_silently_are_refused) {
+    const Scratch s;
+    const std::string seed_rule = "must be a whole number from 0 to 18446744073709551615";
+    expect_refused(s, "--count 100 --seed -1", "--seed: " + seed_rule);
+    expect_refused(s, "--count 100 --seed 18446744073709551616", "--seed: " + seed_rule);
+    expect_refused(s, "--count 100 --sweep-stages ''", "--sweep-stages: must list at least one");
+    expect_refused(s, "--count 100 --phi-target 1e-300",
+                   "--phi-target 1e-300: must be at least 0.001");
+    expect_refused(s, "--config '" + s.dir.string() + "'",
+                   "--config " + s.dir.string() + ": must name a readable file");
+}
+
+BOOST_AUTO_TEST_CASE(a_full_disk_exits_1_not_the_usage_code) {
+    const Scratch s;
+    // SIGXFSZ ignored, so the write fails with EFBIG as it would with ENOSPC.
+    const std::string command = "bash -c 'trap \"\" XFSZ; ulimit -f 64; exec \"$0\" \"$@\"' '" +
+                                std::string(SGMP_EXECUTABLE) +
+                                "' pack --count 20000 --arrangement small-dense --seed 1 --out '" +
+                                s.path("p.xyz.gz") + "' 2>'" + s.path("stderr") + "'";
+    const int raw = std::system(command.c_str());
+    BOOST_TEST(WIFEXITED(raw));
+    BOOST_TEST(WEXITSTATUS(raw) == 1);
+    BOOST_TEST(slurp(s.path("stderr")) ==
+               "sgmp: " + s.path("p.xyz.gz") + ": write failed: File too large\n");
+    BOOST_TEST(!fs::exists(s.path("p.xyz.gz")));
+    BOOST_TEST(std::distance(fs::directory_iterator(s.dir), fs::directory_iterator()) == 1);
+}
+
+BOOST_AUTO_TEST_CASE(sigint_exits_130_with_one_line_and_no_file) {
+    const Scratch s;
+    // SIGINT half a second into a pack that takes several seconds.
+    const std::string command = "'" + std::string(SGMP_EXECUTABLE) +
+                                "' pack --count 100000 --arrangement loose-random --seed 1 "
+                                "--out '" +
+                                s.path("p.xyz.gz") + "' 2>'" + s.path("stderr") +
+                                "' & pid=$!; sleep 0.5; kill -INT $pid; wait $pid; echo $? >'" +
+                                s.path("status") + "'";
+    BOOST_TEST(std::system(command.c_str()) == 0);
+    BOOST_TEST(slurp(s.path("status")) == "130\n");
+    BOOST_TEST(slurp(s.path("stderr")) ==
+               "sgmp: interrupted by SIGINT; its temporary files are removed\n");
+    BOOST_TEST(std::distance(fs::directory_iterator(s.dir), fs::directory_iterator()) == 2);
+}
+
 BOOST_AUTO_TEST_CASE(help_and_version) {
     const Scratch s;
     const Run help = s.run("pack --help");

@@ -52,6 +52,22 @@ BOOST_AUTO_TEST_CASE(the_last_snapshot_is_returned) {
     BOOST_TEST(pack.particles[1].center.y() == -0.475);
 }
 
+BOOST_AUTO_TEST_CASE(a_last_snapshot_cut_short_leaves_the_last_complete_one) {
+    // Cut after a whole line, inside a line, and inside the header of the snapshot.
+    for (const std::size_t keep :
+         {kSnapshot1.rfind("8 1"), kSnapshot1.rfind("-0.4"), kSnapshot1.find("ITEM: BOX") + 4}) {
+        std::istringstream in(kSnapshot0 + kSnapshot1.substr(0, keep));
+        const Pack pack = read_dump_custom(in, "pour.dump");
+        BOOST_TEST(*pack.metadata.get("timestep") == "0");
+        BOOST_TEST(pack.particles.size() == 2u);
+    }
+    // An error with lines after it is no truncation: the file is rejected.
+    std::string bad_middle = kSnapshot1;
+    bad_middle.replace(bad_middle.find("0.3 "), 3, "0.x");
+    BOOST_TEST(read_error(kSnapshot0 + bad_middle) ==
+               "pour.dump:21: column 'x' holds '0.x', which is not a number");
+}
+
 BOOST_AUTO_TEST_CASE(malformed_dumps_name_the_line_and_the_reason) {
     BOOST_TEST(read_error("") == "pour.dump: empty file: no snapshot");
     BOOST_TEST(read_error("hello\n") == "pour.dump:1: expected 'ITEM: TIMESTEP', found 'hello'");
@@ -82,6 +98,16 @@ BOOST_AUTO_TEST_CASE(malformed_dumps_name_the_line_and_the_reason) {
     bad_count.replace(bad_count.find("\n2\n"), 3, "\n-2\n");
     BOOST_TEST(read_error(bad_count) ==
                "pour.dump:4: the number of atoms must be a non-negative integer, found '-2'");
+}
+
+BOOST_AUTO_TEST_CASE(a_claimed_count_allocates_nothing_before_its_lines_arrive) {
+    // Counts the fuzzer found (1.5e9 atoms in a few hundred bytes) once ended in bad_alloc.
+    for (const std::string count : {"1500000000", "9223372036854775807"}) {
+        std::string claim = kSnapshot1;
+        claim.replace(claim.find("\n2\n"), 3, "\n" + count + "\n");
+        BOOST_TEST(read_error(claim) ==
+                   "pour.dump:11: file ends after 2 of " + count + " atom lines of timestep 1000");
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -1,7 +1,15 @@
 #include "sgmp/pack/pack_file.hpp"
 
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <boost/test/unit_test.hpp>
+#include <csignal>
 #include <stdexcept>
+
+#include "sgmp/pack/interrupt.hpp"
+#include "sgmp/pack/random.hpp"
 
 #include "sgmp/pack/atomic_file.hpp"
 #include "test_support.hpp"
@@ -26,9 +34,99 @@ std::size_t entries_in(const fs::path& directory) {
         std::distance(fs::directory_iterator(directory), fs::directory_iterator()));
 }
 
+/// Writes `target` (1 MB of incompressible digits) in a child process whose file size
+/// limit is 64 kB, as on a full disk. Returns the child's message and sets `status` to its
+/// exit status, or to -1 when it did not end within 20 s (a hang).
+std::string write_past_the_size_limit(const fs::path& target, int& status) {
+    int fds[2];
+    BOOST_TEST_REQUIRE(::pipe(fds) == 0);
+    const pid_t pid = ::fork();
+    BOOST_TEST_REQUIRE(pid >= 0);
+    if (pid == 0) {
+        ::close(fds[0]);
+        std::signal(SIGXFSZ, SIG_IGN);  // the write then fails with EFBIG, as on ENOSPC
+        const rlimit limit{64 * 1024, 64 * 1024};
+        ::setrlimit(RLIMIT_FSIZE, &limit);
+        ::alarm(20);
+        std::string message = "no error";
+        try {
+            write_file_atomically(target, false, [](std::ostream& out) {
+                Random random(7);
+                for (int i = 0; i < 100000; ++i) {
+                    out << random.below(10000000000ULL) << '\n';
+                }
+            });
+        } catch (const std::exception& error) {
+            message = error.what();
+        }
+        (void)!::write(fds[1], message.data(), message.size());
+        ::_exit(message == "no error" ? 0 : 1);
+    }
+    ::close(fds[1]);
+    std::string message;
+    char buffer[512];
+    ssize_t got = 0;
+    while ((got = ::read(fds[0], buffer, sizeof buffer)) > 0) {
+        message.append(buffer, static_cast<std::size_t>(got));
+    }
+    ::close(fds[0]);
+    int raw = 0;
+    ::waitpid(pid, &raw, 0);
+    status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    return message;
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(pack_file)
+
+BOOST_AUTO_TEST_CASE(sigint_in_the_middle_of_a_write_removes_the_temporary_and_exits_130) {
+    // In a child: the interrupt handler is installed, a .gz and a directory are half
+    // written, then SIGINT arrives. The child must exit 130 and leave nothing behind.
+    ScratchDirectory scratch("pack_file_interrupt");
+    for (const bool directory : {false, true}) {
+        const pid_t pid = ::fork();
+        BOOST_TEST_REQUIRE(pid >= 0);
+        if (pid == 0) {
+            ::alarm(20);
+            install_interrupt_handler("pack_tests");
+            const auto interrupt = [] {
+                ::kill(::getpid(), SIGINT);
+                ::pause();  // the watcher thread exits the process
+            };
+            if (directory) {
+                write_directory_atomically(scratch.path() / "out", false, [&](const fs::path& d) {
+                    write_text(d / "part.txt", "half of the output");
+                    interrupt();
+                });
+            } else {
+                write_file_atomically(scratch.path() / "big.xyz.gz", false, [&](std::ostream& out) {
+                    out << std::string(1 << 20, 'x');
+                    interrupt();
+                });
+            }
+            ::_exit(0);
+        }
+        int raw = 0;
+        ::waitpid(pid, &raw, 0);
+        BOOST_TEST_INFO(std::string(directory ? "directory" : "file"));
+        BOOST_TEST((WIFEXITED(raw) ? WEXITSTATUS(raw) : -1) == 130);
+        BOOST_TEST(entries_in(scratch.path()) == 0u);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(a_full_disk_fails_a_compressed_or_plain_write_in_one_line) {
+    // The gzip compressor once retried a failed write for ever (100 % CPU).
+    ScratchDirectory scratch("pack_file_full_disk");
+    for (const std::string name : {"big.xyz.gz", "big.xyz"}) {
+        int status = 0;
+        const std::string message = write_past_the_size_limit(scratch.path() / name, status);
+        BOOST_TEST_INFO(name);
+        BOOST_TEST(status == 1);
+        BOOST_TEST(message == (scratch.path() / name).string() + ": write failed: File too large");
+        BOOST_TEST(entries_in(scratch.path()) == 0u);  // neither target nor temporary
+    }
+}
 
 BOOST_AUTO_TEST_CASE(plain_and_gzip_files_read_back_the_same) {
     ScratchDirectory scratch("pack_file_round_trip");

@@ -100,4 +100,37 @@ BOOST_AUTO_TEST_CASE(malformed_files_name_the_line_and_the_reason) {
                "pack.xyz:2: expected key=value in the header, found '\"x'");
 }
 
+BOOST_AUTO_TEST_CASE(column_counts_cannot_overflow_the_line_width) {
+    // A count near 2^32 once wrapped the width, so a line passed the width check while the
+    // position column pointed past its fields.
+    const std::string rule =
+        "a count must be a positive integer and all entries together at most 10000 columns";
+    BOOST_TEST(read_error("1\nProperties=foo:R:5:pos:R:3:radius:R:1:bar:R:4294967287\n\n") ==
+               "pack.xyz:2: Properties entry 'bar' has count '4294967287'; " + rule);
+    BOOST_TEST(read_error("1\nProperties=pos:R:3:radius:R:1:bar:R:9223372036854775807\n\n") ==
+               "pack.xyz:2: Properties entry 'bar' has count '9223372036854775807'; " + rule);
+    BOOST_TEST(read_error("1\nProperties=pos:R:3:radius:R:1:a:R:9990:b:R:7\n\n") ==
+               "pack.xyz:2: Properties entry 'b' has count '7'; " + rule);
+    // 10000 columns in all is still accepted.
+    std::string line = "0 0 0 0.1";
+    for (int i = 0; i < 9996; ++i) {
+        line += " 1";
+    }
+    std::istringstream in("1\nProperties=pos:R:3:radius:R:1:a:R:9996\n" + line + "\n");
+    BOOST_TEST(read_xyz(in, "pack.xyz").particles.size() == 1u);
+}
+
+BOOST_AUTO_TEST_CASE(binary_bytes_are_escaped_in_messages) {
+    BOOST_TEST(read_error("\x1b[2J\xff\n") ==
+               "pack.xyz:1: expected the particle count, found '\\x1b[2J\\xff'");
+}
+
+BOOST_AUTO_TEST_CASE(a_claimed_count_allocates_nothing_before_its_lines_arrive) {
+    // A 100-byte file claiming 10^15 or 2^63 - 1 particles once died in reserve().
+    BOOST_TEST(read_error("1000000000000000\n" + kHeader + "1 0 0 0 0.1 0\n") ==
+               "pack.xyz:3: file ends after 1 of 1000000000000000 particle lines");
+    BOOST_TEST(read_error("9223372036854775807\n" + kHeader) ==
+               "pack.xyz:2: file ends after 0 of 9223372036854775807 particle lines");
+}
+
 BOOST_AUTO_TEST_SUITE_END()

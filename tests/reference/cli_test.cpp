@@ -2,16 +2,22 @@
 // programs first on PATH. Each fault must give a one-line message, a non-zero exit and
 // no pack file.
 #include <signal.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "run_program.hpp"
+#include "sgmp/pack/geometry.hpp"
+#include "sgmp/pack/metadata.hpp"
 
 namespace fs = std::filesystem;
 using namespace sgmp::reference::testing;
@@ -75,9 +81,137 @@ std::string hanging_fake(const fs::path& dir, const std::string& before = "") {
            "'\ntouch '" + (dir / "started").string() + "'\nwait\n";
 }
 
+/// A dump of 150 spheres of the sizing rule's diameter standing apart in a grid on the
+/// floor, layer upon layer; `edit` may then move sphere 0 (x, y, z) and sphere 1.
+std::string settled_dump(const std::function<void(std::vector<sgmp::Vec3>&)>& edit = {}) {
+    const double d = sgmp::diameter_for_count(150);
+    std::vector<sgmp::Vec3> centres;
+    for (int i = 0; i < 150; ++i) {
+        const int layer = i / 16;
+        const int row = (i % 16) / 4;
+        const int column = i % 4;
+        centres.emplace_back(-0.625 + d * (0.5 + 1.01 * column), -0.625 + d * (0.5 + 1.01 * layer),
+                             -0.625 + d * (0.5 + 1.01 * row));
+    }
+    if (edit) {
+        edit(centres);
+    }
+    std::string text =
+        "ITEM: TIMESTEP\n1000\nITEM: NUMBER OF ATOMS\n150\nITEM: BOX BOUNDS ff ff ff\n"
+        "-0.625 0.625\n-0.625 5\n-0.625 0.625\nITEM: ATOMS id type x y z radius vx vy vz\n";
+    for (int i = 0; i < 150; ++i) {
+        text += std::to_string(i + 1) + " 1 " + sgmp::format_number(centres[i].x()) + " " +
+                sgmp::format_number(centres[i].y()) + " " + sgmp::format_number(centres[i].z()) +
+                " " + sgmp::format_number(d / 2.0) + " 0 0 0\n";
+    }
+    return text;
+}
+
+/// A fake LIGGGHTS that reports a settled pour of 150 and leaves `dump` as its result.
+std::string settled_fake(const fs::path& dump) {
+    return kBanner +
+           "echo 'SGMP-PARAMETERS timestep 1e-4 rayleigh_time 1e-3 step_cap 1000'\n"
+           "echo 'SGMP-INSERTED 150'\necho 'SGMP-SETTLE 1000 1e-08 1e-06'\n"
+           "cp '" +
+           dump.string() + "' final.dump\necho 'SGMP-RESULT settled 1000 1e-08'\necho SGMP-DONE\n";
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(cli_faults)
+
+BOOST_AUTO_TEST_CASE(impossible_liggghts_results_are_refused_before_writing) {
+    FakeLiggghts fake("");
+    const fs::path dump = fake.dir / "result.dump";
+    write_script(fake.dir / "bin" / "liggghts", settled_fake(dump));
+    const double d = sgmp::diameter_for_count(150);
+    {  // a sound result is written
+        std::ofstream(dump) << settled_dump();
+        const ProgramRun run = fake.pour({"--quiet"});
+        BOOST_TEST(run.exit_code == 0, run.stderr_text);
+        BOOST_TEST(fs::exists(fake.out));
+        fs::remove(fake.out);
+    }
+    {  // a sphere 0.99 d outside the container (through the wall at x = 0.625)
+        std::ofstream(dump) << settled_dump(
+            [&](std::vector<sgmp::Vec3>& c) { c[0].x() = 0.625 - d / 2 + 0.99 * d; });
+        const ProgramRun run = fake.pour({"--quiet"});
+        BOOST_TEST(run.exit_code == 1);
+        BOOST_TEST(first_line(run.stderr_text)
+                           .find("sgmp-reference: the LIGGGHTS result has a sphere 0.99") == 0u,
+                   run.stderr_text);
+        BOOST_TEST(first_line(run.stderr_text).find("a settled pour stays within 0.05 d") !=
+                   std::string::npos);
+        BOOST_TEST(!fs::exists(fake.out));
+    }
+    {  // two coincident spheres
+        std::ofstream(dump) << settled_dump([&](std::vector<sgmp::Vec3>& c) { c[1] = c[0]; });
+        const ProgramRun run = fake.pour({"--quiet"});
+        BOOST_TEST(run.exit_code == 1);
+        BOOST_TEST(first_line(run.stderr_text) ==
+                   "sgmp-reference: the LIGGGHTS result has two spheres overlapping by 1 d; a "
+                   "settled pour stays within 0.05 d");
+        BOOST_TEST(!fs::exists(fake.out));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(sigkill_of_sgmp_reference_ends_liggghts_too) {
+    // The fake records its own pid; with PR_SET_PDEATHSIG it dies with its parent.
+    FakeLiggghts fake("");
+    write_script(fake.dir / "bin" / "liggghts",
+                 kBanner + "echo $$ > '" + (fake.dir / "liggghts.pid").string() + "'\ntouch '" +
+                     (fake.dir / "started").string() + "'\nwhile true; do sleep 0.1; done\n");
+    ProgramOptions options;
+    options.args = {"pour", "--count", "150", "--seed", "1", "--out", fake.out.string(), "--quiet"};
+    options.path = fake.path();
+    options.signal_when_exists = fake.dir / "started";
+    options.signal = SIGKILL;
+    (void)run_program(kExe, options);
+    BOOST_TEST(process_ended((fake.dir / "liggghts.pid").string()));
+    BOOST_TEST(!fs::exists(fake.out));
+}
+
+BOOST_AUTO_TEST_CASE(work_directories_of_killed_runs_are_removed) {
+    // A SIGKILLed sgmp-reference leaves its work directory in TMPDIR; the next pour removes
+    // those whose process is gone (pid 4999999 is above Linux's largest) and keeps others.
+    FakeLiggghts fake(kBanner + "exit 1\n");
+    const fs::path tmp = fake.dir / "tmp";
+    const fs::path orphan = tmp / "sgmp-reference-4999999-abcdef";
+    const fs::path alive = tmp / ("sgmp-reference-" + std::to_string(::getpid()) + "-abcdef");
+    fs::create_directories(orphan);
+    fs::create_directories(alive);
+    ::setenv("TMPDIR", tmp.c_str(), 1);
+    const ProgramRun run = fake.pour({"--quiet"});
+    ::unsetenv("TMPDIR");
+    BOOST_TEST(run.exit_code == 1);
+    BOOST_TEST(!fs::exists(orphan));
+    BOOST_TEST(fs::exists(alive));
+    BOOST_TEST(std::distance(fs::directory_iterator(tmp), fs::directory_iterator()) == 1);
+}
+
+BOOST_AUTO_TEST_CASE(values_once_accepted_silently_are_refused_with_the_prefix) {
+    FakeLiggghts fake("");
+    write_script(fake.dir / "bin" / "liggghts",
+                 kBanner + "touch '" + (fake.dir / "ran").string() + "'\n");
+    struct Case {
+        std::string option, value, message;
+    };
+    const std::vector<Case> cases{
+        {"--seed", "-1", "--seed: must be a whole number from 0 to 18446744073709551615"},
+        {"--timeout", "nan", "--timeout: must be a number in [0, 2592000] s (30 days)"},
+        {"--timeout", "-1", "--timeout: must be a number in [0, 2592000] s (30 days)"},
+        {"--friction", "x", "--friction"},
+        {"--density", "inf", "density = inf: must be positive"},
+        {"--check-time", "1e-300", "max_time = 30: must be at most 10^6 settling checks"},
+    };
+    for (const auto& [option, value, message] : cases) {
+        const ProgramRun run = fake.pour({option, value});
+        BOOST_TEST(run.exit_code == 2, option << " " << value);
+        BOOST_TEST(run.stderr_text.find("sgmp-reference: " + message) == 0u, run.stderr_text);
+        BOOST_TEST(std::count(run.stderr_text.begin(), run.stderr_text.end(), '\n') == 1);
+        BOOST_TEST(!fs::exists(fake.dir / "ran"));
+    }
+}
 
 BOOST_AUTO_TEST_CASE(a_liggghts_error_is_shown_with_the_log_tail) {
     FakeLiggghts fake(kBanner +

@@ -55,6 +55,11 @@ std::optional<std::string> validate(const PackRequest& request) {
         return "--phi-target " + format_number(request.phi_target) +
                ": must be in (0, 0.7405] (the densest packing of equal spheres)";
     }
+    if (request.phi_target < 1e-3) {
+        // Below this the sizing rule gives spheres smaller than the default fall step.
+        return "--phi-target " + format_number(request.phi_target) +
+               ": must be at least 0.001 (smaller targets give vanishing diameters)";
+    }
     if (request.size_modes.empty()) {
         return std::string("--size-modes: needs at least one mode");
     }

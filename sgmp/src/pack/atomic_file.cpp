@@ -1,14 +1,18 @@
 #include "sgmp/pack/atomic_file.hpp"
 
+#include <fcntl.h>
 #include <unistd.h>
 
+#include <boost/iostreams/categories.hpp>
 #include <boost/iostreams/filter/gzip.hpp>
 #include <boost/iostreams/filtering_stream.hpp>
 #include <cerrno>
 #include <cstring>
-#include <fstream>
+#include <ios>
 #include <stdexcept>
 #include <system_error>
+
+#include "sgmp/pack/interrupt.hpp"
 
 namespace sgmp {
 namespace fs = std::filesystem;
@@ -27,6 +31,53 @@ fs::path sibling_temporary(const fs::path& target, const char* kind) {
 
 bool ends_with_gz(const fs::path& path) {
     return path.extension() == ".gz";
+}
+
+/// A file descriptor as a Boost.Iostreams sink. A failed write throws at once (a short
+/// count would make the gzip compressor retry for ever when the disk is full).
+class DescriptorSink {
+  public:
+    using char_type = char;
+    using category = boost::iostreams::sink_tag;
+
+    /// `failure` receives the message of a failed write.
+    DescriptorSink(int fd, const fs::path* target, std::string* failure)
+        : fd_(fd), target_(target), failure_(failure) {}
+
+    std::streamsize write(const char* data, std::streamsize size) {
+        std::streamsize done = 0;
+        while (done < size) {
+            const ssize_t wrote = ::write(fd_, data + done, static_cast<std::size_t>(size - done));
+            if (wrote < 0 && errno == EINTR) {
+                continue;
+            }
+            if (wrote <= 0) {
+                *failure_ = target_->string() + ": write failed: " +
+                            (wrote < 0 ? std::strerror(errno) : "no space written");
+                throw std::ios_base::failure(*failure_);
+            }
+            done += wrote;
+        }
+        return size;
+    }
+
+  private:
+    int fd_;
+    const fs::path* target_;
+    std::string* failure_;
+};
+
+/// Flushes a directory's entries to disk, so a rename into it survives a power cut.
+void sync_directory(const fs::path& directory) {
+    const int fd = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd >= 0) {
+        (void)::fsync(fd);  // some file systems cannot sync a directory; the data is synced
+        ::close(fd);
+    }
+}
+
+fs::path parent_of(const fs::path& target) {
+    return target.parent_path().empty() ? fs::path(".") : target.parent_path();
 }
 
 /// Moves `from` to `to`. Without `overwrite` this is a hard link plus unlink, which
@@ -73,30 +124,54 @@ void write_file_atomically(const fs::path& target, bool overwrite,
                            const std::function<void(std::ostream&)>& produce) {
     check_writable(target, overwrite);
     const fs::path temporary = sibling_temporary(target, "tmp");
+    const TemporaryGuard guard(temporary);
+    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0) {
+        throw path_error(
+            target, std::string("cannot create a file in its directory: ") + std::strerror(errno));
+    }
+    bool open = true;
+    std::string failure;
     try {
-        std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-        if (!file) {
-            throw path_error(target, std::string("cannot create a file in its directory: ") +
-                                         std::strerror(errno));
+        {
+            boost::iostreams::filtering_ostream out;
+            if (ends_with_gz(target)) {
+                out.push(boost::iostreams::gzip_compressor(boost::iostreams::gzip_params(9)));
+            }
+            out.push(DescriptorSink(fd, &target, &failure), 1 << 16);
+            // A failed write stops `produce` at once, as an exception.
+            out.exceptions(std::ios::badbit);
+            produce(out);
+            out.flush();
+            out.exceptions(std::ios::goodbit);
+            out.reset();  // writes the gzip trailer; a failure there throws from the sink
+            if (!failure.empty()) {
+                throw std::ios_base::failure(failure);
+            }
         }
-        if (ends_with_gz(target)) {
-            boost::iostreams::filtering_ostream compressed;
-            compressed.push(boost::iostreams::gzip_compressor(boost::iostreams::gzip_params(9)));
-            compressed.push(file);
-            produce(compressed);
-            compressed.reset();  // flushes the gzip trailer into `file`
-        } else {
-            produce(file);
+        if (::fsync(fd) != 0) {
+            throw path_error(target,
+                             std::string("cannot sync the file to disk: ") + std::strerror(errno));
         }
-        file.flush();
-        if (!file) {
-            throw path_error(temporary, "write failed (disk full?)");
+        open = false;
+        if (::close(fd) != 0) {
+            throw path_error(target, std::string("write failed: ") + std::strerror(errno));
         }
-        file.close();
         move_into_place(temporary, target, overwrite);
+        sync_directory(parent_of(target));
+    } catch (const std::ios_base::failure& error) {
+        if (open) {
+            ::close(fd);
+        }
+        remove_temporary(temporary);
+        // The sink's message names the file and the reason; a stream's own says less.
+        throw std::runtime_error(
+            !failure.empty() ? failure : target.string() + ": write failed: " + error.what());
     } catch (...) {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
+        if (open) {
+            ::close(fd);
+        }
+        remove_temporary(temporary);
         throw;
     }
 }
@@ -105,6 +180,7 @@ void write_directory_atomically(const fs::path& target, bool overwrite,
                                 const std::function<void(const fs::path&)>& produce) {
     check_writable(target, overwrite);
     const fs::path temporary = sibling_temporary(target, "tmp");
+    const TemporaryGuard guard(temporary);
     std::error_code ignored;
     fs::remove_all(temporary, ignored);
     fs::create_directories(temporary);
@@ -122,6 +198,7 @@ void write_directory_atomically(const fs::path& target, bool overwrite,
         } else {
             fs::rename(temporary, target);
         }
+        sync_directory(parent_of(target));
     } catch (...) {
         fs::remove_all(temporary, ignored);
         throw;

@@ -1,5 +1,6 @@
 #include "sgmp/pack/dump_format.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include "text_fields.hpp"
@@ -121,7 +122,8 @@ Pack read_snapshot(detail::LineReader& reader) {
     const DumpColumns columns = parse_atom_labels(labels, reader);
     pack.metadata.set_integer("timestep", step);
     pack.metadata.set("dump_box", box);
-    pack.particles.reserve(static_cast<std::size_t>(count));
+    // The count is only a claim until the lines arrive (see read_xyz_lines).
+    pack.particles.reserve(static_cast<std::size_t>(std::min<std::int64_t>(count, 1 << 16)));
     detail::ParticleValidator validator;
     std::string line;
     for (std::int64_t i = 0; i < count; ++i) {
@@ -169,7 +171,21 @@ Pack read_dump_lines(LineReader& reader) {
         if (line.rfind("ITEM: TIMESTEP", 0) != 0) {
             throw reader.error("expected 'ITEM: TIMESTEP', found '" + line + "'");
         }
-        last = read_snapshot(reader);
+        if (!last) {
+            last = read_snapshot(reader);
+            continue;
+        }
+        try {
+            last = read_snapshot(reader);
+        } catch (const InputError&) {
+            // A later snapshot cut short by the end of the file (a dump still being
+            // written, or a stopped run): the last complete one stands. An error with
+            // lines after it is a malformed file.
+            if (!reader.at_end()) {
+                throw;
+            }
+            break;
+        }
     }
     if (!last) {
         throw InputError(reader.source(), reader.line_number(), "empty file: no snapshot");

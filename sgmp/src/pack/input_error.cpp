@@ -2,12 +2,29 @@
 
 namespace sgmp {
 
+std::string printable(std::string_view text) {
+    static constexpr char kHex[] = "0123456789abcdef";
+    std::string out;
+    out.reserve(text.size());
+    for (const char c : text) {
+        const auto byte = static_cast<unsigned char>(c);
+        if ((byte >= 0x20 && byte < 0x7f) || byte == '\t') {
+            out.push_back(c);
+        } else {
+            out += "\\x";
+            out.push_back(kHex[byte >> 4]);
+            out.push_back(kHex[byte & 0xf]);
+        }
+    }
+    return out;
+}
+
 namespace {
 std::string compose(const std::string& source, std::size_t line, const std::string& reason) {
     if (line == 0) {
-        return source + ": " + reason;
+        return printable(source + ": " + reason);
     }
-    return source + ":" + std::to_string(line) + ": " + reason;
+    return printable(source + ":" + std::to_string(line) + ": " + reason);
 }
 }  // namespace
 

@@ -24,6 +24,10 @@ bool LineReader::next(std::string& line) {
     return true;
 }
 
+bool LineReader::at_end() {
+    return !pushed_ && in_.peek() == std::istream::traits_type::eof();
+}
+
 void LineReader::put_back(std::string line) {
     pushed_ = std::move(line);
     --line_number_;

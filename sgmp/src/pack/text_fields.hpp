@@ -22,6 +22,8 @@ class LineReader {
     bool next(std::string& line);
     /// Makes `line` the next one returned again (one level of look-back).
     void put_back(std::string line);
+    /// True when no line is left to return.
+    [[nodiscard]] bool at_end();
     /// Number of the line most recently returned (1-based).
     [[nodiscard]] std::size_t line_number() const { return line_number_; }
     [[nodiscard]] const std::string& source() const { return source_; }

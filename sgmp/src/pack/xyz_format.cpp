@@ -1,5 +1,6 @@
 #include "sgmp/pack/xyz_format.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -9,6 +10,10 @@ namespace sgmp {
 namespace {
 
 constexpr std::string_view kProperties = "id:I:1:pos:R:3:radius:R:1:color:I:1";
+
+/// Most columns a particle line may declare in all; far above any real file, and small
+/// enough that column positions and the line width never overflow an int.
+constexpr std::int64_t kMaxColumns = 10000;
 
 bool needs_quotes(const std::string& value) {
     return value.empty() || value.find_first_of(" \t=") != std::string::npos;
@@ -87,9 +92,11 @@ Columns parse_properties(const std::string& descriptor, const detail::LineReader
     for (std::size_t i = 0; i < parts.size(); i += 3) {
         const std::string& name = parts[i];
         const auto count = detail::parse_integer(parts[i + 2]);
-        if (!count || *count < 1) {
+        if (!count || *count < 1 || *count > kMaxColumns - columns.width) {
             throw reader.error("Properties entry '" + name + "' has count '" + parts[i + 2] +
-                               "'; a count must be a positive integer");
+                               "'; a count must be a positive integer and all entries together "
+                               "at most " +
+                               std::to_string(kMaxColumns) + " columns");
         }
         const auto expect = [&](std::int64_t wanted) {
             if (*count != wanted) {
@@ -220,7 +227,10 @@ Pack read_xyz_lines(LineReader& reader) {
     if (!columns) {
         throw reader.error("header lacks Properties=...");
     }
-    pack.particles.reserve(static_cast<std::size_t>(*count));
+    // The count is only a claim until the lines arrive: reserve no more than a small
+    // block up front, so a short file claiming 10^15 particles fails at its end, not in
+    // the allocator.
+    pack.particles.reserve(static_cast<std::size_t>(std::min<std::int64_t>(*count, 1 << 16)));
     ParticleValidator validator;
     for (std::int64_t i = 0; i < *count; ++i) {
         if (!reader.next(line)) {

@@ -30,7 +30,8 @@ struct ManifestEntry {
 
 /// Reads a manifest strictly; throws sgmp::InputError ("source:line: reason") on a wrong
 /// header, a wrong number of fields, an unknown role, a non-numeric count, seed or seconds,
-/// an empty group or path, or a path listed twice.
+/// an empty group or path, or a path listed twice. Fields holding a comma or a quote are
+/// double-quoted, with quotes doubled (RFC 4180).
 std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& source);
 
 }  // namespace sgmp::compare

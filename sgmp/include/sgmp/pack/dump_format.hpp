@@ -9,8 +9,11 @@
 ///
 /// Columns are found by label: `id`, position `x y z` (or unwrapped `xu yu zu`), and
 /// `radius` or `diameter`; other columns are ignored. When a file holds several
-/// snapshots the last complete one is returned. The timestep and box are recorded in the
-/// metadata (`timestep`, `dump_box`). Errors name source:line and the reason.
+/// snapshots the last complete one is returned: a final snapshot cut short by the end of
+/// the file (a dump still being written, or a stopped run), even in the middle of a line,
+/// is skipped when an earlier one is complete. An error followed by further lines, or in
+/// the only snapshot, rejects the file. The timestep and box are recorded in the metadata
+/// (`timestep`, `dump_box`). Errors name source:line and the reason.
 
 #include <istream>
 #include <string>

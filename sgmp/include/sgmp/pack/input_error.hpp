@@ -1,12 +1,18 @@
 #pragma once
 /// @file input_error.hpp
-/// The error every reader throws: one line, "file:line: reason".
+/// The error every reader throws: one line, "file:line: reason", with non-printable bytes
+/// escaped.
 
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace sgmp {
+
+/// `text` safe to print on a terminal: control characters and bytes outside printable
+/// ASCII become \xNN (tab stays a tab), so a binary file's bytes are never echoed raw.
+std::string printable(std::string_view text);
 
 class InputError : public std::runtime_error {
   public:

@@ -1,0 +1,17 @@
+#pragma once
+// `sgmp pack --config FILE`: the file's `key = value` lines (TOML/INI, keys named as the
+// long options — `phi-target` or, as pack headers write it, `phi_target` — optionally in
+// a [pack] / [arrange] section) become options placed before the command line's own, so
+// options typed on the command line win.
+
+#include <istream>
+#include <string>
+#include <vector>
+
+namespace sgmp::app {
+
+/// The command-line arguments a config file stands for. Throws std::invalid_argument
+/// (a key in a section other than `command`'s) or CLI::ParseError (malformed TOML).
+std::vector<std::string> config_arguments(std::istream& in, const std::string& command);
+
+}  // namespace sgmp::app

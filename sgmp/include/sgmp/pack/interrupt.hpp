@@ -1,0 +1,44 @@
+#pragma once
+/// @file interrupt.hpp
+/// Ctrl-C (SIGINT) and SIGTERM for the command-line tools: a program's temporaries are
+/// removed and it exits with status 130, so an interrupted command leaves no
+/// `.NAME.tmp-PID` file or directory behind.
+///
+/// The signal handler only writes the signal's number to a pipe; a watcher thread reads
+/// it and does the work outside signal context. Child processes get the default
+/// disposition back at exec.
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace sgmp {
+
+/// Exit status of a program stopped by SIGINT or SIGTERM.
+inline constexpr int kInterruptedStatus = 130;
+
+/// Installs the handlers. On a signal, `on_interrupt` (when given) is called from the
+/// watcher thread; when it returns true the program has promised to stop by itself (it
+/// polls a flag), otherwise every registered temporary is removed, "PROGRAM: interrupted
+/// by SIGINT" is printed and the process exits with kInterruptedStatus.
+void install_interrupt_handler(const std::string& program, std::function<bool()> on_interrupt = {});
+
+/// Removes every registered temporary now (what an interrupt does before exiting).
+void remove_registered_temporaries();
+
+/// Registers a temporary file or directory for removal on interrupt while it lives.
+class TemporaryGuard {
+  public:
+    explicit TemporaryGuard(std::filesystem::path path);
+    ~TemporaryGuard();
+    TemporaryGuard(const TemporaryGuard&) = delete;
+    TemporaryGuard& operator=(const TemporaryGuard&) = delete;
+
+  private:
+    std::filesystem::path path_;
+};
+
+/// Removes a temporary file or directory tree, ignoring errors.
+void remove_temporary(const std::filesystem::path& path);
+
+}  // namespace sgmp

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# scripts/run into a directory whose name holds a space, a comma and quotes; a truncated
+# pack is made anew, packs live under the engine's content identity, an option without
+# its value is a usage error.
+#   run_paths_test.sh BUILD_DIR
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+build=$1
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+out="$scratch/run dir, \"quoted\""
+fail() { echo "run_paths_test: $*" >&2; exit 1; }
+run() { scripts/run --counts 150 --seeds "1 2" --arrangements loose-random --frictions 0.5 \
+            --out "$out" --build-dir "$build" >"$scratch/log" 2>&1 || { cat "$scratch/log" >&2; fail "scripts/run failed"; }; }
+
+run
+[[ -f "$out/report/report.md" ]] || fail "no report in '$out'"
+[[ "$(ls -A "$scratch")" == "log"$'\n'"run dir, \"quoted\"" ]] || fail "files outside --out: $(ls -A "$scratch")"
+grep -q '^candidate,loose-random,150,1,[0-9.]*,"'"$scratch"'/run dir, ""quoted""/packs/' "$out/manifest.csv" \
+    || fail "the manifest does not quote the path: $(sed -n 2p "$out/manifest.csv")"
+engine=$(sha256sum "$build/sgmp/sgmp" | cut -c1-12)
+pack=$(ls "$out"/packs/sgmp-*-"$engine"/loose-random/n0150-seed1.xyz) || fail "no pack under the engine identity $engine"
+
+head -5 "$pack" >"$scratch/short" && cat "$scratch/short" >"$pack"  # header intact, lines lost
+run
+[[ "$(wc -l <"$pack")" == 152 ]] || fail "a truncated pack was reused ($(wc -l <"$pack") lines)"
+
+status=0
+scripts/run --counts 2>"$scratch/err" || status=$?
+[[ $status == 2 && "$(cat "$scratch/err")" == "run: --counts needs a value (see --help)" ]] \
+    || fail "--counts without a value: status $status, '$(cat "$scratch/err")'"
+echo "run_paths_test: passed"

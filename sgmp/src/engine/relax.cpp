@@ -1,0 +1,311 @@
+#include "sgmp/engine/relax.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+
+#include "sgmp/engine/hard_sphere_finish.hpp"
+#include "sgmp/engine/neighbour_list.hpp"
+
+namespace sgmp::engine {
+
+namespace {
+
+// FIRE constants (Guénolé et al. 2020, table 1) and the time-step scale (relax.hpp).
+constexpr int kDelaySteps = 20;
+constexpr double kDtGrow = 1.1;
+constexpr double kDtShrink = 0.5;
+constexpr double kAlphaStart = 0.25;
+constexpr double kAlphaShrink = 0.99;
+constexpr double kDtMaxTimesOmega = 0.3;
+constexpr double kDtStartOverMax = 0.1;
+constexpr double kDtMinOverMax = 0.002;
+/// Overlap the hard-sphere finish leaves at most, over d.
+constexpr double kFinishToleranceOverD = 1e-10;
+/// Steepest-descent steps after a last stage that did not converge.
+constexpr int kQuenchSteps = 200;
+/// Verlet skin over the smallest diameter.
+constexpr double kSkinOverDmin = 0.25;
+
+/// The soft pack being minimised, in an internal order that keeps neighbours close in memory.
+struct State {
+    SphereArrays spheres;
+    std::vector<double> vx, vy, vz;
+    std::vector<double> fx, fy, fz;
+    std::vector<double> weight;         ///< m·g of each sphere, in units of the reference m·g
+    std::vector<float> x0, y0, z0;      ///< positions when the neighbour list was built
+    std::vector<std::size_t> particle;  ///< index in the caller's vector
+    NeighbourList neighbours;
+    double skin = 0.0;
+};
+
+/// Sums over the spheres after a force evaluation.
+struct ForceSums {
+    double power = 0.0;            ///< P = Σ F·v
+    double force_squared = 0.0;    ///< |F|² of the whole pack
+    double largest_squared = 0.0;  ///< max |Fᵢ|²
+};
+
+State make_state(const std::vector<Particle>& particles, double diameter, double shell) {
+    const std::size_t n = particles.size();
+    // Order by cells of side d (layer, then z, then x) so that a sphere's neighbours sit
+    // near it in the arrays.
+    std::vector<std::int64_t> key(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec3& c = particles[i].center;
+        const auto cell = [&](double v) {
+            return static_cast<std::int64_t>(std::floor(v / diameter));
+        };
+        key[i] = (cell(c.y()) * 4096 + (cell(c.z()) + 2048)) * 4096 + (cell(c.x()) + 2048);
+    }
+    State s;
+    s.particle.resize(n);
+    std::iota(s.particle.begin(), s.particle.end(), std::size_t{0});
+    std::stable_sort(s.particle.begin(), s.particle.end(),
+                     [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+    const double reference_radius = 0.5 * diameter;
+    double r_min = INFINITY;
+    for (const std::size_t i : s.particle) {
+        const Particle& p = particles[i];
+        s.spheres.x.push_back(p.center.x());
+        s.spheres.y.push_back(p.center.y());
+        s.spheres.z.push_back(p.center.z());
+        s.spheres.r.push_back(p.radius * (1.0 + shell));
+        s.weight.push_back(std::pow(p.radius / reference_radius, 3));
+        r_min = std::min(r_min, p.radius);
+    }
+    for (auto* v : {&s.vx, &s.vy, &s.vz, &s.fx, &s.fy, &s.fz}) {
+        v->assign(n, 0.0);
+    }
+    s.x0.resize(n);
+    s.y0.resize(n);
+    s.z0.resize(n);
+    s.skin = kSkinOverDmin * 2.0 * r_min;
+    return s;
+}
+
+void rebuild_neighbours(State& s) {
+    s.neighbours.build(s.spheres, s.skin);
+    for (std::size_t i = 0; i < s.spheres.size(); ++i) {
+        s.x0[i] = static_cast<float>(s.spheres.x[i]);
+        s.y0[i] = static_cast<float>(s.spheres.y[i]);
+        s.z0[i] = static_cast<float>(s.spheres.z[i]);
+    }
+}
+
+/// Adds the force of a wall or the floor: k·(penetration) along `normal_sign`.
+inline double wall_force(double penetration, double k) {
+    return penetration > 0.0 ? k * penetration : 0.0;
+}
+
+/// F = −∇E at the present positions (k in m·g per length unit), and the sums FIRE needs.
+ForceSums compute_forces(State& s, const Container& box, double k) {
+    const SphereArrays& p = s.spheres;
+    const std::size_t n = p.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        s.fx[i] = 0.0;
+        s.fy[i] = -s.weight[i];
+        s.fz[i] = 0.0;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        const double xi = p.x[i], yi = p.y[i], zi = p.z[i], ri = p.r[i];
+        double fxi = 0.0, fyi = 0.0, fzi = 0.0;
+        for (const std::uint32_t j : s.neighbours.of(i)) {
+            const double dx = p.x[j] - xi, dy = p.y[j] - yi, dz = p.z[j] - zi;
+            const double reach = ri + p.r[j];
+            const double d2 = dx * dx + dy * dy + dz * dz;
+            if (d2 >= reach * reach) {
+                continue;
+            }
+            const double dist = std::sqrt(d2);
+            const double f = k * (reach - dist) / dist;  // pushes j away from i
+            fxi -= f * dx;
+            fyi -= f * dy;
+            fzi -= f * dz;
+            s.fx[j] += f * dx;
+            s.fy[j] += f * dy;
+            s.fz[j] += f * dz;
+        }
+        s.fx[i] += fxi;
+        s.fy[i] += fyi;
+        s.fz[i] += fzi;
+    }
+    ForceSums sums;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double r = p.r[i];
+        s.fx[i] += wall_force(box.x_min + r - p.x[i], k) - wall_force(p.x[i] + r - box.x_max, k);
+        s.fz[i] += wall_force(box.z_min + r - p.z[i], k) - wall_force(p.z[i] + r - box.z_max, k);
+        s.fy[i] += wall_force(box.floor + r - p.y[i], k);
+        const double f2 = s.fx[i] * s.fx[i] + s.fy[i] * s.fy[i] + s.fz[i] * s.fz[i];
+        sums.force_squared += f2;
+        sums.largest_squared = std::max(sums.largest_squared, f2);
+        sums.power += s.fx[i] * s.vx[i] + s.fy[i] * s.vy[i] + s.fz[i] * s.vz[i];
+    }
+    return sums;
+}
+
+/// v += Δt·F, then v ← (1 − α)·v + α·|v|·F/|F|.
+void kick_and_mix(State& s, double dt, double alpha, double force_squared) {
+    const std::size_t n = s.spheres.size();
+    double v2 = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        s.vx[i] += dt * s.fx[i];
+        s.vy[i] += dt * s.fy[i];
+        s.vz[i] += dt * s.fz[i];
+        v2 += s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i];
+    }
+    const double keep = 1.0 - alpha;
+    const double steer = force_squared > 0.0 ? alpha * std::sqrt(v2 / force_squared) : 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        s.vx[i] = keep * s.vx[i] + steer * s.fx[i];
+        s.vy[i] = keep * s.vy[i] + steer * s.fy[i];
+        s.vz[i] = keep * s.vz[i] + steer * s.fz[i];
+    }
+}
+
+/// c += step·v; rebuilds the neighbour list once a sphere may have moved skin/2.
+void drift(State& s, double step) {
+    SphereArrays& p = s.spheres;
+    double largest = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        p.x[i] += step * s.vx[i];
+        p.y[i] += step * s.vy[i];
+        p.z[i] += step * s.vz[i];
+        const double dx = p.x[i] - s.x0[i], dy = p.y[i] - s.y0[i], dz = p.z[i] - s.z0[i];
+        largest = std::max(largest, dx * dx + dy * dy + dz * dz);
+    }
+    // 1e-6 covers the float rounding of the stored positions (|c| < 10³ ⇒ error < 1e-4·skin).
+    if (2.0 * std::sqrt(largest) + 1e-6 * s.skin >= s.skin) {
+        rebuild_neighbours(s);
+    }
+}
+
+void stop(State& s) {
+    std::fill(s.vx.begin(), s.vx.end(), 0.0);
+    std::fill(s.vy.begin(), s.vy.end(), 0.0);
+    std::fill(s.vz.begin(), s.vz.end(), 0.0);
+}
+
+struct StageResult {
+    long long steps = 0;
+    bool converged = false;
+    double force_max = 0.0;
+};
+
+/// One stiffness stage of FIRE from rest; `k` in m·g per length unit.
+StageResult run_stage(State& s, const Container& box, double k, const RelaxParams& params,
+                      long max_steps) {
+    const double dt_max = kDtMaxTimesOmega / std::sqrt(k);
+    const double dt_min = kDtMinOverMax * dt_max;
+    const double tolerance_squared = params.force_tolerance * params.force_tolerance;
+    double dt = kDtStartOverMax * dt_max;
+    double alpha = kAlphaStart;
+    long positive = 0;
+    stop(s);
+    ForceSums sums = compute_forces(s, box, k);
+    StageResult result;
+    while (sums.largest_squared > tolerance_squared && result.steps < max_steps) {
+        ++result.steps;
+        if (sums.power > 0.0) {
+            if (++positive > kDelaySteps) {
+                dt = std::min(dt * kDtGrow, dt_max);
+                alpha *= kAlphaShrink;
+            }
+        } else {
+            positive = 0;
+            if (result.steps > kDelaySteps) {
+                dt = std::max(dt * kDtShrink, dt_min);
+                alpha = kAlphaStart;
+            }
+            drift(s, -0.5 * dt);
+            stop(s);
+        }
+        kick_and_mix(s, dt, alpha, sums.force_squared);
+        drift(s, dt);
+        sums = compute_forces(s, box, k);
+    }
+    result.converged = sums.largest_squared <= tolerance_squared;
+    result.force_max = std::sqrt(sums.largest_squared);
+    return result;
+}
+
+/// Steepest descent c += η·F with η = 0.05/k (stable for up to 40 contacts of stiffness k):
+/// it settles the stiff contact modes — overlaps left by spheres still moving when a stage
+/// ended — at a rate of about 10 % per step, and leaves the slow modes of the pack alone.
+/// Returns the largest net force left.
+double quench(State& s, const Container& box, double k, int steps) {
+    const double rate = 0.05 / k;
+    ForceSums sums;
+    for (int step = 0; step < steps; ++step) {
+        sums = compute_forces(s, box, k);
+        s.vx = s.fx;
+        s.vy = s.fy;
+        s.vz = s.fz;
+        drift(s, rate);
+    }
+    stop(s);
+    sums = compute_forces(s, box, k);
+    return std::sqrt(sums.largest_squared);
+}
+
+/// Deepest overlap of a listed pair or with a wall or the floor.
+double deepest_overlap(const State& s, const Container& box) {
+    const SphereArrays& p = s.spheres;
+    double deepest = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double r = p.r[i];
+        deepest =
+            std::max({deepest, box.x_min + r - p.x[i], p.x[i] + r - box.x_max,
+                      box.z_min + r - p.z[i], p.z[i] + r - box.z_max, box.floor + r - p.y[i]});
+        for (const std::uint32_t j : s.neighbours.of(i)) {
+            const double dx = p.x[j] - p.x[i], dy = p.y[j] - p.y[i], dz = p.z[j] - p.z[i];
+            deepest = std::max(deepest, r + p.r[j] - std::sqrt(dx * dx + dy * dy + dz * dz));
+        }
+    }
+    return deepest;
+}
+
+/// The soft relaxation of every stage; leaves the soft pack's positions in `particles`.
+void relax_soft(std::vector<Particle>& particles, const Container& container,
+                const RelaxParams& params, double diameter, RelaxStats& stats) {
+    State s = make_state(particles, diameter, params.shell);
+    rebuild_neighbours(s);
+    double stiffness = params.stiffness;
+    for (int stage = 0; stage < params.stages; ++stage) {
+        // k in m·g/d becomes k/d in m·g per length unit.
+        const long budget = std::max(1L, params.max_steps >> stage);
+        const StageResult r = run_stage(s, container, stiffness / diameter, params, budget);
+        stats.steps += r.steps;
+        stats.stages_converged += r.converged ? 1 : 0;
+        stats.force_max = r.force_max;
+        stiffness *= params.stiffness_factor;
+    }
+    if (stats.stages_converged < params.stages) {
+        stats.force_max =
+            quench(s, container, stiffness / params.stiffness_factor / diameter, kQuenchSteps);
+    }
+    stats.overlap_max = deepest_overlap(s, container) / diameter;  // of the soft spheres
+    for (std::size_t k = 0; k < s.particle.size(); ++k) {
+        particles[s.particle[k]].center = Vec3(s.spheres.x[k], s.spheres.y[k], s.spheres.z[k]);
+    }
+}
+
+}  // namespace
+
+RelaxStats relax_pack(std::vector<Particle>& particles, const Container& container,
+                      const RelaxParams& params, double diameter) {
+    RelaxStats stats;
+    if (params.mode == RelaxMode::None || particles.empty()) {
+        return stats;
+    }
+    relax_soft(particles, container, params, diameter, stats);
+    const FinishStats finish =
+        finish_as_hard_spheres(particles, container, kFinishToleranceOverD * diameter);
+    stats.finish_lifted = static_cast<long long>(finish.lifted);
+    stats.finish_move_max = finish.move_max / diameter;
+    stats.finish_move_mean = finish.move_sum / static_cast<double>(particles.size()) / diameter;
+    return stats;
+}
+
+}  // namespace sgmp::engine

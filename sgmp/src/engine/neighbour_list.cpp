@@ -29,28 +29,37 @@ Axis make_axis(double lo, double hi, double min_side, int max_cells) {
     return axis;
 }
 
-Axis axis_over(const std::vector<double>& v, double min_side, int max_cells) {
-    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
-    return make_axis(*lo, *hi, min_side, max_cells);
+Axis axis_over(const std::vector<Ball>& balls, double Ball::*coordinate, double min_side,
+               int max_cells) {
+    double lo = INFINITY;
+    double hi = -INFINITY;
+    for (const Ball& b : balls) {
+        lo = std::min(lo, b.*coordinate);
+        hi = std::max(hi, b.*coordinate);
+    }
+    return make_axis(lo, hi, min_side, max_cells);
 }
 
 }  // namespace
 
-void NeighbourList::build(const SphereArrays& s, double skin) {
+void NeighbourList::build(const std::vector<Ball>& s, double skin) {
     const std::size_t n = s.size();
     offsets_.assign(n + 1, 0);
     neighbours_.clear();
     if (n == 0) {
         return;
     }
-    const double r_max = *std::max_element(s.r.begin(), s.r.end());
+    double r_max = 0.0;
+    for (const Ball& b : s) {
+        r_max = std::max(r_max, b.r);
+    }
     const double min_side = 2.0 * r_max + skin;
-    const Axis ax = axis_over(s.x, min_side, 4096);
-    const Axis az = axis_over(s.z, min_side, 4096);
+    const Axis ax = axis_over(s, &Ball::x, min_side, 4096);
+    const Axis az = axis_over(s, &Ball::z, min_side, 4096);
     // At most four cells per sphere, so the cell array never outgrows the spheres' (a tall,
     // thin pile gets taller cells).
     const double layers = std::ceil(4.0 * static_cast<double>(n) / (ax.cells * az.cells));
-    const Axis ay = axis_over(s.y, min_side, static_cast<int>(std::min(layers, 1e6)));
+    const Axis ay = axis_over(s, &Ball::y, min_side, static_cast<int>(std::min(layers, 1e6)));
     const auto cell = [&](int ix, int iy, int iz) {
         return (static_cast<std::uint32_t>(iy) * az.cells + iz) * ax.cells + ix;
     };
@@ -58,7 +67,7 @@ void NeighbourList::build(const SphereArrays& s, double skin) {
     cell_of_.resize(n);
     cell_start_.assign(cell_count + 1, 0);
     for (std::size_t i = 0; i < n; ++i) {
-        cell_of_[i] = cell(ax.index(s.x[i]), ay.index(s.y[i]), az.index(s.z[i]));
+        cell_of_[i] = cell(ax.index(s[i].x), ay.index(s[i].y), az.index(s[i].z));
         ++cell_start_[cell_of_[i] + 1];
     }
     for (std::size_t c = 0; c < cell_count; ++c) {
@@ -70,9 +79,9 @@ void NeighbourList::build(const SphereArrays& s, double skin) {
         by_cell_[fill[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
     }
     for (std::size_t i = 0; i < n; ++i) {
-        const int cx = ax.index(s.x[i]);
-        const int cy = ay.index(s.y[i]);
-        const int cz = az.index(s.z[i]);
+        const int cx = ax.index(s[i].x);
+        const int cy = ay.index(s[i].y);
+        const int cz = az.index(s[i].z);
         for (int iy = std::max(cy - 1, 0); iy <= std::min(cy + 1, ay.cells - 1); ++iy) {
             for (int iz = std::max(cz - 1, 0); iz <= std::min(cz + 1, az.cells - 1); ++iz) {
                 for (int ix = std::max(cx - 1, 0); ix <= std::min(cx + 1, ax.cells - 1); ++ix) {
@@ -82,10 +91,10 @@ void NeighbourList::build(const SphereArrays& s, double skin) {
                         if (j <= i) {
                             continue;
                         }
-                        const double dx = s.x[j] - s.x[i];
-                        const double dy = s.y[j] - s.y[i];
-                        const double dz = s.z[j] - s.z[i];
-                        const double reach = s.r[i] + s.r[j] + skin;
+                        const double dx = s[j].x - s[i].x;
+                        const double dy = s[j].y - s[i].y;
+                        const double dz = s[j].z - s[i].z;
+                        const double reach = s[i].r + s[j].r + skin;
                         if (dx * dx + dy * dy + dz * dz < reach * reach) {
                             neighbours_.push_back(j);
                         }

@@ -28,11 +28,17 @@ constexpr int kQuenchSteps = 200;
 /// Verlet skin over the smallest diameter.
 constexpr double kSkinOverDmin = 0.25;
 
+struct Triple {
+    double x = 0.0;
+    double y = 0.0;
+    double z = 0.0;
+};
+
 /// The soft pack being minimised, in an internal order that keeps neighbours close in memory.
 struct State {
-    SphereArrays spheres;
-    std::vector<double> vx, vy, vz;
-    std::vector<double> fx, fy, fz;
+    std::vector<Ball> spheres;
+    std::vector<Triple> v;              ///< velocities
+    std::vector<Triple> f;              ///< net forces
     std::vector<double> weight;         ///< m·g of each sphere, in units of the reference m·g
     std::vector<float> x0, y0, z0;      ///< positions when the neighbour list was built
     std::vector<std::size_t> particle;  ///< index in the caller's vector
@@ -68,16 +74,13 @@ State make_state(const std::vector<Particle>& particles, double diameter, double
     double r_min = INFINITY;
     for (const std::size_t i : s.particle) {
         const Particle& p = particles[i];
-        s.spheres.x.push_back(p.center.x());
-        s.spheres.y.push_back(p.center.y());
-        s.spheres.z.push_back(p.center.z());
-        s.spheres.r.push_back(p.radius * (1.0 + shell));
+        s.spheres.push_back(
+            Ball{p.center.x(), p.center.y(), p.center.z(), p.radius * (1.0 + shell)});
         s.weight.push_back(std::pow(p.radius / reference_radius, 3));
         r_min = std::min(r_min, p.radius);
     }
-    for (auto* v : {&s.vx, &s.vy, &s.vz, &s.fx, &s.fy, &s.fz}) {
-        v->assign(n, 0.0);
-    }
+    s.v.assign(n, Triple{});
+    s.f.assign(n, Triple{});
     s.x0.resize(n);
     s.y0.resize(n);
     s.z0.resize(n);
@@ -88,9 +91,9 @@ State make_state(const std::vector<Particle>& particles, double diameter, double
 void rebuild_neighbours(State& s) {
     s.neighbours.build(s.spheres, s.skin);
     for (std::size_t i = 0; i < s.spheres.size(); ++i) {
-        s.x0[i] = static_cast<float>(s.spheres.x[i]);
-        s.y0[i] = static_cast<float>(s.spheres.y[i]);
-        s.z0[i] = static_cast<float>(s.spheres.z[i]);
+        s.x0[i] = static_cast<float>(s.spheres[i].x);
+        s.y0[i] = static_cast<float>(s.spheres[i].y);
+        s.z0[i] = static_cast<float>(s.spheres[i].z);
     }
 }
 
@@ -101,19 +104,19 @@ inline double wall_force(double penetration, double k) {
 
 /// F = −∇E at the present positions (k in m·g per length unit), and the sums FIRE needs.
 ForceSums compute_forces(State& s, const Container& box, double k) {
-    const SphereArrays& p = s.spheres;
+    const std::vector<Ball>& p = s.spheres;
     const std::size_t n = p.size();
     for (std::size_t i = 0; i < n; ++i) {
-        s.fx[i] = 0.0;
-        s.fy[i] = -s.weight[i];
-        s.fz[i] = 0.0;
+        s.f[i].x = 0.0;
+        s.f[i].y = -s.weight[i];
+        s.f[i].z = 0.0;
     }
     for (std::size_t i = 0; i < n; ++i) {
-        const double xi = p.x[i], yi = p.y[i], zi = p.z[i], ri = p.r[i];
+        const double xi = p[i].x, yi = p[i].y, zi = p[i].z, ri = p[i].r;
         double fxi = 0.0, fyi = 0.0, fzi = 0.0;
         for (const std::uint32_t j : s.neighbours.of(i)) {
-            const double dx = p.x[j] - xi, dy = p.y[j] - yi, dz = p.z[j] - zi;
-            const double reach = ri + p.r[j];
+            const double dx = p[j].x - xi, dy = p[j].y - yi, dz = p[j].z - zi;
+            const double reach = ri + p[j].r;
             const double d2 = dx * dx + dy * dy + dz * dz;
             if (d2 >= reach * reach) {
                 continue;
@@ -123,24 +126,24 @@ ForceSums compute_forces(State& s, const Container& box, double k) {
             fxi -= f * dx;
             fyi -= f * dy;
             fzi -= f * dz;
-            s.fx[j] += f * dx;
-            s.fy[j] += f * dy;
-            s.fz[j] += f * dz;
+            s.f[j].x += f * dx;
+            s.f[j].y += f * dy;
+            s.f[j].z += f * dz;
         }
-        s.fx[i] += fxi;
-        s.fy[i] += fyi;
-        s.fz[i] += fzi;
+        s.f[i].x += fxi;
+        s.f[i].y += fyi;
+        s.f[i].z += fzi;
     }
     ForceSums sums;
     for (std::size_t i = 0; i < n; ++i) {
-        const double r = p.r[i];
-        s.fx[i] += wall_force(box.x_min + r - p.x[i], k) - wall_force(p.x[i] + r - box.x_max, k);
-        s.fz[i] += wall_force(box.z_min + r - p.z[i], k) - wall_force(p.z[i] + r - box.z_max, k);
-        s.fy[i] += wall_force(box.floor + r - p.y[i], k);
-        const double f2 = s.fx[i] * s.fx[i] + s.fy[i] * s.fy[i] + s.fz[i] * s.fz[i];
+        const double r = p[i].r;
+        s.f[i].x += wall_force(box.x_min + r - p[i].x, k) - wall_force(p[i].x + r - box.x_max, k);
+        s.f[i].z += wall_force(box.z_min + r - p[i].z, k) - wall_force(p[i].z + r - box.z_max, k);
+        s.f[i].y += wall_force(box.floor + r - p[i].y, k);
+        const double f2 = s.f[i].x * s.f[i].x + s.f[i].y * s.f[i].y + s.f[i].z * s.f[i].z;
         sums.force_squared += f2;
         sums.largest_squared = std::max(sums.largest_squared, f2);
-        sums.power += s.fx[i] * s.vx[i] + s.fy[i] * s.vy[i] + s.fz[i] * s.vz[i];
+        sums.power += s.f[i].x * s.v[i].x + s.f[i].y * s.v[i].y + s.f[i].z * s.v[i].z;
     }
     return sums;
 }
@@ -150,29 +153,29 @@ void kick_and_mix(State& s, double dt, double alpha, double force_squared) {
     const std::size_t n = s.spheres.size();
     double v2 = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
-        s.vx[i] += dt * s.fx[i];
-        s.vy[i] += dt * s.fy[i];
-        s.vz[i] += dt * s.fz[i];
-        v2 += s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i];
+        s.v[i].x += dt * s.f[i].x;
+        s.v[i].y += dt * s.f[i].y;
+        s.v[i].z += dt * s.f[i].z;
+        v2 += s.v[i].x * s.v[i].x + s.v[i].y * s.v[i].y + s.v[i].z * s.v[i].z;
     }
     const double keep = 1.0 - alpha;
     const double steer = force_squared > 0.0 ? alpha * std::sqrt(v2 / force_squared) : 0.0;
     for (std::size_t i = 0; i < n; ++i) {
-        s.vx[i] = keep * s.vx[i] + steer * s.fx[i];
-        s.vy[i] = keep * s.vy[i] + steer * s.fy[i];
-        s.vz[i] = keep * s.vz[i] + steer * s.fz[i];
+        s.v[i].x = keep * s.v[i].x + steer * s.f[i].x;
+        s.v[i].y = keep * s.v[i].y + steer * s.f[i].y;
+        s.v[i].z = keep * s.v[i].z + steer * s.f[i].z;
     }
 }
 
 /// c += step·v; rebuilds the neighbour list once a sphere may have moved skin/2.
 void drift(State& s, double step) {
-    SphereArrays& p = s.spheres;
+    std::vector<Ball>& p = s.spheres;
     double largest = 0.0;
     for (std::size_t i = 0; i < p.size(); ++i) {
-        p.x[i] += step * s.vx[i];
-        p.y[i] += step * s.vy[i];
-        p.z[i] += step * s.vz[i];
-        const double dx = p.x[i] - s.x0[i], dy = p.y[i] - s.y0[i], dz = p.z[i] - s.z0[i];
+        p[i].x += step * s.v[i].x;
+        p[i].y += step * s.v[i].y;
+        p[i].z += step * s.v[i].z;
+        const double dx = p[i].x - s.x0[i], dy = p[i].y - s.y0[i], dz = p[i].z - s.z0[i];
         largest = std::max(largest, dx * dx + dy * dy + dz * dz);
     }
     // 1e-6 covers the float rounding of the stored positions (|c| < 10³ ⇒ error < 1e-4·skin).
@@ -182,9 +185,7 @@ void drift(State& s, double step) {
 }
 
 void stop(State& s) {
-    std::fill(s.vx.begin(), s.vx.end(), 0.0);
-    std::fill(s.vy.begin(), s.vy.end(), 0.0);
-    std::fill(s.vz.begin(), s.vz.end(), 0.0);
+    std::fill(s.v.begin(), s.v.end(), Triple{});
 }
 
 struct StageResult {
@@ -239,9 +240,7 @@ double quench(State& s, const Container& box, double k, int steps) {
     ForceSums sums;
     for (int step = 0; step < steps; ++step) {
         sums = compute_forces(s, box, k);
-        s.vx = s.fx;
-        s.vy = s.fy;
-        s.vz = s.fz;
+        s.v = s.f;
         drift(s, rate);
     }
     stop(s);
@@ -251,16 +250,16 @@ double quench(State& s, const Container& box, double k, int steps) {
 
 /// Deepest overlap of a listed pair or with a wall or the floor.
 double deepest_overlap(const State& s, const Container& box) {
-    const SphereArrays& p = s.spheres;
+    const std::vector<Ball>& p = s.spheres;
     double deepest = 0.0;
     for (std::size_t i = 0; i < p.size(); ++i) {
-        const double r = p.r[i];
+        const double r = p[i].r;
         deepest =
-            std::max({deepest, box.x_min + r - p.x[i], p.x[i] + r - box.x_max,
-                      box.z_min + r - p.z[i], p.z[i] + r - box.z_max, box.floor + r - p.y[i]});
+            std::max({deepest, box.x_min + r - p[i].x, p[i].x + r - box.x_max,
+                      box.z_min + r - p[i].z, p[i].z + r - box.z_max, box.floor + r - p[i].y});
         for (const std::uint32_t j : s.neighbours.of(i)) {
-            const double dx = p.x[j] - p.x[i], dy = p.y[j] - p.y[i], dz = p.z[j] - p.z[i];
-            deepest = std::max(deepest, r + p.r[j] - std::sqrt(dx * dx + dy * dy + dz * dz));
+            const double dx = p[j].x - p[i].x, dy = p[j].y - p[i].y, dz = p[j].z - p[i].z;
+            deepest = std::max(deepest, r + p[j].r - std::sqrt(dx * dx + dy * dy + dz * dz));
         }
     }
     return deepest;
@@ -287,7 +286,7 @@ void relax_soft(std::vector<Particle>& particles, const Container& container,
     }
     stats.overlap_max = deepest_overlap(s, container) / diameter;  // of the soft spheres
     for (std::size_t k = 0; k < s.particle.size(); ++k) {
-        particles[s.particle[k]].center = Vec3(s.spheres.x[k], s.spheres.y[k], s.spheres.z[k]);
+        particles[s.particle[k]].center = Vec3(s.spheres[k].x, s.spheres[k].y, s.spheres[k].z);
     }
 }
 

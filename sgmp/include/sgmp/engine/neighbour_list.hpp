@@ -13,19 +13,18 @@
 
 namespace sgmp::engine {
 
-/// Sphere centres and radii as parallel arrays (structure of arrays).
-struct SphereArrays {
-    std::vector<double> x;
-    std::vector<double> y;
-    std::vector<double> z;
-    std::vector<double> r;
-    [[nodiscard]] std::size_t size() const { return x.size(); }
+/// A sphere's centre and radius, together in 32 bytes (one cache line holds two).
+struct Ball {
+    double x = 0.0;
+    double y = 0.0;
+    double z = 0.0;
+    double r = 0.0;
 };
 
 class NeighbourList {
   public:
     /// Rebuilds the list for the spheres' present positions.
-    void build(const SphereArrays& spheres, double skin);
+    void build(const std::vector<Ball>& balls, double skin);
 
     /// The neighbours j > i of sphere i.
     [[nodiscard]] std::span<const std::uint32_t> of(std::size_t i) const {

@@ -32,7 +32,7 @@ struct RelaxParams {
     /// Contact shell s: the soft spheres are (1 + s) times the real ones, so a soft contact
     /// pressed by less than s·k·(rᵢ + rⱼ)/d weights leaves the real spheres apart by a gap of
     /// at most s·(rᵢ + rⱼ); only deeper soft overlaps are left for the hard-sphere finish.
-    double shell = 1e-4;
+    double shell = 3e-4;
     /// A stage has converged when no sphere feels a net force above this, in m·g.
     double force_tolerance = 1e-4;
     /// Bound on minimiser steps of the first stage; stage s may take max_steps / 2ˢ. A stage

@@ -143,8 +143,13 @@ void add_relax(CLI::App& app, Options& o) {
                    "a stage has converged when no sphere feels a net force above this, in m*g "
                    "(m the mass of a sphere of relative size 1)")
         ->capture_default_str();
-    app.add_option("--relax-max-steps", r.max_steps,
-                   "bound on minimiser steps per stage; the pack records the force left "
+    app.add_option("--relax-time", r.time,
+                   "bound on the first stage's simulated time, in units of sqrt(H/g) (H: the "
+                   "pack's height above the floor)")
+        ->capture_default_str();
+    app.add_option("--relax-crossings", r.crossings,
+                   "bound on each later stage's steps, in units of H/d (the elastic relaxation "
+                   "crosses the pack's height); the pack records the force left "
                    "(relax_force_max)")
         ->capture_default_str();
 }

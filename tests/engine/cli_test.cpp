@@ -103,8 +103,10 @@ BOOST_AUTO_TEST_CASE(bad_relaxation_values_are_refused_with_option_value_and_rul
                    "--relax-stages 11: must be 1 to 10");
     expect_refused(s, "--count 100 --relax frictionless --relax-shell 0.5",
                    "--relax-shell 0.5: must be in [0, 0.01]");
-    expect_refused(s, "--count 100 --relax frictionless --relax-max-steps 0",
-                   "--relax-max-steps 0: must be at least 1");
+    expect_refused(s, "--count 100 --relax frictionless --relax-time 0",
+                   "--relax-time 0: must be in (0, 10000]");
+    expect_refused(s, "--count 100 --relax frictionless --relax-crossings -1",
+                   "--relax-crossings -1: must be in (0, 10000]");
 }
 
 BOOST_AUTO_TEST_CASE(relax_none_writes_the_bytes_of_no_relaxation_and_relaxed_packs_repeat) {

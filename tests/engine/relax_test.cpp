@@ -270,7 +270,8 @@ BOOST_AUTO_TEST_CASE(the_header_records_the_relaxation_and_what_it_did) {
     BOOST_TEST(m.get_number("relax_stages").value_or(0) == 4.0);
     BOOST_TEST(m.get_number("relax_shell").value_or(0) == 3e-4);
     BOOST_TEST(m.get_number("relax_force_tolerance").value_or(0) == 1e-4);
-    BOOST_TEST(m.get_number("relax_max_steps").value_or(0) == 4000.0);
+    BOOST_TEST(m.get_number("relax_time").value_or(0) == 5.0);
+    BOOST_TEST(m.get_number("relax_crossings").value_or(0) == 40.0);
     BOOST_TEST(m.get_number("relax_steps").value_or(0) >= 4.0);
     for (const char* key :
          {"relax_stages_converged", "relax_force_max", "relax_overlap_max", "relax_finish_lifted",

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 
 #include "sgmp/engine/hard_sphere_finish.hpp"
@@ -25,6 +26,13 @@ constexpr double kDtMinOverMax = 0.002;
 constexpr double kFinishToleranceOverD = 1e-10;
 /// Steepest-descent steps after a last stage that did not converge.
 constexpr int kQuenchSteps = 200;
+/// The last stage goes on past its bound in rounds of this many steps while a real sphere
+/// overlaps, up to kClearBound times the bound.
+constexpr long kClearRound = 100;
+constexpr long kClearBound = 8;
+/// Fewest steps a later stage may take (a small pack crosses its height in a few steps, but
+/// FIRE needs some hundred to settle the contacts at a new stiffness).
+constexpr long kMinStageSteps = 500;
 /// Verlet skin over the smallest diameter.
 constexpr double kSkinOverDmin = 0.25;
 
@@ -194,20 +202,23 @@ struct StageResult {
     double force_max = 0.0;
 };
 
-/// One stiffness stage of FIRE from rest; `k` in m·g per length unit.
-StageResult run_stage(State& s, const Container& box, double k, const RelaxParams& params,
-                      long max_steps) {
-    const double dt_max = kDtMaxTimesOmega / std::sqrt(k);
-    const double dt_min = kDtMinOverMax * dt_max;
-    const double tolerance_squared = params.force_tolerance * params.force_tolerance;
-    double dt = kDtStartOverMax * dt_max;
+/// FIRE's adaptive step and mixing.
+struct Fire {
+    double dt_max;
+    double dt_min;
+    double dt;
     double alpha = kAlphaStart;
     long positive = 0;
-    stop(s);
-    ForceSums sums = compute_forces(s, box, k);
-    StageResult result;
-    while (sums.largest_squared > tolerance_squared && result.steps < max_steps) {
-        ++result.steps;
+    long steps = 0;
+    double time = 0.0;  ///< simulated time, Σ Δt
+    explicit Fire(double k)
+        : dt_max(kDtMaxTimesOmega / std::sqrt(k)),
+          dt_min(kDtMinOverMax * dt_max),
+          dt(kDtStartOverMax * dt_max) {}
+
+    /// One step from the forces `sums` of the present positions; returns the new ones.
+    ForceSums step(State& s, const Container& box, double k, const ForceSums& sums) {
+        ++steps;
         if (sums.power > 0.0) {
             if (++positive > kDelaySteps) {
                 dt = std::min(dt * kDtGrow, dt_max);
@@ -215,7 +226,7 @@ StageResult run_stage(State& s, const Container& box, double k, const RelaxParam
             }
         } else {
             positive = 0;
-            if (result.steps > kDelaySteps) {
+            if (steps > kDelaySteps) {
                 dt = std::max(dt * kDtShrink, dt_min);
                 alpha = kAlphaStart;
             }
@@ -224,8 +235,61 @@ StageResult run_stage(State& s, const Container& box, double k, const RelaxParam
         }
         kick_and_mix(s, dt, alpha, sums.force_squared);
         drift(s, dt);
-        sums = compute_forces(s, box, k);
+        time += dt;
+        return compute_forces(s, box, k);
     }
+};
+
+/// Deepest overlap of a listed pair or with a wall or the floor, for radii scaled by
+/// `scale` (1: the soft spheres; 1/(1 + shell): the real ones).
+double deepest_overlap(const State& s, const Container& box, double scale) {
+    const std::vector<Ball>& p = s.spheres;
+    double deepest = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double r = scale * p[i].r;
+        deepest =
+            std::max({deepest, box.x_min + r - p[i].x, p[i].x + r - box.x_max,
+                      box.z_min + r - p[i].z, p[i].z + r - box.z_max, box.floor + r - p[i].y});
+        for (const std::uint32_t j : s.neighbours.of(i)) {
+            const double dx = p[j].x - p[i].x, dy = p[j].y - p[i].y, dz = p[j].z - p[i].z;
+            deepest =
+                std::max(deepest, r + scale * p[j].r - std::sqrt(dx * dx + dy * dy + dz * dz));
+        }
+    }
+    return deepest;
+}
+
+/// Bounds of one stage: simulated time and steps.
+struct StageBound {
+    double time = INFINITY;
+    long steps = std::numeric_limits<long>::max();
+};
+
+/// One stiffness stage of FIRE from rest; `k` in m·g per length unit. With `until_clear`, a
+/// stage reaching its bound goes on, in rounds of kClearRound steps up to kClearBound times
+/// the steps it took, while a real sphere (radius scaled by 1/(1 + shell)) still overlaps.
+StageResult run_stage(State& s, const Container& box, double k, const RelaxParams& params,
+                      StageBound bound, bool until_clear) {
+    const double tolerance_squared = params.force_tolerance * params.force_tolerance;
+    Fire fire(k);
+    stop(s);
+    ForceSums sums = compute_forces(s, box, k);
+    const auto run = [&](long steps) {
+        while (sums.largest_squared > tolerance_squared && fire.steps < steps &&
+               fire.time < bound.time) {
+            sums = fire.step(s, box, k, sums);
+        }
+    };
+    run(bound.steps);
+    const long clear_bound = kClearBound * std::max(fire.steps, 1L);
+    const double real = 1.0 / (1.0 + params.shell);
+    bound.time = INFINITY;
+    while (until_clear && sums.largest_squared > tolerance_squared && fire.steps < clear_bound &&
+           deepest_overlap(s, box, real) > 0.0) {
+        run(fire.steps + kClearRound);
+    }
+    StageResult result;
+    result.steps = fire.steps;
     result.converged = sums.largest_squared <= tolerance_squared;
     result.force_max = std::sqrt(sums.largest_squared);
     return result;
@@ -248,33 +312,28 @@ double quench(State& s, const Container& box, double k, int steps) {
     return std::sqrt(sums.largest_squared);
 }
 
-/// Deepest overlap of a listed pair or with a wall or the floor.
-double deepest_overlap(const State& s, const Container& box) {
-    const std::vector<Ball>& p = s.spheres;
-    double deepest = 0.0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        const double r = p[i].r;
-        deepest =
-            std::max({deepest, box.x_min + r - p[i].x, p[i].x + r - box.x_max,
-                      box.z_min + r - p[i].z, p[i].z + r - box.z_max, box.floor + r - p[i].y});
-        for (const std::uint32_t j : s.neighbours.of(i)) {
-            const double dx = p[j].x - p[i].x, dy = p[j].y - p[i].y, dz = p[j].z - p[i].z;
-            deepest = std::max(deepest, r + p[j].r - std::sqrt(dx * dx + dy * dy + dz * dz));
-        }
-    }
-    return deepest;
-}
-
 /// The soft relaxation of every stage; leaves the soft pack's positions in `particles`.
 void relax_soft(std::vector<Particle>& particles, const Container& container,
                 const RelaxParams& params, double diameter, RelaxStats& stats) {
     State s = make_state(particles, diameter, params.shell);
     rebuild_neighbours(s);
+    double height = 0.0;
+    double d_min = INFINITY;
+    for (const Particle& p : particles) {
+        height = std::max(height, p.center.y() + p.radius - container.floor);
+        d_min = std::min(d_min, 2.0 * p.radius);
+    }
     double stiffness = params.stiffness;
     for (int stage = 0; stage < params.stages; ++stage) {
         // k in m·g/d becomes k/d in m·g per length unit.
-        const long budget = std::max(1L, params.max_steps >> stage);
-        const StageResult r = run_stage(s, container, stiffness / diameter, params, budget);
+        StageBound bound;
+        if (stage == 0) {
+            bound.time = params.time * std::sqrt(height);  // g = 1
+        } else {
+            bound.steps = std::max(kMinStageSteps, std::lround(params.crossings * height / d_min));
+        }
+        const bool last = stage + 1 == params.stages;
+        const StageResult r = run_stage(s, container, stiffness / diameter, params, bound, last);
         stats.steps += r.steps;
         stats.stages_converged += r.converged ? 1 : 0;
         stats.force_max = r.force_max;
@@ -284,7 +343,7 @@ void relax_soft(std::vector<Particle>& particles, const Container& container,
         stats.force_max =
             quench(s, container, stiffness / params.stiffness_factor / diameter, kQuenchSteps);
     }
-    stats.overlap_max = deepest_overlap(s, container) / diameter;  // of the soft spheres
+    stats.overlap_max = deepest_overlap(s, container, 1.0) / diameter;  // of the soft spheres
     for (std::size_t k = 0; k < s.particle.size(); ++k) {
         particles[s.particle[k]].center = Vec3(s.spheres[k].x, s.spheres[k].y, s.spheres[k].z);
     }

@@ -35,8 +35,11 @@ std::optional<std::string> validate(const RelaxParams& p) {
         return option_error("relax-force-tolerance", format_number(p.force_tolerance),
                             "must be in (0, 1] (m*g)");
     }
-    if (p.max_steps < 1) {
-        return option_error("relax-max-steps", std::to_string(p.max_steps), "must be at least 1");
+    if (!(p.time > 0.0) || !(p.time <= 1e4)) {
+        return option_error("relax-time", format_number(p.time), "must be in (0, 10000]");
+    }
+    if (!(p.crossings > 0.0) || !(p.crossings <= 1e4)) {
+        return option_error("relax-crossings", format_number(p.crossings), "must be in (0, 10000]");
     }
     return std::nullopt;
 }
@@ -63,7 +66,8 @@ void record(const RelaxParams& p, Metadata& m) {
     m.set_integer("relax_stages", p.stages);
     m.set_number("relax_shell", p.shell);
     m.set_number("relax_force_tolerance", p.force_tolerance);
-    m.set_integer("relax_max_steps", p.max_steps);
+    m.set_number("relax_time", p.time);
+    m.set_number("relax_crossings", p.crossings);
 }
 
 }  // namespace sgmp::engine

@@ -39,9 +39,9 @@
 /// stages before the tolerance is met; `relax_force_max` in the header says what is left.
 ///
 /// Finish: the real spheres are (1 + s) times smaller than the soft ones, so a soft overlap
-/// below s·(rᵢ + rⱼ) is a real gap of at most s·(rᵢ + rⱼ) (default s = 10⁻⁴: contacts end
-/// touching to within 10⁻⁴·d); deeper ones are removed by the hard-sphere finish
-/// (hard_sphere_finish.hpp).
+/// below s·(rᵢ + rⱼ) is a real gap of at most s·(rᵢ + rⱼ) (default s = 3·10⁻⁴: contacts end
+/// touching to within 3·10⁻⁴·d, well inside the 10⁻³·d of Z(10⁻³)); deeper ones are removed
+/// by the hard-sphere finish (hard_sphere_finish.hpp).
 ///
 /// Everything runs in a fixed order on one thread, so the same pack gives the same bytes.
 #include <cstddef>

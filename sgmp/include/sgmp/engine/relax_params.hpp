@@ -35,10 +35,16 @@ struct RelaxParams {
     double shell = 3e-4;
     /// A stage has converged when no sphere feels a net force above this, in m·g.
     double force_tolerance = 1e-4;
-    /// Bound on minimiser steps of the first stage; stage s may take max_steps / 2ˢ. A stage
-    /// reaching its bound ends unconverged (the pack records the force left,
-    /// `relax_force_max`).
-    long max_steps = 4000;
+    /// Bound on the first stage's simulated time, in units of √(H/g) with H the pack's height
+    /// above the floor when the relaxation starts (the time the collective collapse takes is
+    /// of the order of a free fall through the pack).
+    double time = 5.0;
+    /// Bound on each later stage's steps, in units of H/d_min (d_min the smallest diameter;
+    /// at least 500 steps):
+    /// the stiffer stages only relax the overlaps elastically, which takes a number of steps
+    /// proportional to the pack's height in diameters. A stage reaching its bound ends
+    /// unconverged (the pack records the force left, `relax_force_max`).
+    double crossings = 40.0;
 };
 
 /// One-line error naming the option, the value and the rule; nullopt when valid.

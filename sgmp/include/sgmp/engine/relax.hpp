@@ -25,18 +25,22 @@
 /// the equilibrium. Neighbours come from a Verlet list (neighbour_list.hpp, skin 0.25·d_min).
 ///
 /// Stiffness schedule: stages s = 0 … stages−1 at k_s = k₀·factorˢ, each started at rest from
-/// the previous one's end and run until max|Fᵢ| ≤ tolerance or max_steps/2ˢ steps. The soft
-/// first stage (default k₀ = 2·10³, overlaps under the pack's weight of about 0.5 % of d,
-/// like the DEM reference's Hertz contacts) does the collective rearrangement with long
-/// time steps; the stiffer ones (the default ends at 2·10⁶) squeeze the overlaps below the
-/// shell at a step cost that does not grow with k (the elastic relaxation crosses the bed in
-/// a number of steps set by its height in diameters). When the last stage ends on its step
-/// bound, 200 steps of steepest descent c += (0.05/k)·F settle the stiff contact modes (the
-/// overlaps of spheres still moving) without moving the slow modes.
+/// the previous one's end and run until max|Fᵢ| ≤ tolerance or its bound. The soft first
+/// stage (default k₀ = 2·10³: overlaps under the pack's weight of about 0.5 % of d at
+/// N = 3000, like the DEM reference's Hertz contacts) does the collective rearrangement with
+/// long time steps; it is bounded in simulated time, `time`·√(H/g) (H the pack's height
+/// above the floor), since the collapse takes about a free fall through the pack. The
+/// stiffer ones (the default ends at 2·10⁶) squeeze the overlaps below the shell; that is an
+/// elastic relaxation across the pack's height, so they are bounded by `crossings`·H/d_min
+/// steps (at least 500), whatever k. The last stage goes on past its bound, in rounds of 100
+/// steps up to 8 times the steps it took, while a real sphere still overlaps another or a
+/// wall. When it ends unconverged, 200 steps of steepest descent c += (0.05/k)·F settle the
+/// stiff contact modes (overlaps of spheres still moving) without moving the slow modes.
 ///
 /// Frictionless packs under gravity creep (reference/README.md: a μ = 0 DEM pour takes 7×
 /// the steps of a μ = 0.01 one), so the default bounds, chosen for speed, usually end the
-/// stages before the tolerance is met; `relax_force_max` in the header says what is left.
+/// stages before the tolerance is met; `relax_force_max` in the header says what is left
+/// (about 1–5 m·g on the worst sphere at N = 3000–9000: a few spheres still sliding).
 ///
 /// Finish: the real spheres are (1 + s) times smaller than the soft ones, so a soft overlap
 /// below s·(rᵢ + rⱼ) is a real gap of at most s·(rᵢ + rⱼ) (default s = 3·10⁻⁴: contacts end

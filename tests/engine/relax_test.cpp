@@ -127,7 +127,7 @@ BOOST_AUTO_TEST_CASE(a_sphere_settles_into_the_pocket_of_four_corner_spheres) {
     }
 }
 
-BOOST_AUTO_TEST_CASE(the_finish_lifts_a_sphere_onto_three_touching_spheres_at_its_height) {
+BOOST_AUTO_TEST_CASE(the_finish_pushes_a_sunk_sphere_out_onto_three_touching_spheres) {
     // Three touching spheres on the floor (an equilateral triangle of side 2r) and a fourth
     // sunk 1e-4·d into their pocket: the finish pushes it out to where it touches all three,
     // the apex of a regular tetrahedron of edge 2r: 2r·√(2/3) above the others' centres.

@@ -27,7 +27,7 @@ constexpr double kFinishToleranceOverD = 1e-10;
 /// Steepest-descent steps after a last stage that did not converge.
 constexpr int kQuenchSteps = 200;
 /// The last stage goes on past its bound in rounds of this many steps while a real sphere
-/// overlaps, up to kClearBound times the bound.
+/// overlaps, up to kClearBound times the steps it had taken.
 constexpr long kClearRound = 100;
 constexpr long kClearBound = 8;
 /// Fewest steps a later stage may take (a small pack crosses its height in a few steps, but
@@ -105,7 +105,7 @@ void rebuild_neighbours(State& s) {
     }
 }
 
-/// Adds the force of a wall or the floor: k·(penetration) along `normal_sign`.
+/// Magnitude of the force of a wall or the floor on a sphere crossing it by `penetration`.
 inline double wall_force(double penetration, double k) {
     return penetration > 0.0 ? k * penetration : 0.0;
 }

@@ -9,6 +9,10 @@ add_library(sgmp_engine
     src/engine/protocol.cpp
     src/engine/contact_model.cpp
     src/engine/rolling.cpp
+    src/engine/relax_params.cpp
+    src/engine/neighbour_list.cpp
+    src/engine/relax.cpp
+    src/engine/hard_sphere_finish.cpp
     src/engine/make_pack.cpp
     src/engine/pack_checks.cpp)
 target_include_directories(sgmp_engine PUBLIC include)

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <string>
 
+#include "settle_command.hpp"
 #include "sgmp/engine/arrangement.hpp"
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/input_error.hpp"
@@ -223,6 +224,8 @@ int main(int argc, char** argv) {
     pour_cmd->add_option("--liggghts", request.liggghts, "LIGGGHTS program (name on PATH or path)")
         ->capture_default_str();
     pour_cmd->add_flag("--quiet", quiet, "No progress on stderr");
+    sgmp::reference::SettleOptions settle;
+    CLI::App* settle_cmd = sgmp::reference::add_settle_command(app, settle);
 
     try {
         app.parse(argc, argv);
@@ -231,6 +234,13 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         std::cerr << "sgmp-reference: " << sgmp::printable(e.what()) << " (see --help)\n";
         return 2;
+    }
+    if (settle_cmd->parsed()) {
+        install_signal_handlers();
+        ProgressPrinter printer(settle.quiet);
+        return sgmp::reference::run_settle(
+            settle, [&printer](const PourProgress& progress) { printer(progress); },
+            [] { return g_interrupted != 0; }, [&printer] { printer.finish(); });
     }
 
     p.tangential_damping = tangential_damping == "on";

@@ -52,6 +52,8 @@ struct Options {
     std::string walls = "fix";
     long stall_moves = 50;
     long max_moves = 100000;
+    std::string relax = "none";
+    RelaxParams relax_params;
 };
 
 struct UsageError {
@@ -127,6 +129,41 @@ void add_protocol(CLI::App& app, Options& o) {
         ->capture_default_str();
 }
 
+void add_relax(CLI::App& app, Options& o) {
+    RelaxParams& r = o.relax_params;
+    app.add_option("--relax", o.relax,
+                   "after deposition: none | frictionless (relax the whole pack under gravity "
+                   "to an equilibrium of frictionless soft spheres by FIRE energy "
+                   "minimisation, then finish it as hard spheres)")
+        ->capture_default_str();
+    app.add_option("--relax-stiffness", r.stiffness,
+                   "contact stiffness k of the first relaxation stage in m*g/d (a contact "
+                   "carrying one weight m*g overlaps by d/k)")
+        ->capture_default_str();
+    app.add_option("--relax-stiffness-factor", r.stiffness_factor,
+                   "each later relaxation stage multiplies the stiffness by this factor")
+        ->capture_default_str();
+    app.add_option("--relax-stages", r.stages, "number of stiffness stages (1 to 10)")
+        ->capture_default_str();
+    app.add_option("--relax-shell", r.shell,
+                   "contact shell s in [0, 0.01]: the soft spheres are (1+s) times the real "
+                   "ones, so soft contacts end as gaps of at most s*(ri+rj)")
+        ->capture_default_str();
+    app.add_option("--relax-force-tolerance", r.force_tolerance,
+                   "a stage has converged when no sphere feels a net force above this, in m*g "
+                   "(m the mass of a sphere of relative size 1)")
+        ->capture_default_str();
+    app.add_option("--relax-time", r.time,
+                   "bound on the first stage's simulated time, in units of sqrt(H/g) (H: the "
+                   "pack's height above the floor)")
+        ->capture_default_str();
+    app.add_option("--relax-crossings", r.crossings,
+                   "bound on each later stage's steps, in units of H/d (the elastic relaxation "
+                   "crosses the pack's height); the pack records the force left "
+                   "(relax_force_max)")
+        ->capture_default_str();
+}
+
 template <class T>
 T parse_choice(std::optional<T> parsed, const std::string& option, const std::string& value,
                const std::string& choices) {
@@ -174,6 +211,9 @@ PackRequest to_request(const Options& o) {
     p.walls = parse_choice(parse_wall_rule(o.walls), "walls", o.walls, "fix, block");
     p.stall_moves = o.stall_moves;
     p.max_moves = o.max_moves;
+    request.relax = o.relax_params;
+    request.relax.mode =
+        parse_choice(parse_relax_mode(o.relax), "relax", o.relax, "none, frictionless");
     if (const auto error = validate(request)) {
         throw UsageError{*error};
     }
@@ -293,6 +333,7 @@ int main(int argc, char** argv) {
                                         "with the protocol and write the pack");
     add_common(*pack, pack_options);
     add_protocol(*pack, pack_options);
+    add_relax(*pack, pack_options);
     std::string config_file;
     pack->add_option("--config", config_file,
                      "read options from a TOML/INI file of 'option = value' lines (e.g. count = "

@@ -93,6 +93,40 @@ BOOST_AUTO_TEST_CASE(bad_values_are_refused_with_option_value_and_rule) {
                "large-dense, loose-random\n");
 }
 
+BOOST_AUTO_TEST_CASE(bad_relaxation_values_are_refused_with_option_value_and_rule) {
+    const Scratch s;
+    expect_refused(s, "--count 100 --relax soft",
+                   "--relax soft: must be one of none, frictionless");
+    expect_refused(s, "--count 100 --relax frictionless --relax-stiffness 1",
+                   "--relax-stiffness 1: must be in [100, 1e12]");
+    expect_refused(s, "--count 100 --relax frictionless --relax-stages 11",
+                   "--relax-stages 11: must be 1 to 10");
+    expect_refused(s, "--count 100 --relax frictionless --relax-shell 0.5",
+                   "--relax-shell 0.5: must be in [0, 0.01]");
+    expect_refused(s, "--count 100 --relax frictionless --relax-time 0",
+                   "--relax-time 0: must be in (0, 10000]");
+    expect_refused(s, "--count 100 --relax frictionless --relax-crossings -1",
+                   "--relax-crossings -1: must be in (0, 10000]");
+}
+
+BOOST_AUTO_TEST_CASE(relax_none_writes_the_bytes_of_no_relaxation_and_relaxed_packs_repeat) {
+    const Scratch s;
+    const std::string common = "pack --count 300 --arrangement loose-random --seed 3 --out ";
+    BOOST_TEST(s.run(common + "'" + s.path("plain.xyz") + "'").status == 0);
+    BOOST_TEST(s.run(common + "'" + s.path("none.xyz") + "' --relax none").status == 0);
+    BOOST_TEST(slurp(s.path("plain.xyz")) == slurp(s.path("none.xyz")));
+    const Run a = s.run(common + "'" + s.path("a.xyz") + "' --relax frictionless");
+    const Run b = s.run(common + "'" + s.path("b.xyz") + "' --relax frictionless");
+    BOOST_TEST(a.status == 0);
+    BOOST_TEST(b.status == 0);
+    BOOST_TEST(slurp(s.path("a.xyz")) == slurp(s.path("b.xyz")));
+    BOOST_TEST(slurp(s.path("a.xyz")) != slurp(s.path("plain.xyz")));
+    BOOST_TEST(a.out.find("overlaps=0") != std::string::npos);
+    const auto pack = sgmp::read_pack_file(s.path("a.xyz"));
+    BOOST_TEST(pack.metadata.get("relax").value_or("") == "frictionless");
+    BOOST_TEST(!sgmp::read_pack_file(s.path("plain.xyz")).metadata.contains("relax"));
+}
+
 BOOST_AUTO_TEST_CASE(an_unwritable_output_is_refused_before_packing) {
     const Scratch s;
     std::ofstream(s.path("plain-file")) << "x";

@@ -44,6 +44,54 @@ void record_request(const PackRequest& request, double diameter, Metadata& m) {
     m.set("size_modes", size_modes_to_string(request.size_modes));
 }
 
+/// Drops every particle in id order with the protocol (the neighbour grid is freed on return).
+void deposit(std::vector<Particle>& particles, const PackRequest& request,
+             const Container& container, double r_max, Random& rng,
+             const ProgressCallback& progress, PackStats& local) {
+    Protocol protocol(container, request.protocol, r_max);
+    const std::size_t report_every = 1000;
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const DropOutcome outcome = protocol.drop(particles[i], rng);
+        particles[i].center = outcome.center;
+        protocol.settle(particles[i]);
+        local.moves += outcome.moves;
+        switch (outcome.reason) {
+            case StopReason::Floor:
+                ++local.on_floor;
+                break;
+            case StopReason::Wall:
+                ++local.at_wall;
+                break;
+            case StopReason::NoFreeArc:
+                ++local.resting;
+                break;
+            case StopReason::Stalled:
+                ++local.stalled;
+                break;
+            case StopReason::MoveLimit:
+                ++local.move_limit;
+                break;
+        }
+        if (progress && ((i + 1) % report_every == 0 || i + 1 == particles.size())) {
+            progress(i + 1, particles.size());
+        }
+    }
+}
+
+void record_relaxation(const RelaxParams& params, const RelaxStats& stats, Metadata& m) {
+    if (params.mode == RelaxMode::None) {
+        return;
+    }
+    record(params, m);
+    m.set_integer("relax_steps", stats.steps);
+    m.set_integer("relax_stages_converged", stats.stages_converged);
+    m.set_number("relax_force_max", stats.force_max);
+    m.set_number("relax_overlap_max", stats.overlap_max);
+    m.set_integer("relax_finish_lifted", stats.finish_lifted);
+    m.set_number("relax_finish_move_max", stats.finish_move_max);
+    m.set_number("relax_finish_move_mean", stats.finish_move_mean);
+}
+
 }  // namespace
 
 std::optional<std::string> validate(const PackRequest& request) {
@@ -76,7 +124,10 @@ std::optional<std::string> validate(const PackRequest& request) {
                format_number(sizes.largest) + " it gives at phi-target " +
                format_number(request.phi_target) + " does not fit the 1.25-wide container";
     }
-    return validate(request.protocol, sizes.smallest);
+    if (const auto error = validate(request.protocol, sizes.smallest)) {
+        return error;
+    }
+    return validate(request.relax);
 }
 
 Pack make_start_pack(const PackRequest& request) {
@@ -106,33 +157,9 @@ Pack make_pack(const PackRequest& request, const ProgressCallback& progress, Pac
     local.diameter = d;
     local.start_height = starting_height(particles, container);
 
-    Protocol protocol(container, request.protocol, 0.5 * sizes.largest);
-    const std::size_t report_every = 1000;
-    for (std::size_t i = 0; i < particles.size(); ++i) {
-        const DropOutcome outcome = protocol.drop(particles[i], rng);
-        particles[i].center = outcome.center;
-        protocol.settle(particles[i]);
-        local.moves += outcome.moves;
-        switch (outcome.reason) {
-            case StopReason::Floor:
-                ++local.on_floor;
-                break;
-            case StopReason::Wall:
-                ++local.at_wall;
-                break;
-            case StopReason::NoFreeArc:
-                ++local.resting;
-                break;
-            case StopReason::Stalled:
-                ++local.stalled;
-                break;
-            case StopReason::MoveLimit:
-                ++local.move_limit;
-                break;
-        }
-        if (progress && ((i + 1) % report_every == 0 || i + 1 == particles.size())) {
-            progress(i + 1, particles.size());
-        }
+    deposit(particles, request, container, 0.5 * sizes.largest, rng, progress, local);
+    if (request.relax.mode != RelaxMode::None) {
+        local.relax = relax_pack(particles, container, request.relax, d);
     }
 
     Pack pack;
@@ -148,6 +175,7 @@ Pack make_pack(const PackRequest& request, const ProgressCallback& progress, Pac
     m.set_integer("resting", static_cast<long long>(local.resting));
     m.set_integer("stalled", static_cast<long long>(local.stalled));
     m.set_integer("move_limit", static_cast<long long>(local.move_limit));
+    record_relaxation(request.relax, local.relax, m);
     if (stats != nullptr) {
         *stats = local;
     }

@@ -15,6 +15,8 @@
 
 #include "sgmp/engine/arrangement.hpp"
 #include "sgmp/engine/protocol_params.hpp"
+#include "sgmp/engine/relax.hpp"
+#include "sgmp/engine/relax_params.hpp"
 #include "sgmp/engine/size_modes.hpp"
 #include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/pack.hpp"
@@ -38,6 +40,8 @@ struct PackRequest {
     /// Size distribution (size_modes.hpp); the default single mode is the thesis' equal
     /// spheres. The header's `diameter` is the scale s (the diameter of relative size 1).
     std::vector<SizeMode> size_modes = std::vector<SizeMode>(1);
+    /// Relaxation after deposition (relax.hpp); none by default.
+    RelaxParams relax;
 };
 
 /// What happened during packing (also recorded in the pack's metadata).
@@ -50,6 +54,7 @@ struct PackStats {
     std::size_t resting = 0;     ///< particles left by a sweep with no free position
     std::size_t stalled = 0;     ///< particles that moved stall_moves times without falling
     std::size_t move_limit = 0;  ///< particles that reached max_moves
+    RelaxStats relax;            ///< the relaxation's, when one was asked for
 };
 
 /// Called as (particles dropped, total) now and then while packing.
@@ -60,7 +65,8 @@ std::optional<std::string> validate(const PackRequest& request);
 
 /// The pack made by the request, with metadata: generator=sgmp, version, count, diameter,
 /// phi_target, arrangement, seed, every protocol parameter, container, start_height and
-/// the statistics. Throws std::invalid_argument (the `validate` message) for bad requests.
+/// the statistics; with a relaxation, its parameters and statistics follow (`relax_*`). Throws
+/// std::invalid_argument (the `validate` message) for bad requests.
 Pack make_pack(const PackRequest& request, const ProgressCallback& progress = {},
                PackStats* stats = nullptr);
 

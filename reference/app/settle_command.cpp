@@ -1,0 +1,134 @@
+#include "settle_command.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <numbers>
+
+#include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/pack_file.hpp"
+
+namespace sgmp::reference {
+
+namespace {
+
+/// The start of a settle: the pack's centres and colours, its count and the φ* that gives
+/// its diameter by the sizing rule. Throws std::invalid_argument naming the rule broken.
+StartPositions start_from(const Pack& pack, const std::string& path, PourParameters& p) {
+    if (pack.particles.empty()) {
+        throw std::invalid_argument(path + ": holds no spheres");
+    }
+    const double r = pack.particles.front().radius;
+    StartPositions start;
+    start.name = "pack";
+    for (const Particle& particle : pack.particles) {
+        if (std::abs(particle.radius - r) > 1e-9 * r) {
+            throw std::invalid_argument(path +
+                                        ": spheres of different radii; settle pours equal "
+                                        "spheres only");
+        }
+        start.centers.push_back(particle.center);
+        start.colours.push_back(particle.color);
+    }
+    p.count = pack.particles.size();
+    p.arrangement = start.name;  // the input script then reads the positions (start.data)
+    // (N/3)·(π/6)·d³ = φ*: the sizing rule read backwards gives back d = 2r.
+    const double d = 2.0 * r;
+    p.phi_target = static_cast<double>(p.count) / 3.0 * std::numbers::pi / 6.0 * d * d * d;
+    if (const auto seed = pack.metadata.get_number("seed")) {
+        p.seed = static_cast<std::uint64_t>(*seed);
+    }
+    return start;
+}
+
+}  // namespace
+
+CLI::App* add_settle_command(CLI::App& app, SettleOptions& o) {
+    CLI::App* cmd = app.add_subcommand(
+        "settle",
+        "Start LIGGGHTS from the spheres of a pack file (SGMP or DEM, equal spheres) at rest "
+        "and run until settled, by the settling rule of pour; write the settled pack.");
+    PourParameters& p = o.request.parameters;
+    cmd->add_option("pack", o.input, "Pack file to start from (extended XYZ or dump custom)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--friction", p.friction,
+                    "Sliding friction coefficient mu, particles and walls")
+        ->required()
+        ->check(CLI::Range(0.0, 10.0));
+    cmd->add_option("--out", o.out, "Output pack file (extended XYZ; .gz compresses)")->required();
+    cmd->add_option("--tangential-damping", o.tangential_damping,
+                    "Viscous damping of the tangential contact spring, on or off")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"on", "off"}));
+    cmd->add_option("--ranks", p.ranks, "MPI ranks (processor grid 'K 1 1')")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 64));
+    cmd->add_option("--timeout", o.timeout, "Wall-clock limit in seconds; 0 means none")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--max-time", p.max_time,
+                    "Simulated seconds allowed before the run counts as not settled")
+        ->capture_default_str();
+    cmd->add_option("--keep-work", o.keep_work, "Run in this directory and keep it");
+    cmd->add_option("--liggghts", o.request.liggghts, "LIGGGHTS program (name on PATH or path)")
+        ->capture_default_str();
+    cmd->add_flag("--force", o.force, "Overwrite an existing output file");
+    cmd->add_flag("--quiet", o.quiet, "No progress on stderr");
+    return cmd;
+}
+
+int run_settle(SettleOptions& o, const PourObserver& observer,
+               const std::function<bool()>& should_stop, const std::function<void()>& finish) {
+    PourRequest& request = o.request;
+    PourParameters& p = request.parameters;
+    p.tangential_damping = o.tangential_damping == "on";
+    Pack input;
+    try {
+        input = read_pack_file(o.input);
+        request.start = start_from(input, o.input, p);
+        p.validate();
+        check_writable(o.out, o.force);
+    } catch (const std::exception& e) {
+        std::cerr << "sgmp-reference: settle " << e.what() << '\n';
+        return 2;
+    }
+    if (o.timeout > 0.0) {
+        request.timeout = std::chrono::duration<double>(o.timeout);
+    }
+    request.work_directory = o.keep_work;
+    request.should_stop = should_stop;
+    try {
+        PourResult result = pour(request, observer);
+        finish();
+        Metadata& m = result.pack.metadata;
+        m.set("start", "pack");
+        m.set("start_pack", std::filesystem::path(o.input).filename().string());
+        m.set("start_generator", input.metadata.get("generator").value_or("unknown"));
+        write_pack_file(o.out, result.pack, o.force);
+        if (!o.quiet) {
+            char summary[256];
+            std::snprintf(summary, sizeof summary,
+                          "settled %zu spheres in %.1f s, %lld steps; settling measure %.3g; "
+                          "max overlap %.3g d; phi(control volume) %.4f; wrote ",
+                          p.count, result.wall_seconds, static_cast<long long>(result.steps),
+                          result.ke_ratio, result.max_overlap_over_d, result.phi_control_volume);
+            std::cerr << summary << o.out << '\n';
+        }
+        return 0;
+    } catch (const PourError& e) {
+        finish();
+        std::cerr << "sgmp-reference: " << e.what() << '\n';
+        for (const auto& line : e.log_tail()) {
+            std::cerr << "  " << line << '\n';
+        }
+        return should_stop && should_stop() ? 130 : 1;
+    } catch (const std::exception& e) {
+        finish();
+        std::cerr << "sgmp-reference: " << e.what() << '\n';
+        return 1;
+    }
+}
+
+}  // namespace sgmp::reference

@@ -1,0 +1,78 @@
+#pragma once
+/// @file relax.hpp
+/// Collective relaxation of a deposited pack (`--relax frictionless`): the whole pack slides
+/// under gravity into a mechanical equilibrium of frictionless spheres in the container, then
+/// is finished as hard spheres (hard_sphere_finish.hpp).
+///
+/// Soft model. With m the mass and d the diameter of a sphere of relative size 1, g gravity,
+/// wᵢ = (dᵢ/d)³ the weight of sphere i in units of m·g, the soft radii aᵢ = (1 + s)·rᵢ (s the
+/// contact shell), δᵢⱼ = max(0, aᵢ + aⱼ − |cᵢ − cⱼ|) the soft overlap of a pair and
+/// δᵢ^wall = max(0, aᵢ − distance of cᵢ from a wall or the floor):
+///
+///     E(c) / (m·g·d) = Σᵢ wᵢ·yᵢ/d + (k/2)·Σ_pairs (δᵢⱼ/d)² + (k/2)·Σᵢ Σ_walls (δᵢ^wall/d)²
+///
+/// with the stiffness k in m·g/d (a contact carrying one weight overlaps by d/k). The force
+/// Fᵢ = −∇ᵢE has no tangential part: the spheres are frictionless. A minimum of E with every
+/// |Fᵢ| ≤ tolerance·m·g is a mechanical equilibrium of the soft pack.
+///
+/// Minimiser: FIRE (Bitzek et al., PRL 97, 170201, 2006) in the form of Guénolé et al.
+/// (Comput. Mater. Sci. 175, 109584, 2020): semi-implicit Euler steps of unit-mass dynamics
+/// v += Δt·F, v ← (1 − α)·v + α·|v|·F/|F|, c += Δt·v, with Δt grown by 1.1 and α shrunk by
+/// 0.99 after 20 steps of positive power P = F·v, and on P ≤ 0 a half step back, v = 0,
+/// Δt halved, α reset to 0.25. The time step is set by the contact frequency
+/// ω = √(k·g/d): Δt_max = 0.3/ω, Δt starts at Δt_max/10 and never falls below Δt_max/500.
+/// Equal inertia for every sphere is a choice of the minimiser; it changes the path, not
+/// the equilibrium. Neighbours come from a Verlet list (neighbour_list.hpp, skin 0.25·d_min).
+///
+/// Stiffness schedule: stages s = 0 … stages−1 at k_s = k₀·factorˢ, each started at rest from
+/// the previous one's end and run until max|Fᵢ| ≤ tolerance or its bound. The soft first
+/// stage (default k₀ = 2·10³: overlaps under the pack's weight of about 0.5 % of d at
+/// N = 3000, like the DEM reference's Hertz contacts) does the collective rearrangement with
+/// long time steps; it is bounded in simulated time, `time`·√(H/g) (H the pack's height
+/// above the floor), since the collapse takes about a free fall through the pack. The
+/// stiffer ones (the default ends at 2·10⁶) squeeze the overlaps below the shell; that is an
+/// elastic relaxation across the pack's height, so they are bounded by `crossings`·H/d_min
+/// steps (at least 500), whatever k. The last stage goes on past its bound, in rounds of 100
+/// steps up to 8 times the steps it took, while a real sphere still overlaps another or a
+/// wall. When it ends unconverged, 200 steps of steepest descent c += (0.05/k)·F settle the
+/// stiff contact modes (overlaps of spheres still moving) without moving the slow modes.
+///
+/// Frictionless packs under gravity creep (reference/README.md: a μ = 0 DEM pour takes 7×
+/// the steps of a μ = 0.01 one), so the default bounds, chosen for speed, usually end the
+/// stages before the tolerance is met; `relax_force_max` in the header says what is left
+/// (about 1–5 m·g on the worst sphere at N = 3000–9000: a few spheres still sliding).
+///
+/// Finish: the real spheres are (1 + s) times smaller than the soft ones, so a soft overlap
+/// below s·(rᵢ + rⱼ) is a real gap of at most s·(rᵢ + rⱼ) (default s = 3·10⁻⁴: contacts end
+/// touching to within 3·10⁻⁴·d, well inside the 10⁻³·d of Z(10⁻³)); deeper ones are removed
+/// by the hard-sphere finish (hard_sphere_finish.hpp).
+///
+/// Everything runs in a fixed order on one thread, so the same pack gives the same bytes.
+#include <cstddef>
+#include <vector>
+
+#include "sgmp/engine/relax_params.hpp"
+#include "sgmp/pack/geometry.hpp"
+#include "sgmp/pack/particle.hpp"
+
+namespace sgmp::engine {
+
+/// What the relaxation did (also recorded in the pack's metadata).
+struct RelaxStats {
+    long long steps = 0;            ///< minimiser steps over all stages
+    int stages_converged = 0;       ///< stages that reached the force tolerance
+    double force_max = 0.0;         ///< largest net force on a sphere at the end, in m·g
+    double overlap_max = 0.0;       ///< deepest soft overlap at the end (pairs, walls), over d
+    long long finish_lifted = 0;    ///< spheres the finish had to lift straight up
+    double finish_move_max = 0.0;   ///< largest displacement by the hard-sphere finish, over d
+    double finish_move_mean = 0.0;  ///< mean displacement by the hard-sphere finish, over d
+};
+
+/// Relaxes `particles` (of scale diameter `diameter`) in `container` as described above and
+/// finishes them as hard spheres: afterwards no pair overlaps and every sphere is inside the
+/// container. Does nothing for `RelaxMode::None`. Particle order, ids, radii and colours are
+/// kept.
+RelaxStats relax_pack(std::vector<Particle>& particles, const Container& container,
+                      const RelaxParams& params, double diameter);
+
+}  // namespace sgmp::engine

@@ -1,0 +1,60 @@
+#pragma once
+/// @file relax_params.hpp
+/// Parameters of the collective relaxation that may follow deposition (`--relax`): which
+/// relaxation, the soft-contact stiffness schedule and the convergence criterion. Forces are
+/// in units of m·g (m the mass of a sphere of relative size 1), stiffnesses in m·g/d (d the
+/// diameter of relative size 1), so the numbers do not depend on N.
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "sgmp/pack/metadata.hpp"
+
+namespace sgmp::engine {
+
+enum class RelaxMode {
+    /// No relaxation: the pack is the deposition's (the default).
+    None,
+    /// The whole pack relaxes under gravity to a mechanical equilibrium of frictionless
+    /// spheres in the container (relax.hpp), then is finished as hard spheres.
+    Frictionless,
+};
+
+struct RelaxParams {
+    RelaxMode mode = RelaxMode::None;
+    /// Contact stiffness k of the first stage, in m·g/d: a contact pressed by one weight m·g
+    /// overlaps by d/k.
+    double stiffness = 2e3;
+    /// Each later stage multiplies the stiffness by this factor (shrinking the overlaps).
+    double stiffness_factor = 10.0;
+    /// Number of stiffness stages (1 = the first stiffness only).
+    int stages = 4;
+    /// Contact shell s: the soft spheres are (1 + s) times the real ones, so a soft contact
+    /// pressed by less than s·k·(rᵢ + rⱼ)/d weights leaves the real spheres apart by a gap of
+    /// at most s·(rᵢ + rⱼ); only deeper soft overlaps are left for the hard-sphere finish.
+    double shell = 3e-4;
+    /// A stage has converged when no sphere feels a net force above this, in m·g.
+    double force_tolerance = 1e-4;
+    /// Bound on the first stage's simulated time, in units of √(H/g) with H the pack's height
+    /// above the floor when the relaxation starts (the time the collective collapse takes is
+    /// of the order of a free fall through the pack).
+    double time = 5.0;
+    /// Bound on each later stage's steps, in units of H/d_min (d_min the smallest diameter;
+    /// at least 500 steps):
+    /// the stiffer stages only relax the overlaps elastically, which takes a number of steps
+    /// proportional to the pack's height in diameters. A stage reaching its bound ends
+    /// unconverged (the pack records the force left, `relax_force_max`).
+    double crossings = 40.0;
+};
+
+/// One-line error naming the option, the value and the rule; nullopt when valid.
+std::optional<std::string> validate(const RelaxParams& params);
+
+std::string_view to_string(RelaxMode mode);
+std::optional<RelaxMode> parse_relax_mode(std::string_view text);
+
+/// Records the parameters under their option names (snake_case) when a relaxation is asked
+/// for; records nothing for `RelaxMode::None`, so unrelaxed packs keep their bytes.
+void record(const RelaxParams& params, Metadata& metadata);
+
+}  // namespace sgmp::engine

@@ -1,0 +1,369 @@
+#include "sgmp/engine/relax.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+
+#include "sgmp/engine/hard_sphere_finish.hpp"
+#include "sgmp/engine/neighbour_list.hpp"
+
+namespace sgmp::engine {
+
+namespace {
+
+// FIRE constants (Guénolé et al. 2020, table 1) and the time-step scale (relax.hpp).
+constexpr int kDelaySteps = 20;
+constexpr double kDtGrow = 1.1;
+constexpr double kDtShrink = 0.5;
+constexpr double kAlphaStart = 0.25;
+constexpr double kAlphaShrink = 0.99;
+constexpr double kDtMaxTimesOmega = 0.3;
+constexpr double kDtStartOverMax = 0.1;
+constexpr double kDtMinOverMax = 0.002;
+/// Overlap the hard-sphere finish leaves at most, over d.
+constexpr double kFinishToleranceOverD = 1e-10;
+/// Steepest-descent steps after a last stage that did not converge.
+constexpr int kQuenchSteps = 200;
+/// The last stage goes on past its bound in rounds of this many steps while a real sphere
+/// overlaps, up to kClearBound times the steps it had taken.
+constexpr long kClearRound = 100;
+constexpr long kClearBound = 8;
+/// Fewest steps a later stage may take (a small pack crosses its height in a few steps, but
+/// FIRE needs some hundred to settle the contacts at a new stiffness).
+constexpr long kMinStageSteps = 500;
+/// Verlet skin over the smallest diameter.
+constexpr double kSkinOverDmin = 0.25;
+
+struct Triple {
+    double x = 0.0;
+    double y = 0.0;
+    double z = 0.0;
+};
+
+/// The soft pack being minimised, in an internal order that keeps neighbours close in memory.
+struct State {
+    std::vector<Ball> spheres;
+    std::vector<Triple> v;              ///< velocities
+    std::vector<Triple> f;              ///< net forces
+    std::vector<double> weight;         ///< m·g of each sphere, in units of the reference m·g
+    std::vector<float> x0, y0, z0;      ///< positions when the neighbour list was built
+    std::vector<std::size_t> particle;  ///< index in the caller's vector
+    NeighbourList neighbours;
+    double skin = 0.0;
+};
+
+/// Sums over the spheres after a force evaluation.
+struct ForceSums {
+    double power = 0.0;            ///< P = Σ F·v
+    double force_squared = 0.0;    ///< |F|² of the whole pack
+    double largest_squared = 0.0;  ///< max |Fᵢ|²
+};
+
+State make_state(const std::vector<Particle>& particles, double diameter, double shell) {
+    const std::size_t n = particles.size();
+    // Order by cells of side d (layer, then z, then x) so that a sphere's neighbours sit
+    // near it in the arrays.
+    std::vector<std::int64_t> key(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec3& c = particles[i].center;
+        const auto cell = [&](double v) {
+            return static_cast<std::int64_t>(std::floor(v / diameter));
+        };
+        key[i] = (cell(c.y()) * 4096 + (cell(c.z()) + 2048)) * 4096 + (cell(c.x()) + 2048);
+    }
+    State s;
+    s.particle.resize(n);
+    std::iota(s.particle.begin(), s.particle.end(), std::size_t{0});
+    std::stable_sort(s.particle.begin(), s.particle.end(),
+                     [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+    const double reference_radius = 0.5 * diameter;
+    double r_min = INFINITY;
+    for (const std::size_t i : s.particle) {
+        const Particle& p = particles[i];
+        s.spheres.push_back(
+            Ball{p.center.x(), p.center.y(), p.center.z(), p.radius * (1.0 + shell)});
+        s.weight.push_back(std::pow(p.radius / reference_radius, 3));
+        r_min = std::min(r_min, p.radius);
+    }
+    s.v.assign(n, Triple{});
+    s.f.assign(n, Triple{});
+    s.x0.resize(n);
+    s.y0.resize(n);
+    s.z0.resize(n);
+    s.skin = kSkinOverDmin * 2.0 * r_min;
+    return s;
+}
+
+void rebuild_neighbours(State& s) {
+    s.neighbours.build(s.spheres, s.skin);
+    for (std::size_t i = 0; i < s.spheres.size(); ++i) {
+        s.x0[i] = static_cast<float>(s.spheres[i].x);
+        s.y0[i] = static_cast<float>(s.spheres[i].y);
+        s.z0[i] = static_cast<float>(s.spheres[i].z);
+    }
+}
+
+/// Magnitude of the force of a wall or the floor on a sphere crossing it by `penetration`.
+inline double wall_force(double penetration, double k) {
+    return penetration > 0.0 ? k * penetration : 0.0;
+}
+
+/// F = −∇E at the present positions (k in m·g per length unit), and the sums FIRE needs.
+ForceSums compute_forces(State& s, const Container& box, double k) {
+    const std::vector<Ball>& p = s.spheres;
+    const std::size_t n = p.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        s.f[i].x = 0.0;
+        s.f[i].y = -s.weight[i];
+        s.f[i].z = 0.0;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        const double xi = p[i].x, yi = p[i].y, zi = p[i].z, ri = p[i].r;
+        double fxi = 0.0, fyi = 0.0, fzi = 0.0;
+        for (const std::uint32_t j : s.neighbours.of(i)) {
+            const double dx = p[j].x - xi, dy = p[j].y - yi, dz = p[j].z - zi;
+            const double reach = ri + p[j].r;
+            const double d2 = dx * dx + dy * dy + dz * dz;
+            if (d2 >= reach * reach) {
+                continue;
+            }
+            const double dist = std::sqrt(d2);
+            const double f = k * (reach - dist) / dist;  // pushes j away from i
+            fxi -= f * dx;
+            fyi -= f * dy;
+            fzi -= f * dz;
+            s.f[j].x += f * dx;
+            s.f[j].y += f * dy;
+            s.f[j].z += f * dz;
+        }
+        s.f[i].x += fxi;
+        s.f[i].y += fyi;
+        s.f[i].z += fzi;
+    }
+    ForceSums sums;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double r = p[i].r;
+        s.f[i].x += wall_force(box.x_min + r - p[i].x, k) - wall_force(p[i].x + r - box.x_max, k);
+        s.f[i].z += wall_force(box.z_min + r - p[i].z, k) - wall_force(p[i].z + r - box.z_max, k);
+        s.f[i].y += wall_force(box.floor + r - p[i].y, k);
+        const double f2 = s.f[i].x * s.f[i].x + s.f[i].y * s.f[i].y + s.f[i].z * s.f[i].z;
+        sums.force_squared += f2;
+        sums.largest_squared = std::max(sums.largest_squared, f2);
+        sums.power += s.f[i].x * s.v[i].x + s.f[i].y * s.v[i].y + s.f[i].z * s.v[i].z;
+    }
+    return sums;
+}
+
+/// v += Δt·F, then v ← (1 − α)·v + α·|v|·F/|F|.
+void kick_and_mix(State& s, double dt, double alpha, double force_squared) {
+    const std::size_t n = s.spheres.size();
+    double v2 = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        s.v[i].x += dt * s.f[i].x;
+        s.v[i].y += dt * s.f[i].y;
+        s.v[i].z += dt * s.f[i].z;
+        v2 += s.v[i].x * s.v[i].x + s.v[i].y * s.v[i].y + s.v[i].z * s.v[i].z;
+    }
+    const double keep = 1.0 - alpha;
+    const double steer = force_squared > 0.0 ? alpha * std::sqrt(v2 / force_squared) : 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        s.v[i].x = keep * s.v[i].x + steer * s.f[i].x;
+        s.v[i].y = keep * s.v[i].y + steer * s.f[i].y;
+        s.v[i].z = keep * s.v[i].z + steer * s.f[i].z;
+    }
+}
+
+/// c += step·v; rebuilds the neighbour list once a sphere may have moved skin/2.
+void drift(State& s, double step) {
+    std::vector<Ball>& p = s.spheres;
+    double largest = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        p[i].x += step * s.v[i].x;
+        p[i].y += step * s.v[i].y;
+        p[i].z += step * s.v[i].z;
+        const double dx = p[i].x - s.x0[i], dy = p[i].y - s.y0[i], dz = p[i].z - s.z0[i];
+        largest = std::max(largest, dx * dx + dy * dy + dz * dz);
+    }
+    // 1e-6 covers the float rounding of the stored positions (|c| < 10³ ⇒ error < 1e-4·skin).
+    if (2.0 * std::sqrt(largest) + 1e-6 * s.skin >= s.skin) {
+        rebuild_neighbours(s);
+    }
+}
+
+void stop(State& s) {
+    std::fill(s.v.begin(), s.v.end(), Triple{});
+}
+
+struct StageResult {
+    long long steps = 0;
+    bool converged = false;
+    double force_max = 0.0;
+};
+
+/// FIRE's adaptive step and mixing.
+struct Fire {
+    double dt_max;
+    double dt_min;
+    double dt;
+    double alpha = kAlphaStart;
+    long positive = 0;
+    long steps = 0;
+    double time = 0.0;  ///< simulated time, Σ Δt
+    explicit Fire(double k)
+        : dt_max(kDtMaxTimesOmega / std::sqrt(k)),
+          dt_min(kDtMinOverMax * dt_max),
+          dt(kDtStartOverMax * dt_max) {}
+
+    /// One step from the forces `sums` of the present positions; returns the new ones.
+    ForceSums step(State& s, const Container& box, double k, const ForceSums& sums) {
+        ++steps;
+        if (sums.power > 0.0) {
+            if (++positive > kDelaySteps) {
+                dt = std::min(dt * kDtGrow, dt_max);
+                alpha *= kAlphaShrink;
+            }
+        } else {
+            positive = 0;
+            if (steps > kDelaySteps) {
+                dt = std::max(dt * kDtShrink, dt_min);
+                alpha = kAlphaStart;
+            }
+            drift(s, -0.5 * dt);
+            stop(s);
+        }
+        kick_and_mix(s, dt, alpha, sums.force_squared);
+        drift(s, dt);
+        time += dt;
+        return compute_forces(s, box, k);
+    }
+};
+
+/// Deepest overlap of a listed pair or with a wall or the floor, for radii scaled by
+/// `scale` (1: the soft spheres; 1/(1 + shell): the real ones).
+double deepest_overlap(const State& s, const Container& box, double scale) {
+    const std::vector<Ball>& p = s.spheres;
+    double deepest = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double r = scale * p[i].r;
+        deepest =
+            std::max({deepest, box.x_min + r - p[i].x, p[i].x + r - box.x_max,
+                      box.z_min + r - p[i].z, p[i].z + r - box.z_max, box.floor + r - p[i].y});
+        for (const std::uint32_t j : s.neighbours.of(i)) {
+            const double dx = p[j].x - p[i].x, dy = p[j].y - p[i].y, dz = p[j].z - p[i].z;
+            deepest =
+                std::max(deepest, r + scale * p[j].r - std::sqrt(dx * dx + dy * dy + dz * dz));
+        }
+    }
+    return deepest;
+}
+
+/// Bounds of one stage: simulated time and steps.
+struct StageBound {
+    double time = INFINITY;
+    long steps = std::numeric_limits<long>::max();
+};
+
+/// One stiffness stage of FIRE from rest; `k` in m·g per length unit. With `until_clear`, a
+/// stage reaching its bound goes on, in rounds of kClearRound steps up to kClearBound times
+/// the steps it took, while a real sphere (radius scaled by 1/(1 + shell)) still overlaps.
+StageResult run_stage(State& s, const Container& box, double k, const RelaxParams& params,
+                      StageBound bound, bool until_clear) {
+    const double tolerance_squared = params.force_tolerance * params.force_tolerance;
+    Fire fire(k);
+    stop(s);
+    ForceSums sums = compute_forces(s, box, k);
+    const auto run = [&](long steps) {
+        while (sums.largest_squared > tolerance_squared && fire.steps < steps &&
+               fire.time < bound.time) {
+            sums = fire.step(s, box, k, sums);
+        }
+    };
+    run(bound.steps);
+    const long clear_bound = kClearBound * std::max(fire.steps, 1L);
+    const double real = 1.0 / (1.0 + params.shell);
+    bound.time = INFINITY;
+    while (until_clear && sums.largest_squared > tolerance_squared && fire.steps < clear_bound &&
+           deepest_overlap(s, box, real) > 0.0) {
+        run(fire.steps + kClearRound);
+    }
+    StageResult result;
+    result.steps = fire.steps;
+    result.converged = sums.largest_squared <= tolerance_squared;
+    result.force_max = std::sqrt(sums.largest_squared);
+    return result;
+}
+
+/// Steepest descent c += η·F with η = 0.05/k (stable for up to 40 contacts of stiffness k):
+/// it settles the stiff contact modes — overlaps left by spheres still moving when a stage
+/// ended — at a rate of about 10 % per step, and leaves the slow modes of the pack alone.
+/// Returns the largest net force left.
+double quench(State& s, const Container& box, double k, int steps) {
+    const double rate = 0.05 / k;
+    ForceSums sums;
+    for (int step = 0; step < steps; ++step) {
+        sums = compute_forces(s, box, k);
+        s.v = s.f;
+        drift(s, rate);
+    }
+    stop(s);
+    sums = compute_forces(s, box, k);
+    return std::sqrt(sums.largest_squared);
+}
+
+/// The soft relaxation of every stage; leaves the soft pack's positions in `particles`.
+void relax_soft(std::vector<Particle>& particles, const Container& container,
+                const RelaxParams& params, double diameter, RelaxStats& stats) {
+    State s = make_state(particles, diameter, params.shell);
+    rebuild_neighbours(s);
+    double height = 0.0;
+    double d_min = INFINITY;
+    for (const Particle& p : particles) {
+        height = std::max(height, p.center.y() + p.radius - container.floor);
+        d_min = std::min(d_min, 2.0 * p.radius);
+    }
+    double stiffness = params.stiffness;
+    for (int stage = 0; stage < params.stages; ++stage) {
+        // k in m·g/d becomes k/d in m·g per length unit.
+        StageBound bound;
+        if (stage == 0) {
+            bound.time = params.time * std::sqrt(height);  // g = 1
+        } else {
+            bound.steps = std::max(kMinStageSteps, std::lround(params.crossings * height / d_min));
+        }
+        const bool last = stage + 1 == params.stages;
+        const StageResult r = run_stage(s, container, stiffness / diameter, params, bound, last);
+        stats.steps += r.steps;
+        stats.stages_converged += r.converged ? 1 : 0;
+        stats.force_max = r.force_max;
+        stiffness *= params.stiffness_factor;
+    }
+    if (stats.stages_converged < params.stages) {
+        stats.force_max =
+            quench(s, container, stiffness / params.stiffness_factor / diameter, kQuenchSteps);
+    }
+    stats.overlap_max = deepest_overlap(s, container, 1.0) / diameter;  // of the soft spheres
+    for (std::size_t k = 0; k < s.particle.size(); ++k) {
+        particles[s.particle[k]].center = Vec3(s.spheres[k].x, s.spheres[k].y, s.spheres[k].z);
+    }
+}
+
+}  // namespace
+
+RelaxStats relax_pack(std::vector<Particle>& particles, const Container& container,
+                      const RelaxParams& params, double diameter) {
+    RelaxStats stats;
+    if (params.mode == RelaxMode::None || particles.empty()) {
+        return stats;
+    }
+    relax_soft(particles, container, params, diameter, stats);
+    const FinishStats finish =
+        finish_as_hard_spheres(particles, container, kFinishToleranceOverD * diameter);
+    stats.finish_lifted = static_cast<long long>(finish.lifted);
+    stats.finish_move_max = finish.move_max / diameter;
+    stats.finish_move_mean = finish.move_sum / static_cast<double>(particles.size()) / diameter;
+    return stats;
+}
+
+}  // namespace sgmp::engine

@@ -122,8 +122,9 @@ MetricRow judge_scalar(const MetricRule& rule, const std::vector<const PackSumma
     row.reference_sd = sample_sd(bv);
     row.difference = row.candidate_mean - row.reference_mean;
     row.seed_spread = b.size() >= 2 ? 2.0 * row.reference_sd : 0.0;
-    row.model_spread = model;
-    const double spread = std::hypot(row.seed_spread, model);
+    // M is a standard deviation of the model, as sd_ref is of the seeds: both enter at 2σ.
+    row.model_spread = 2.0 * model;
+    const double spread = std::hypot(row.seed_spread, row.model_spread);
     row.tolerance = std::max(spread, rule.floor);
     row.tolerance_rule = spread < rule.floor ? "floor" : (model > 0.0 ? "seed+model" : "seed");
     if (row.tolerance > 0.0) {

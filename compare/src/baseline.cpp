@@ -74,7 +74,7 @@ nlohmann::ordered_json baseline_json(const std::vector<BaselineEntry>& entries,
             {"provenance", provenance},
             {"rule",
              "value: the candidate group's mean over its seeds; tolerance: the smallest over "
-             "reference groups of max(sqrt((2 sd of the reference's seeds)^2 + model spread^2), "
+             "reference groups of max(2 sqrt(sd of the reference's seeds^2 + model spread^2), "
              "floor of the metric); a later run passes when |current - value| <= tolerance"},
             {"entries", list}};
 }

@@ -131,7 +131,7 @@ std::vector<std::string> rule_statements() {
         "without a verdict: it differs by construction, as the overlaps of soft DEM spheres "
         "against hard SGMP spheres).",
         "Scalar metric: difference = mean(candidate) - mean(reference); tolerance = max(floor, "
-        "sqrt((2 sd of the reference packs)^2 + model spread^2)); model spread = root mean "
+        "2 sqrt(sd^2 + M^2)), sd over the reference packs and M the model spread, the root mean "
         "square over counts of mean(variant DEM set-up) - mean(reference); ratio = "
         "|difference| / tolerance; agree when ratio <= 1. With 5 packs a side drawn from one "
         "distribution the difference exceeds 2 sd with probability about 1 %.",

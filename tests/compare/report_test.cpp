@@ -127,7 +127,7 @@ BOOST_AUTO_TEST_CASE(classes_that_cannot_be_told_apart_make_verdicts_inconclusiv
 
 BOOST_AUTO_TEST_CASE(the_model_spread_widens_the_tolerance) {
     // Reference B and its variant V (spacing 1.06 instead of 1.05): their φ offset enters
-    // the tolerance in quadrature with 2 sd, so a candidate at V's φ agrees.
+    // the tolerance (as 2·M) in quadrature with 2 sd, so a candidate at V's φ agrees.
     const Group b = group("B", 1.05, 3);
     const Group v = group("V", 1.06, 3);
     Group a = v;
@@ -139,10 +139,12 @@ BOOST_AUTO_TEST_CASE(the_model_spread_widens_the_tolerance) {
     const MetricRow& plain = without.comparisons[0].row("phi");
     const MetricRow& wide = with.comparisons[0].row("phi");
     BOOST_TEST(plain.model_spread == 0.0);
-    BOOST_TEST(wide.model_spread == std::abs(plain.difference),
+    // One variant count: M = |offset|, entering at 2·M beside 2 sd.
+    BOOST_TEST(wide.model_spread == 2.0 * std::abs(plain.difference),
                boost::test_tools::tolerance(1e-12));
-    BOOST_TEST(wide.tolerance == std::max(0.005, std::hypot(plain.seed_spread, plain.difference)),
-               boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(
+        wide.tolerance == std::max(0.005, std::hypot(plain.seed_spread, 2.0 * plain.difference)),
+        boost::test_tools::tolerance(1e-12));
     BOOST_TEST(wide.verdict == Verdict::Agree);
     BOOST_TEST(with.comparisons[0].variant_packs == 3u);
 }

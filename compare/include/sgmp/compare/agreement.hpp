@@ -8,10 +8,11 @@
 /// hard SGMP spheres).
 ///
 /// Scalar metric m: difference Δ = mean_candidate − mean_reference; tolerance
-///     T = max(floor_m, √((2·s_ref)² + M²)),
-/// with s_ref the sample sd (n − 1) of the reference packs and M the DEM model spread: the
-/// root mean square, over the counts where the reference's variant set (a second,
-/// independent DEM set-up of the same physics) has packs, of mean_variant − mean_reference.
+///     T = max(floor_m, 2·√(s_ref² + M²)),
+/// with s_ref the sample sd (n − 1) of the reference packs and M the DEM model spread, the
+/// standard deviation of the model: the root mean square, over the counts where the
+/// reference's variant set (a second, independent DEM set-up of the same physics) has packs,
+/// of mean_variant − mean_reference. Both sds enter at 2σ.
 /// ratio = |Δ| / T; agree when ratio ≤ 1. For two groups drawn from one distribution with
 /// n = 5 packs each, Δ has standard error 0.63·s, so 2·s alone is exceeded with probability
 /// P(|t₈| > 3.2) ≈ 1 %: T is an equivalence margin of about a single pack's 95 % range,
@@ -59,8 +60,8 @@ struct MetricRule {
     std::string label;  // people's name
     std::string unit;   // e.g. "d", "contacts/particle", "ratio"
     MetricKind kind = MetricKind::Scalar;
-    double floor = 0.0;  // smallest tolerance (scalars)
-    bool judged = true;  // false: information only, no verdict
+    double floor = 0.0;       // smallest tolerance (scalars)
+    bool judged = true;       // false: information only, no verdict
     std::string short_label;  // column heading of the verdict matrix
 };
 /// Every metric, scalars first, in report order.
@@ -117,7 +118,7 @@ struct MetricRow {
     double difference = 0.0;
     /// Scalars: 2·s_ref; curves: D_rep.
     double seed_spread = 0.0;
-    /// Scalars: M; curves: μ·D_rep (0 without a variant set).
+    /// Scalars: 2·M; curves: μ·D_rep (0 without a variant set).
     double model_spread = 0.0;
     /// Scalars: T; curves: S.
     double tolerance = 0.0;

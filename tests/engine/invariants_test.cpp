@@ -182,6 +182,16 @@ BOOST_AUTO_TEST_CASE(a_rolled_sphere_on_supports_is_in_frictionless_equilibrium)
     BOOST_TEST(check.unrested == 0u);
 }
 
+BOOST_AUTO_TEST_CASE(a_contact_made_at_the_overlap_tolerance_does_not_stop_the_roll) {
+    // Sphere 4783 used to end on three spheres, one pulling: the contact made where a grazed
+    // sphere's overlap reached the band's edge was met again at once on every later leg.
+    PackRequest request = roll_request(4794, Arrangement::SingleColumn, 454711);
+    request.protocol.fall = FallMode::Step;
+    const RestCheck check = rolled_rest(request);
+    BOOST_TEST_INFO("first unrested index " << check.first);
+    BOOST_TEST(check.unrested == 0u);
+}
+
 BOOST_AUTO_TEST_CASE(every_rolled_sphere_rests_on_the_floor_a_wall_or_three_in_equilibrium) {
     // Seeds × arrangements × gap rule × wall rule × one and two size modes × both falls.
     int packs = 0;

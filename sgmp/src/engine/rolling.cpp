@@ -44,12 +44,12 @@ double entering_root(double K, double P, double Q, double tolerance) {
         return 0.0;
     }
     if (start <= tolerance) {
-        // Touching at the start: the contact is met where g falls below −tolerance, at once
-        // when approached, later when the arc only grazes it (a tangent start would
-        // otherwise stop every leg where it begins).
+        // Touching at the start: the contact is met at once when approached, else where g
+        // falls below −tolerance/2 (a tangent start would otherwise stop every leg where it
+        // begins; half the band, so that the contact made is inside it for the next leg).
         if (Q < 0.0 && (Q * 1e-6 < -tolerance || start <= -tolerance))
             return 0.0;
-        K += tolerance;
+        K += 0.5 * tolerance;
     }
     const double R = std::hypot(P, Q);
     if (R == 0.0) {

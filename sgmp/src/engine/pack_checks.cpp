@@ -4,6 +4,8 @@
 #include <cmath>
 #include <tuple>
 
+#include <Eigen/Dense>
+
 #include "sgmp/engine/settled_grid.hpp"
 
 namespace sgmp::engine {
@@ -57,6 +59,78 @@ PackCheck check_pack(const std::vector<Particle>& particles, const Container& co
             }
         });
         result.unsupported += supported ? 0 : 1;
+    }
+    return result;
+}
+
+RestCheck check_rolled_rest(const std::vector<Particle>& particles, const Container& container,
+                            double contact_tolerance, double force_tolerance) {
+    RestCheck result;
+    result.first = particles.size();
+    if (particles.empty()) {
+        return result;
+    }
+    double r_max = 0.0;
+    for (const Particle& p : particles) {
+        r_max = std::max(r_max, p.radius);
+    }
+    // Drop order is id order: each sphere is checked against the spheres placed before it
+    // (the grid holds exactly those), then added.
+    std::vector<std::size_t> order(particles.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        order[i] = i;
+    }
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return particles[a].id < particles[b].id;
+    });
+    SettledGrid grid(container, 2.0 * r_max);
+    std::vector<Vec3> normals;
+    for (const std::size_t i : order) {
+        const Particle& p = particles[i];
+        const Vec3& c = p.center;
+        const double r = p.radius;
+        const double tol = contact_tolerance;
+        grid.insert(Sphere{c.x(), c.y(), c.z(), r});
+        if (c.y() - r - container.floor <= tol || c.x() - r - container.x_min <= tol ||
+            container.x_max - c.x() - r <= tol || c.z() - r - container.z_min <= tol ||
+            container.z_max - c.z() - r <= tol) {
+            continue;
+        }
+        normals.clear();
+        const Vec3 span = Vec3::Constant(r + r_max + tol);
+        grid.for_each_in_box(c - span, c + span, [&](const Sphere& s) {
+            const Vec3 sc(s.x, s.y, s.z);
+            if (sc == c && s.r == r) {
+                return;  // itself (inserted above)
+            }
+            const double distance = (c - sc).norm();
+            if (distance - r - s.r > tol) {
+                return;
+            }
+            normals.push_back((c - sc) / distance);
+        });
+        bool rests = false;
+        const std::size_t n = normals.size();
+        for (std::size_t a = 0; a < n && !rests; ++a) {
+            for (std::size_t b = a + 1; b < n && !rests; ++b) {
+                for (std::size_t e = b + 1; e < n && !rests; ++e) {
+                    Eigen::Matrix3d m;
+                    m.col(0) = normals[a];
+                    m.col(1) = normals[b];
+                    m.col(2) = normals[e];
+                    if (std::abs(m.determinant()) < 1e-12) {
+                        continue;
+                    }
+                    const Vec3 lambda = m.partialPivLu().solve(Vec3::UnitY());
+                    rests = lambda.allFinite() && lambda.minCoeff() >= -force_tolerance;
+                }
+            }
+        }
+        if (!rests) {
+            ++result.unrested;
+            result.fewer_than_three += n < 3 ? 1 : 0;
+            result.first = std::min(result.first, i);
+        }
     }
     return result;
 }

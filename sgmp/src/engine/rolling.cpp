@@ -36,11 +36,20 @@ struct Arc {
 };
 
 /// First φ > 0 at which g(φ) = K + P cos φ + Q sin φ, allowed to be ≥ 0, turns negative
-/// (0 when it is ≈ 0 and decreasing at the start; kNever when it never does).
+/// (0 when it is already below −tolerance or touching and approached; kNever when it never
+/// does).
 double entering_root(double K, double P, double Q, double tolerance) {
     const double start = K + P;
-    if (start < -tolerance || (start <= tolerance && Q < 0.0)) {
+    if (start < -tolerance) {
         return 0.0;
+    }
+    if (start <= tolerance) {
+        // Touching at the start: the contact is met at once when approached, else where g
+        // falls below −tolerance/2 (a tangent start would otherwise stop every leg where it
+        // begins; half the band, so that the contact made is inside it for the next leg).
+        if (Q < 0.0 && (Q * 1e-6 < -tolerance || start <= -tolerance))
+            return 0.0;
+        K += 0.5 * tolerance;
     }
     const double R = std::hypot(P, Q);
     if (R == 0.0) {
@@ -127,11 +136,13 @@ Hit fall_from(const Context& ctx, const Vec3& p) {
     const Vec3 lo(p.x() - reach, ctx.box.floor - reach, p.z() - reach);
     const Vec3 hi(p.x() + reach, p.y(), p.z() + reach);
     ctx.grid.for_each_in_box(lo, hi, [&](const Sphere& s) {
-        if (s.y > p.y())
+        const double D = ctx.r + s.r;
+        // A sphere touched at (or below) its equator is left behind by the fall: counting it
+        // would stop the fall where it starts, on a support that cannot hold it.
+        if (s.y > p.y() - 1e-9 * D)
             return;
         const double dx = p.x() - s.x;
         const double dz = p.z() - s.z;
-        const double D = ctx.r + s.r;
         const double h2 = dx * dx + dz * dz;
         if (h2 >= D * D)
             return;
@@ -150,6 +161,75 @@ std::array<double, 2> two_forces(const Vec3& nj, const Vec3& nk) {
     const double c = nj.dot(nk);
     const double det = 1.0 - c * c;
     return {(nj.y() - c * nk.y()) / det, (nk.y() - c * nj.y()) / det};
+}
+
+/// The motion of a particle at p held by `contacts` under gravity, found as the active set
+/// of the frictionless contact problem: the subset A of the contacts that it keeps while
+/// moving, with compressive forces on A, a downhill direction along the constraints of A,
+/// and the other contacts not approached. Generically exactly one subset qualifies
+/// (Gauss' principle); pairs are tried before singles. `direction` is the downhill roll
+/// direction on a pair (t) or on a single support (the steepest descent).
+struct Motion {
+    enum class Kind { Stable, Pair, Single, Fall, Stuck } kind = Kind::Stuck;
+    std::array<int, 2> keep{0, 0};
+    Vec3 direction = Vec3::Zero();
+};
+
+Motion choose_motion(const Vec3& p, const Sphere* contacts, int count) {
+    constexpr double kEps = 1e-12;
+    std::array<Vec3, 3> n;
+    for (int i = 0; i < count; ++i)
+        n[i] = (p - centre(contacts[i])).normalized();
+    if (count == 3) {
+        Eigen::Matrix3d normals;
+        for (int i = 0; i < 3; ++i)
+            normals.col(i) = n[i];
+        const Vec3 force = normals.colPivHouseholderQr().solve(kUp);
+        if (force.allFinite() && (normals * force - kUp).norm() <= 1e-9 &&
+            force.minCoeff() >= -kEps) {
+            return Motion{Motion::Kind::Stable, {0, 1}, Vec3::Zero()};
+        }
+    }
+    const auto others_clear = [&](const Vec3& d, int a, int b) {
+        for (int l = 0; l < count; ++l) {
+            if (l != a && l != b && n[l].dot(d) < -kEps)
+                return false;
+        }
+        return true;
+    };
+    for (int a = 0; a < count; ++a) {
+        for (int b = a + 1; b < count; ++b) {
+            if (1.0 - std::abs(n[a].dot(n[b])) < 1e-12)
+                continue;
+            const auto force = two_forces(n[a], n[b]);
+            if (force[0] < 0.0 || force[1] < 0.0)
+                continue;  // (exactly: a pair left where a force vanished stays left)
+            Vec3 t = n[a].cross(n[b]).normalized();
+            if (t.y() > 0.0)
+                t = -t;
+            // At the top of the circle (t level) either way is downhill: the rest there is
+            // unstable, so the roll goes on, the way that keeps clear of the other contacts.
+            for (const Vec3& d : {t, Vec3(-t)}) {
+                if (d.y() <= 1e-12 && others_clear(d, a, b))
+                    return Motion{Motion::Kind::Pair, {a, b}, d};
+            }
+        }
+    }
+    for (int a = 0; a < count; ++a) {
+        if (n[a].y() <= 0.0)
+            continue;
+        Vec3 down = n[a].y() * n[a] - kUp;
+        if (down.norm() < 1e-12) {
+            // On top of the support: unstable, it rolls off; pick a level direction.
+            down = Vec3::UnitX() - n[a].x() * n[a];
+        }
+        down.normalize();
+        if (others_clear(down, a, a))
+            return Motion{Motion::Kind::Single, {a, a}, down};
+    }
+    if (others_clear(-kUp, -1, -1))
+        return Motion{Motion::Kind::Fall, {0, 0}, -kUp};
+    return Motion{};
 }
 
 }  // namespace
@@ -171,13 +251,33 @@ RollResult roll_to_rest(const SettledGrid& grid, const Container& container, dou
         contacts[count++] = hit.ball;
         return std::nullopt;
     };
-    const auto drop_contact = [&](int i) {
-        for (int k = i; k + 1 < count; ++k)
-            contacts[k] = contacts[k + 1];
-        --count;
-    };
-    constexpr int kMaxLegs = 64;
+    constexpr int kMaxLegs = 1000;
     for (int leg = 0; leg < kMaxLegs; ++leg) {
+        Motion motion;
+        if (count > 0) {
+            motion = choose_motion(p, contacts.data(), count);
+            switch (motion.kind) {
+                case Motion::Kind::Stable:
+                    return RollResult{p, RollEnd::Stable};
+                case Motion::Kind::Stuck:
+                    return RollResult{p, RollEnd::Stopped};
+                case Motion::Kind::Fall:
+                    count = 0;
+                    break;
+                case Motion::Kind::Single:
+                    contacts[0] = contacts[motion.keep[0]];
+                    count = 1;
+                    break;
+                case Motion::Kind::Pair: {
+                    const Sphere a = contacts[motion.keep[0]];
+                    const Sphere b = contacts[motion.keep[1]];
+                    contacts[0] = a;
+                    contacts[1] = b;
+                    count = 2;
+                    break;
+                }
+            }
+        }
         if (count == 0) {
             const Hit fall = fall_from(ctx, p);
             p.y() = fall.phi;
@@ -190,14 +290,7 @@ RollResult roll_to_rest(const SettledGrid& grid, const Container& container, dou
         if (count == 1) {
             const Vec3 cj = centre(contacts[0]);
             const Vec3 n = (p - cj).normalized();
-            const Vec3 down = n.y() * n - kUp;  // steepest descent along the sphere
-            if (n.y() <= 0.0) {
-                count = 0;  // at or past the equator: it falls
-                continue;
-            }
-            if (down.norm() < 1e-12)
-                return RollResult{p, RollEnd::Stopped};  // on top
-            const Arc arc{cj, r + contacts[0].r, n, down.normalized()};
+            const Arc arc{cj, r + contacts[0].r, n, motion.direction};
             const double equator = std::atan2(arc.e1.y(), -arc.e2.y());
             const Hit hit = first_hit(ctx, arc, contacts.data(), count);
             const double phi = std::min(hit.phi, equator);
@@ -212,81 +305,49 @@ RollResult roll_to_rest(const SettledGrid& grid, const Container& container, dou
             }
             continue;
         }
-        if (count == 2) {
-            const Vec3 cj = centre(contacts[0]);
-            const Vec3 ck = centre(contacts[1]);
-            const Vec3 nj = (p - cj).normalized();
-            const Vec3 nk = (p - ck).normalized();
-            if (1.0 - std::abs(nj.dot(nk)) < 1e-12)
-                return RollResult{p, RollEnd::Stopped};
-            const auto force = two_forces(nj, nk);
-            if (force[0] < 0.0 || force[1] < 0.0) {
-                drop_contact(force[0] < force[1] ? 0 : 1);  // leaves the pulling support
-                continue;
+        // Two supports: roll along the circle where both contact spheres meet.
+        const Vec3 cj = centre(contacts[0]);
+        const Vec3 ck = centre(contacts[1]);
+        const Vec3 t = motion.direction;
+        const Vec3 axis = ck - cj;
+        const double L = axis.norm();
+        const double Dj = r + contacts[0].r;
+        const double Dk = r + contacts[1].r;
+        const double along = (Dj * Dj - Dk * Dk + L * L) / (2.0 * L);
+        const Vec3 m = cj + along * axis / L;
+        const Vec3 radial = p - m;
+        const Arc arc{m, radial.norm(), radial.normalized(), t};
+        double lowest = std::atan2(arc.e2.y(), arc.e1.y()) + std::numbers::pi;
+        if (lowest <= 0.0)
+            lowest += kTwoPi;
+        const Hit hit = first_hit(ctx, arc, contacts.data(), count);
+        double phi = std::min(hit.phi, lowest);
+        // Does a support force vanish on the way? Then stop where it does.
+        const auto forces_at = [&](double angle) {
+            const Vec3 q = arc.at(angle);
+            return two_forces((q - cj).normalized(), (q - ck).normalized());
+        };
+        const auto end_forces = forces_at(phi);
+        bool leaves = false;
+        if (end_forces[0] < 0.0 || end_forces[1] < 0.0) {
+            double lo = 0.0;
+            double hi = phi;
+            for (int i = 0; i < 60; ++i) {
+                const double mid = 0.5 * (lo + hi);
+                const auto f = forces_at(mid);
+                (f[0] < 0.0 || f[1] < 0.0 ? hi : lo) = mid;
             }
-            Vec3 t = nj.cross(nk).normalized();
-            if (t.y() > 0.0)
-                t = -t;
-            if (t.y() > -1e-12)
-                return RollResult{p, RollEnd::Stable};  // lowest point
-            // The circle where both contact spheres meet.
-            const Vec3 axis = ck - cj;
-            const double L = axis.norm();
-            const double Dj = r + contacts[0].r;
-            const double Dk = r + contacts[1].r;
-            const double along = (Dj * Dj - Dk * Dk + L * L) / (2.0 * L);
-            const Vec3 m = cj + along * axis / L;
-            const Vec3 radial = p - m;
-            const Arc arc{m, radial.norm(), radial.normalized(), t};
-            double lowest = std::atan2(arc.e2.y(), arc.e1.y()) + std::numbers::pi;
-            if (lowest <= 0.0)
-                lowest += kTwoPi;
-            const Hit hit = first_hit(ctx, arc, contacts.data(), count);
-            double phi = std::min(hit.phi, lowest);
-            // Does a support force vanish on the way? Then stop where it does.
-            const auto forces_at = [&](double angle) {
-                const Vec3 q = arc.at(angle);
-                return two_forces((q - cj).normalized(), (q - ck).normalized());
-            };
-            const auto end_forces = forces_at(phi);
-            bool leaves = false;
-            if (end_forces[0] < 0.0 || end_forces[1] < 0.0) {
-                double lo = 0.0;
-                double hi = phi;
-                for (int i = 0; i < 60; ++i) {
-                    const double mid = 0.5 * (lo + hi);
-                    const auto f = forces_at(mid);
-                    (f[0] < 0.0 || f[1] < 0.0 ? hi : lo) = mid;
-                }
-                phi = lo;
-                leaves = true;
-            }
-            const Vec3 next = arc.at(phi);
-            if (!clear_at(ctx, next))
-                return RollResult{p, RollEnd::Stopped};
-            p = next;
-            if (leaves) {
-                drop_contact(end_forces[0] < end_forces[1] ? 0 : 1);
-            } else if (hit.phi > lowest) {
-                return RollResult{p, RollEnd::Stable};
-            } else if (const auto end = meet(hit)) {
-                return *end;
-            }
-            continue;
+            phi = hi;  // just past the point where the force vanishes
+            leaves = true;
         }
-        // Three supports: stable when gravity is balanced by compressive forces only.
-        Eigen::Matrix3d normals;
-        for (int i = 0; i < 3; ++i)
-            normals.col(i) = (p - centre(contacts[i])).normalized();
-        const Vec3 force = normals.colPivHouseholderQr().solve(kUp);
-        if (!force.allFinite() || (normals * force - kUp).norm() > 1e-9) {
+        const Vec3 next = arc.at(phi);
+        if (!clear_at(ctx, next))
             return RollResult{p, RollEnd::Stopped};
+        p = next;
+        if (!leaves && hit.phi <= lowest) {
+            if (const auto end = meet(hit))
+                return *end;
         }
-        if (force.minCoeff() >= -1e-12)
-            return RollResult{p, RollEnd::Stable};
-        int weakest = 0;
-        force.minCoeff(&weakest);
-        drop_contact(weakest);
     }
     return RollResult{p, RollEnd::Stopped};
 }

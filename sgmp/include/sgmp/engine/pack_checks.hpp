@@ -25,4 +25,27 @@ struct PackCheck {
 PackCheck check_pack(const std::vector<Particle>& particles, const Container& container,
                      double overlap_tolerance, double support_tolerance);
 
+/// The promise of the rolling contact model (`--contact roll`, exact fall): every sphere
+/// rests on the floor or a wall (gap ≤ contact_tolerance), or on spheres placed before it
+/// (lower id; surface gap ≤ contact_tolerance) whose unit contact normals
+/// n_k = (c_i − c_k)/|c_i − c_k| hold it in frictionless equilibrium under gravity: the
+/// upward unit vector is a non-negative combination ŷ = Σ λ_k n_k of three of them, each
+/// λ_k ≥ −force_tolerance (a 3×3 solve per triple of supports).
+///
+/// Two supports are not enough: a compressive pair balances gravity only when the centre
+/// is at the top of the circle where both spheres meet (ŷ in the plane of the normals and
+/// between them), and there any displacement along that circle lowers the sphere — an
+/// unstable rest that the roll leaves. (The bottom of the circle needs a pulling support.)
+struct RestCheck {
+    /// Spheres not resting as above.
+    std::size_t unrested = 0;
+    /// Of these, the ones touching fewer than three earlier spheres.
+    std::size_t fewer_than_three = 0;
+    /// Index (into `particles`) of the first unrested sphere, or particles.size().
+    std::size_t first = 0;
+};
+
+RestCheck check_rolled_rest(const std::vector<Particle>& particles, const Container& container,
+                            double contact_tolerance, double force_tolerance);
+
 }  // namespace sgmp::engine

@@ -303,6 +303,9 @@ Json crossval_json(const CrossValidation& cv) {
     for (const auto& row : cv.rows) {
         Json against = Json::array();
         for (const auto& v : row.against) {
+            if (v.rows.empty()) {
+                continue;  // not compared at this count
+            }
             Json metrics = Json::object();
             for (const auto& m : v.rows) {
                 metrics[m.name] = {{"verdict", to_string(m.verdict)},

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 #include <stdexcept>
 
@@ -203,13 +204,35 @@ Comparison compare_at(const Group& candidate, const Group& reference, const Grou
     return c;
 }
 
+/// Per metric, whether every other class at `count` differs from class `self` by the rule
+/// with `self` as reference (the power of the metric there; see the header).
+std::vector<bool> power_of(const Report& report, std::size_t self, std::size_t count,
+                           const std::vector<double>& model) {
+    const auto& rules = metric_rules();
+    const auto reference = packs_of(report.groups[self], count);
+    std::vector<bool> told_apart(rules.size(), true);
+    for (const std::size_t other : report.plan.classes) {
+        const auto others = packs_of(report.groups[other], count);
+        if (other == self || others.empty()) {
+            continue;
+        }
+        for (std::size_t m = 0; m < rules.size(); ++m) {
+            const MetricRow row =
+                judge(rules[m], others, reference, model.empty() ? 0.0 : model[m]);
+            told_apart[m] = told_apart[m] && row.verdict == Verdict::Differ;
+        }
+    }
+    return told_apart;
+}
+
 /// Marks rows inconclusive where the reference classes cannot be told apart (see header).
+/// The class-against-class judgements are made once per (class, count), not per candidate.
 void apply_power(Report& report, const std::vector<std::vector<double>>& model_by_group) {
     const auto& classes = report.plan.classes;
     if (classes.size() < 2) {
         return;
     }
-    const auto& rules = metric_rules();
+    std::map<std::pair<std::size_t, std::size_t>, std::vector<bool>> power;
     for (auto& c : report.comparisons) {
         const auto self = std::find_if(classes.begin(), classes.end(), [&](std::size_t g) {
             return report.groups[g].label == c.reference;
@@ -217,25 +240,16 @@ void apply_power(Report& report, const std::vector<std::vector<double>>& model_b
         if (self == classes.end()) {
             continue;
         }
-        const auto reference = packs_of(report.groups[*self], c.count);
-        for (std::size_t m = 0; m < rules.size(); ++m) {
-            bool told_apart = true;
-            for (const std::size_t other : classes) {
-                if (other == *self) {
-                    continue;
-                }
-                const auto others = packs_of(report.groups[other], c.count);
-                if (others.empty()) {
-                    continue;
-                }
-                const auto& model = model_by_group[*self];
-                const MetricRow row =
-                    judge(rules[m], others, reference, model.empty() ? 0.0 : model[m]);
-                told_apart = told_apart && row.verdict == Verdict::Differ;
-            }
+        const auto key = std::pair{*self, c.count};
+        auto found = power.find(key);
+        if (found == power.end()) {
+            found =
+                power.emplace(key, power_of(report, *self, c.count, model_by_group[*self])).first;
+        }
+        for (std::size_t m = 0; m < c.rows.size(); ++m) {
             MetricRow& row = c.rows[m];
-            row.power = told_apart;
-            if (!told_apart && row.verdict != Verdict::Info) {
+            row.power = found->second[m];
+            if (!row.power && row.verdict != Verdict::Info) {
                 row.verdict = Verdict::Inconclusive;
             }
         }

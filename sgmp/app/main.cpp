@@ -134,7 +134,8 @@ void add_relax(CLI::App& app, Options& o) {
     app.add_option("--relax", o.relax,
                    "after deposition: none | frictionless (relax the whole pack under gravity "
                    "to an equilibrium of frictionless soft spheres by FIRE energy "
-                   "minimisation, then finish it as hard spheres)")
+                   "minimisation, then finish it as hard spheres) | frictional (the same "
+                   "with Coulomb friction: tangential springs capped at mu*F_n)")
         ->capture_default_str();
     app.add_option("--relax-stiffness", r.stiffness,
                    "contact stiffness k of the first relaxation stage in m*g/d (a contact "
@@ -161,6 +162,12 @@ void add_relax(CLI::App& app, Options& o) {
                    "bound on each later stage's steps, in units of H/d (the elastic relaxation "
                    "crosses the pack's height); the pack records the force left "
                    "(relax_force_max)")
+        ->capture_default_str();
+    app.add_option("--relax-friction", r.friction,
+                   "sliding friction mu of --relax frictional (pairs and walls), in [0, 10]")
+        ->capture_default_str();
+    app.add_option("--relax-tangential-ratio", r.tangential_ratio,
+                   "tangential over normal contact stiffness of --relax frictional, in (0, 1]")
         ->capture_default_str();
 }
 
@@ -213,7 +220,7 @@ PackRequest to_request(const Options& o) {
     p.max_moves = o.max_moves;
     request.relax = o.relax_params;
     request.relax.mode =
-        parse_choice(parse_relax_mode(o.relax), "relax", o.relax, "none, frictionless");
+        parse_choice(parse_relax_mode(o.relax), "relax", o.relax, "none, frictionless, frictional");
     if (const auto error = validate(request)) {
         throw UsageError{*error};
     }

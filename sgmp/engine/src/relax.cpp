@@ -6,6 +6,8 @@
 #include <limits>
 #include <numeric>
 
+#include "friction.hpp"
+#include "relax_state.hpp"
 #include "sgmp/engine/hard_sphere_finish.hpp"
 #include "sgmp/engine/neighbour_list.hpp"
 
@@ -35,31 +37,6 @@ constexpr long kClearBound = 8;
 constexpr long kMinStageSteps = 500;
 /// Verlet skin over the smallest diameter.
 constexpr double kSkinOverDmin = 0.25;
-
-struct Triple {
-    double x = 0.0;
-    double y = 0.0;
-    double z = 0.0;
-};
-
-/// The soft pack being minimised, in an internal order that keeps neighbours close in memory.
-struct State {
-    std::vector<Ball> spheres;
-    std::vector<Triple> v;              ///< velocities
-    std::vector<Triple> f;              ///< net forces
-    std::vector<double> weight;         ///< m·g of each sphere, in units of the reference m·g
-    std::vector<float> x0, y0, z0;      ///< positions when the neighbour list was built
-    std::vector<std::size_t> particle;  ///< index in the caller's vector
-    NeighbourList neighbours;
-    double skin = 0.0;
-};
-
-/// Sums over the spheres after a force evaluation.
-struct ForceSums {
-    double power = 0.0;            ///< P = Σ F·v
-    double force_squared = 0.0;    ///< |F|² of the whole pack
-    double largest_squared = 0.0;  ///< max |Fᵢ|²
-};
 
 State make_state(const std::vector<Particle>& particles, double diameter, double shell) {
     const std::size_t n = particles.size();
@@ -97,7 +74,13 @@ State make_state(const std::vector<Particle>& particles, double diameter, double
 }
 
 void rebuild_neighbours(State& s) {
+    if (s.frictional) {
+        std::swap(s.previous, s.neighbours);
+    }
     s.neighbours.build(s.spheres, s.skin);
+    if (s.frictional) {
+        carry_springs(s);
+    }
     for (std::size_t i = 0; i < s.spheres.size(); ++i) {
         s.x0[i] = static_cast<float>(s.spheres[i].x);
         s.y0[i] = static_cast<float>(s.spheres[i].y);
@@ -108,6 +91,19 @@ void rebuild_neighbours(State& s) {
 /// Magnitude of the force of a wall or the floor on a sphere crossing it by `penetration`.
 inline double wall_force(double penetration, double k) {
     return penetration > 0.0 ? k * penetration : 0.0;
+}
+
+/// Adds the rolling degrees of freedom to the sums (per sphere |Fᵢ|² + |Gᵢ|²).
+void add_rolling_sums(const State& s, ForceSums& sums) {
+    sums.largest_squared = 0.0;
+    for (std::size_t i = 0; i < s.spheres.size(); ++i) {
+        const Triple &f = s.f[i], &g = s.g[i], &w = s.w[i];
+        const double g2 = g.x * g.x + g.y * g.y + g.z * g.z;
+        sums.force_squared += g2;
+        sums.largest_squared =
+            std::max(sums.largest_squared, f.x * f.x + f.y * f.y + f.z * f.z + g2);
+        sums.power += g.x * w.x + g.y * w.y + g.z * w.z;
+    }
 }
 
 /// F = −∇E at the present positions (k in m·g per length unit), and the sums FIRE needs.
@@ -142,6 +138,9 @@ ForceSums compute_forces(State& s, const Container& box, double k) {
         s.f[i].y += fyi;
         s.f[i].z += fzi;
     }
+    if (s.frictional) {
+        add_tangential_forces(s, box, k);
+    }
     ForceSums sums;
     for (std::size_t i = 0; i < n; ++i) {
         const double r = p[i].r;
@@ -152,6 +151,9 @@ ForceSums compute_forces(State& s, const Container& box, double k) {
         sums.force_squared += f2;
         sums.largest_squared = std::max(sums.largest_squared, f2);
         sums.power += s.f[i].x * s.v[i].x + s.f[i].y * s.v[i].y + s.f[i].z * s.v[i].z;
+    }
+    if (s.frictional) {
+        add_rolling_sums(s, sums);
     }
     return sums;
 }
@@ -166,12 +168,23 @@ void kick_and_mix(State& s, double dt, double alpha, double force_squared) {
         s.v[i].z += dt * s.f[i].z;
         v2 += s.v[i].x * s.v[i].x + s.v[i].y * s.v[i].y + s.v[i].z * s.v[i].z;
     }
+    for (std::size_t i = 0; i < s.w.size(); ++i) {  // rolling (frictional only)
+        s.w[i].x += dt * s.g[i].x;
+        s.w[i].y += dt * s.g[i].y;
+        s.w[i].z += dt * s.g[i].z;
+        v2 += s.w[i].x * s.w[i].x + s.w[i].y * s.w[i].y + s.w[i].z * s.w[i].z;
+    }
     const double keep = 1.0 - alpha;
     const double steer = force_squared > 0.0 ? alpha * std::sqrt(v2 / force_squared) : 0.0;
     for (std::size_t i = 0; i < n; ++i) {
         s.v[i].x = keep * s.v[i].x + steer * s.f[i].x;
         s.v[i].y = keep * s.v[i].y + steer * s.f[i].y;
         s.v[i].z = keep * s.v[i].z + steer * s.f[i].z;
+    }
+    for (std::size_t i = 0; i < s.w.size(); ++i) {
+        s.w[i].x = keep * s.w[i].x + steer * s.g[i].x;
+        s.w[i].y = keep * s.w[i].y + steer * s.g[i].y;
+        s.w[i].z = keep * s.w[i].z + steer * s.g[i].z;
     }
 }
 
@@ -186,6 +199,16 @@ void drift(State& s, double step) {
         const double dx = p[i].x - s.x0[i], dy = p[i].y - s.y0[i], dz = p[i].z - s.z0[i];
         largest = std::max(largest, dx * dx + dy * dy + dz * dz);
     }
+    if (s.frictional) {  // the springs need the displacements since the last evaluation
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            s.moved[i].x += step * s.v[i].x;
+            s.moved[i].y += step * s.v[i].y;
+            s.moved[i].z += step * s.v[i].z;
+            s.rolled[i].x += step * s.w[i].x;
+            s.rolled[i].y += step * s.w[i].y;
+            s.rolled[i].z += step * s.w[i].z;
+        }
+    }
     // 1e-6 covers the float rounding of the stored positions (|c| < 10³ ⇒ error < 1e-4·skin).
     if (2.0 * std::sqrt(largest) + 1e-6 * s.skin >= s.skin) {
         rebuild_neighbours(s);
@@ -194,6 +217,7 @@ void drift(State& s, double step) {
 
 void stop(State& s) {
     std::fill(s.v.begin(), s.v.end(), Triple{});
+    std::fill(s.w.begin(), s.w.end(), Triple{});
 }
 
 struct StageResult {
@@ -305,6 +329,9 @@ double quench(State& s, const Container& box, double k, int steps) {
     for (int step = 0; step < steps; ++step) {
         sums = compute_forces(s, box, k);
         s.v = s.f;
+        if (s.frictional) {
+            s.w = s.g;
+        }
         drift(s, rate);
     }
     stop(s);
@@ -317,6 +344,9 @@ void relax_soft(std::vector<Particle>& particles, const Container& container,
                 const RelaxParams& params, double diameter, RelaxStats& stats) {
     State s = make_state(particles, diameter, params.shell);
     rebuild_neighbours(s);
+    if (params.mode == RelaxMode::Frictional) {
+        enable_friction(s, params.tangential_ratio, params.friction);
+    }
     double height = 0.0;
     double d_min = INFINITY;
     for (const Particle& p : particles) {
@@ -338,6 +368,9 @@ void relax_soft(std::vector<Particle>& particles, const Container& container,
         stats.stages_converged += r.converged ? 1 : 0;
         stats.force_max = r.force_max;
         stiffness *= params.stiffness_factor;
+        if (s.frictional) {  // the next stage keeps the tangential forces k_t·ξ
+            scale_springs(s, 1.0 / params.stiffness_factor);
+        }
     }
     if (stats.stages_converged < params.stages) {
         stats.force_max =

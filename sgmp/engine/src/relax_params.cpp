@@ -41,11 +41,26 @@ std::optional<std::string> validate(const RelaxParams& p) {
     if (!(p.crossings > 0.0) || !(p.crossings <= 1e4)) {
         return option_error("relax-crossings", format_number(p.crossings), "must be in (0, 10000]");
     }
+    if (!(p.friction >= 0.0) || !(p.friction <= 10.0)) {
+        return option_error("relax-friction", format_number(p.friction), "must be in [0, 10]");
+    }
+    if (!(p.tangential_ratio > 0.0) || !(p.tangential_ratio <= 1.0)) {
+        return option_error("relax-tangential-ratio", format_number(p.tangential_ratio),
+                            "must be in (0, 1]");
+    }
     return std::nullopt;
 }
 
 std::string_view to_string(RelaxMode mode) {
-    return mode == RelaxMode::None ? "none" : "frictionless";
+    switch (mode) {
+        case RelaxMode::None:
+            return "none";
+        case RelaxMode::Frictionless:
+            return "frictionless";
+        case RelaxMode::Frictional:
+            return "frictional";
+    }
+    return "none";
 }
 
 std::optional<RelaxMode> parse_relax_mode(std::string_view text) {
@@ -53,6 +68,8 @@ std::optional<RelaxMode> parse_relax_mode(std::string_view text) {
         return RelaxMode::None;
     if (text == "frictionless")
         return RelaxMode::Frictionless;
+    if (text == "frictional")
+        return RelaxMode::Frictional;
     return std::nullopt;
 }
 
@@ -68,6 +85,10 @@ void record(const RelaxParams& p, Metadata& m) {
     m.set_number("relax_force_tolerance", p.force_tolerance);
     m.set_number("relax_time", p.time);
     m.set_number("relax_crossings", p.crossings);
+    if (p.mode == RelaxMode::Frictional) {
+        m.set_number("relax_friction", p.friction);
+        m.set_number("relax_tangential_ratio", p.tangential_ratio);
+    }
 }
 
 }  // namespace sgmp::engine

@@ -31,6 +31,8 @@ class NeighbourList {
         return {neighbours_.data() + offsets_[i], neighbours_.data() + offsets_[i + 1]};
     }
     [[nodiscard]] std::size_t pairs() const { return neighbours_.size(); }
+    /// Position of i's first neighbour in the list of all pairs (the pairs are stored i by i).
+    [[nodiscard]] std::size_t first_slot(std::size_t i) const { return offsets_[i]; }
 
   private:
     std::vector<std::uint32_t> offsets_;

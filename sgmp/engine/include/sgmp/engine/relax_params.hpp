@@ -18,6 +18,9 @@ enum class RelaxMode {
     /// The whole pack relaxes under gravity to a mechanical equilibrium of frictionless
     /// spheres in the container (relax.hpp), then is finished as hard spheres.
     Frictionless,
+    /// The same relaxation with Coulomb friction at every contact (relax.hpp, friction.hpp):
+    /// Cundall–Strack tangential springs capped at |F_t| ≤ μ·F_n, spheres free to turn.
+    Frictional,
 };
 
 struct RelaxParams {
@@ -45,6 +48,13 @@ struct RelaxParams {
     /// proportional to the pack's height in diameters. A stage reaching its bound ends
     /// unconverged (the pack records the force left, `relax_force_max`).
     double crossings = 40.0;
+    /// Sliding friction μ of the frictional relaxation (pairs, walls and floor alike); the
+    /// DEM frictional class pours with μ = 0.5. Unused by the frictionless one.
+    double friction = 0.5;
+    /// Tangential over normal stiffness k_t/k of the frictional relaxation. 2/7 makes the
+    /// tangential oscillation of a contact as fast as the normal one for a solid sphere
+    /// (I = 2/5·m·r²), the usual choice of linear-spring DEM.
+    double tangential_ratio = 2.0 / 7.0;
 };
 
 /// One-line error naming the option, the value and the rule; nullopt when valid.

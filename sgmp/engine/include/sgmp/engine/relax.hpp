@@ -47,6 +47,11 @@
 /// touching to within 3·10⁻⁴·d, well inside the 10⁻³·d of Z(10⁻³)); deeper ones are removed
 /// by the hard-sphere finish (hard_sphere_finish.hpp).
 ///
+/// Frictional (`--relax frictional`): the same, with a Coulomb-limited tangential spring at
+/// every contact and three rolling degrees of freedom per sphere in the FIRE vectors
+/// (src/friction.hpp); each new stage divides the springs by the stiffness factor, so the
+/// tangential forces carry over.
+///
 /// Everything runs in a fixed order on one thread, so the same pack gives the same bytes.
 #include <cstddef>
 #include <vector>

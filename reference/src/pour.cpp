@@ -11,14 +11,15 @@
 #include <fstream>
 #include <limits>
 
+#include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/child_process.hpp"
 #include "sgmp/pack/colour_bins.hpp"
+#include "sgmp/pack/executables.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/pack/pack_overlaps.hpp"
 #include "sgmp/pack/sphere_box_volume.hpp"
 #include "sgmp/pack/version.hpp"
-#include "sgmp/reference/child_process.hpp"
-#include "sgmp/reference/executables.hpp"
 #include "sgmp/reference/input_script.hpp"
 #include "sgmp/reference/start_jitter.hpp"
 
@@ -92,12 +93,12 @@ class WorkDirectory {
     bool temporary_ = false;
 };
 
+/// The pack library's plain write, failing as a PourError.
 void write_text(const fs::path& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    out.close();
-    if (!out) {
-        throw PourError("cannot write " + path.string());
+    try {
+        write_text_file(path, text);
+    } catch (const std::runtime_error& e) {
+        throw PourError(e.what());
     }
 }
 

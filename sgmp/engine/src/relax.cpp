@@ -29,8 +29,7 @@ constexpr double kFinishToleranceOverD = 1e-10;
 /// Steepest-descent steps after a last stage that did not converge.
 constexpr int kQuenchSteps = 200;
 /// The last stage goes on past its bound in rounds of this many steps while a real sphere
-/// overlaps by more than the shell's width (shell·d_min), up to kClearBound times the steps
-/// it had taken.
+/// overlaps, up to kClearBound times the steps it had taken.
 constexpr long kClearRound = 100;
 constexpr long kClearBound = 8;
 /// Fewest steps a later stage may take (a small pack crosses its height in a few steps, but
@@ -308,12 +307,9 @@ StageResult run_stage(State& s, const Container& box, double k, const RelaxParam
     run(bound.steps);
     const long clear_bound = kClearBound * std::max(fire.steps, 1L);
     const double real = 1.0 / (1.0 + params.shell);
-    // Real overlaps up to the shell's width are left to the finish, which pushes each out by
-    // its depth (going on for them took up to 8× the stage's steps and left overlaps as deep).
-    const double clear_depth = params.shell * s.skin / kSkinOverDmin;
     bound.time = INFINITY;
     while (until_clear && sums.largest_squared > tolerance_squared && fire.steps < clear_bound &&
-           deepest_overlap(s, box, real) > clear_depth) {
+           deepest_overlap(s, box, real) > 0.0) {
         run(fire.steps + kClearRound);
     }
     StageResult result;

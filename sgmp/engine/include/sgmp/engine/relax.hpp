@@ -34,10 +34,8 @@
 /// elastic relaxation across the pack's height, so they are bounded by `crossings`·H/d_min
 /// steps (at least 500), whatever k. The last stage goes on past its bound, in rounds of 100
 /// steps up to 8 times the steps it took, while a real sphere still overlaps another or a
-/// wall by more than the shell's width s·d_min (shallower overlaps are left to the finish,
-/// which pushes each out by its depth). When it ends unconverged, 200 steps of steepest descent c
-/// += (0.05/k)·F settle the stiff contact modes (overlaps of spheres still moving) without moving
-/// the slow modes.
+/// wall. When it ends unconverged, 200 steps of steepest descent c += (0.05/k)·F settle the
+/// stiff contact modes (overlaps of spheres still moving) without moving the slow modes.
 ///
 /// Frictionless packs under gravity creep (reference/README.md: a μ = 0 DEM pour takes 7×
 /// the steps of a μ = 0.01 one), so the default bounds, chosen for speed, usually end the

@@ -96,7 +96,7 @@ BOOST_AUTO_TEST_CASE(bad_values_are_refused_with_option_value_and_rule) {
 BOOST_AUTO_TEST_CASE(bad_relaxation_values_are_refused_with_option_value_and_rule) {
     const Scratch s;
     expect_refused(s, "--count 100 --relax soft",
-                   "--relax soft: must be one of none, frictionless");
+                   "--relax soft: must be one of none, frictionless, frictional");
     expect_refused(s, "--count 100 --relax frictionless --relax-stiffness 1",
                    "--relax-stiffness 1: must be in [100, 1e12]");
     expect_refused(s, "--count 100 --relax frictionless --relax-stages 11",
@@ -107,6 +107,10 @@ BOOST_AUTO_TEST_CASE(bad_relaxation_values_are_refused_with_option_value_and_rul
                    "--relax-time 0: must be in (0, 10000]");
     expect_refused(s, "--count 100 --relax frictionless --relax-crossings -1",
                    "--relax-crossings -1: must be in (0, 10000]");
+    expect_refused(s, "--count 100 --relax frictional --relax-friction -1",
+                   "--relax-friction -1: must be in [0, 10]");
+    expect_refused(s, "--count 100 --relax frictional --relax-tangential-ratio 2",
+                   "--relax-tangential-ratio 2: must be in (0, 1]");
 }
 
 BOOST_AUTO_TEST_CASE(relax_none_writes_the_bytes_of_no_relaxation_and_relaxed_packs_repeat) {

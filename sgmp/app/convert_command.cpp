@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/option_rules.hpp"
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/pack/pack_format.hpp"
@@ -45,7 +45,8 @@ PackFormat output_format(const ConvertOptions& o) {
     if (!format) {
         throw UsageError{"OUT '" + o.out +
                          "': the format cannot be told from the name; name it with --to (" +
-                         pack_format_choices() + ") or end the name in .xyz, .xyz.gz, .data, "
+                         pack_format_choices() +
+                         ") or end the name in .xyz, .xyz.gz, .data, "
                          ".dump or .vtk"};
     }
     return *format;
@@ -64,7 +65,7 @@ void warn_on_precision(const PackRead& read) {
         return;
     }
     std::fprintf(stderr,
-                 "sgmp convert: warning: %zu overlaps of at most %.3g·d come only from the "
+                 "sgmp convert: warning: %zu overlaps of at most %.3g d come only from the "
                  "file's text precision (%d decimals)\n",
                  found.within_precision, found.max_overlap / d, *read.decimals);
 }
@@ -103,8 +104,8 @@ int convert(const ConvertOptions& o) {
     record_provenance(read.pack, o);
     write_pack_as(o.out, read.pack, format, WriteOptions{o.force});
     std::printf("sgmp convert: %zu particles (frame %zu of %zu) from %s -> %s (%s)\n",
-                read.pack.particles.size(), read.frame, read.frames, o.in.c_str(),
-                o.out.c_str(), std::string(to_string(format)).c_str());
+                read.pack.particles.size(), read.frame, read.frames, o.in.c_str(), o.out.c_str(),
+                std::string(to_string(format)).c_str());
     return 0;
 }
 
@@ -117,22 +118,26 @@ CLI::App* register_convert(CLI::App& app) {
         "format: " +
             pack_format_choices() + "; the format comes from OUT's name or --to");
     command->add_option("IN", options.in, "input pack file")->required();
-    command->add_option("OUT", options.out,
-                        "output file: .xyz, .xyz.gz, .data (LAMMPS atom_style sphere), .dump "
-                        "(LAMMPS dump custom), .vtk (legacy VTK; the container goes to "
-                        "OUT-without-.vtk.container.vtk)")
+    command
+        ->add_option("OUT", options.out,
+                     "output file: .xyz, .xyz.gz, .data (LAMMPS atom_style sphere), .dump "
+                     "(LAMMPS dump custom), .vtk (legacy VTK; the container goes to "
+                     "OUT-without-.vtk.container.vtk)")
         ->required();
     command->add_option("--to", options.to, "output format, " + pack_format_choices());
-    command->add_option("--frame", options.frame,
-                        "frame of a multi-frame extended XYZ file, counted from 1 (default: "
-                        "the last)")
+    command
+        ->add_option("--frame", options.frame,
+                     "frame of a multi-frame extended XYZ file, counted from 1 (default: "
+                     "the last)")
         ->check([](const std::string& text) {
-            return seed_rule(text).empty() && text != "0" ? std::string()
-                                                          : std::string("must be a whole number >= 1");
+            return seed_rule(text).empty() && text != "0"
+                       ? std::string()
+                       : std::string("must be a whole number >= 1");
         });
-    command->add_option("--radius", options.radius,
-                        "radius of every particle (control-volume sides), for files without a "
-                        "radius or diameter column; replaces the file's radii otherwise")
+    command
+        ->add_option("--radius", options.radius,
+                     "radius of every particle (control-volume sides), for files without a "
+                     "radius or diameter column; replaces the file's radii otherwise")
         ->check([](const std::string& text) {
             return finite_range_rule(text, 1e-300, 1e300, "(0, 1e300]");
         });

@@ -19,10 +19,9 @@ BOOST_AUTO_TEST_CASE(grid_search_finds_the_pairs_of_the_all_pairs_loop) {
         Random random(seed);
         std::vector<Particle> particles;
         for (int i = 0; i < 300; ++i) {
-            particles.push_back(Particle{i + 1,
-                                         Vec3(random.uniform(-1, 1), random.uniform(-1, 1),
-                                              random.uniform(-1, 1)),
-                                         random.uniform(0.01, 0.08), 0});
+            particles.push_back(Particle{
+                i + 1, Vec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1)),
+                random.uniform(0.01, 0.08), 0});
         }
         const int decimals = static_cast<int>(seed % 4);  // bounds 2.7 down to 0.0027
         std::size_t overlaps = 0;

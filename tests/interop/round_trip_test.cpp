@@ -24,8 +24,8 @@ namespace {
 Pack engine_pack(std::uint64_t seed) {
     engine::PackRequest request;
     request.count = 150 + 10 * seed;
-    request.arrangement = seed % 2 ? engine::Arrangement::LooseRandom
-                                   : engine::Arrangement::LargeDense;
+    request.arrangement =
+        seed % 2 ? engine::Arrangement::LooseRandom : engine::Arrangement::LargeDense;
     request.seed = seed;
     if (seed % 3 == 0) {
         request.size_modes = *engine::parse_size_modes("1:0.7,0.5:0.3");
@@ -101,8 +101,7 @@ BOOST_AUTO_TEST_CASE(every_format_reads_back_bit_identical_with_no_overlap) {
         BOOST_TEST((from_data.metadata.get("seed") == pack.metadata.get("seed")));
         BOOST_TEST((from_data.metadata.get("container") == pack.metadata.get("container")));
         // The same pack gives the same bytes.
-        BOOST_TEST(text_of(write_lammps_data, from_data) ==
-                   text_of(write_lammps_data, [&] {
+        BOOST_TEST(text_of(write_lammps_data, from_data) == text_of(write_lammps_data, [&] {
                        Pack again = pack;
                        again.metadata.set("source_format", "lammps data");
                        return again;

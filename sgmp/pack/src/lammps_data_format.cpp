@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -87,9 +88,10 @@ Particle parse_atom(const std::string& line, const detail::LineReader& reader) {
     const auto hash = line.find('#');
     const auto fields = detail::split_fields(before_comment(line));
     if (fields.size() != 7 && fields.size() != 10) {
-        throw reader.error("expected 'id type diameter density x y z' (and optionally 3 image "
-                           "flags), found " +
-                           std::to_string(fields.size()) + " fields");
+        throw reader.error(
+            "expected 'id type diameter density x y z' (and optionally 3 image "
+            "flags), found " +
+            std::to_string(fields.size()) + " fields");
     }
     Particle p;
     const auto id = detail::parse_integer(fields[0]);
@@ -149,10 +151,12 @@ Pack read_lammps_data(std::istream& in, const std::string& source) {
         }
         const HeaderLine header = split_header(before_comment(text));
         if (header.words == "atoms" && header.numbers.size() == 1) {
-            count = static_cast<std::int64_t>(header.numbers[0]);
-            if (*count < 0 || static_cast<double>(*count) != header.numbers[0]) {
+            const double n = header.numbers[0];
+            // Checked before the cast: a double beyond 2^62 has no int64 to become.
+            if (!(n >= 0.0 && n <= 4.6e18) || n != std::floor(n)) {
                 throw reader.error("the atom count must be a non-negative integer");
             }
+            count = static_cast<std::int64_t>(n);
         }
         for (std::size_t k = 0; k < 3; ++k) {
             if (header.words == bound_words[k] && header.numbers.size() == 2) {
@@ -178,8 +182,8 @@ Pack read_lammps_data(std::istream& in, const std::string& source) {
     detail::ParticleValidator validator;
     while (static_cast<std::int64_t>(pack.particles.size()) < *count) {
         if (!reader.next(line)) {
-            throw reader.error("file ends after " + std::to_string(pack.particles.size()) +
-                               " of " + std::to_string(*count) + " atom lines");
+            throw reader.error("file ends after " + std::to_string(pack.particles.size()) + " of " +
+                               std::to_string(*count) + " atom lines");
         }
         if (detail::is_blank(before_comment(line))) {
             continue;
@@ -188,8 +192,8 @@ Pack read_lammps_data(std::istream& in, const std::string& source) {
         validator.check(pack.particles.back(), reader);
     }
     if (!pack.metadata.contains("container") && bounds[0] && bounds[1] && bounds[2]) {
-        const Container c{bounds[0]->first, bounds[0]->second, bounds[2]->first,
-                          bounds[2]->second, bounds[1]->first};
+        const Container c{bounds[0]->first, bounds[0]->second, bounds[2]->first, bounds[2]->second,
+                          bounds[1]->first};
         pack.metadata.set("container", c.to_string());
     }
     pack.metadata.set("source_format", "lammps data");

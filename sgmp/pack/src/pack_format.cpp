@@ -35,9 +35,13 @@ const FormatName& entry(PackFormat format) {
 
 }  // namespace
 
-std::span<const PackFormat> all_pack_formats() { return kOrder; }
+std::span<const PackFormat> all_pack_formats() {
+    return kOrder;
+}
 
-std::string_view to_string(PackFormat format) { return entry(format).name; }
+std::string_view to_string(PackFormat format) {
+    return entry(format).name;
+}
 
 std::optional<PackFormat> parse_pack_format(std::string_view name) {
     for (const auto& row : kFormats) {
@@ -57,7 +61,9 @@ std::string pack_format_choices() {
     return text;
 }
 
-std::string_view extension_of(PackFormat format) { return entry(format).extension; }
+std::string_view extension_of(PackFormat format) {
+    return entry(format).extension;
+}
 
 std::optional<PackFormat> format_from_extension(const std::filesystem::path& path) {
     const std::string name = path.filename().string();
@@ -65,8 +71,7 @@ std::optional<PackFormat> format_from_extension(const std::filesystem::path& pat
     std::size_t best_length = 0;
     for (const auto& row : kFormats) {
         const auto& ending = row.extension;
-        if (name.size() > ending.size() && name.ends_with(ending) &&
-            ending.size() > best_length) {
+        if (name.size() > ending.size() && name.ends_with(ending) && ending.size() > best_length) {
             best = row.format;
             best_length = ending.size();
         }

@@ -38,8 +38,8 @@ void write_point(std::ostream& out, const Vec3& p) {
 
 void write_vtk_particles(std::ostream& out, const Pack& pack) {
     const std::size_t n = pack.particles.size();
-    write_preamble(out, "sphere pack: " + std::to_string(n) +
-                            " points with radius, id and bin arrays");
+    write_preamble(out,
+                   "sphere pack: " + std::to_string(n) + " points with radius, id and bin arrays");
     out << "POINTS " << n << " double\n";
     for (const auto& p : pack.particles) {
         write_point(out, p.center);

@@ -1,8 +1,8 @@
 #include "sgmp/pack/xyz_format.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cctype>
+#include <cmath>
 #include <stdexcept>
 
 #include "sgmp/pack/pack_extent.hpp"
@@ -29,11 +29,14 @@ void check_value(const std::string& key, const std::string& value) {
 }
 
 bool is_identifier(const std::string& word) {
-    const auto head_ok = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; };
+    const auto head_ok = [](char c) {
+        return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
+    };
     const auto tail_ok = [&](char c) {
         return head_ok(c) || std::isdigit(static_cast<unsigned char>(c)) || c == '-';
     };
-    return !word.empty() && head_ok(word.front()) && std::all_of(word.begin() + 1, word.end(), tail_ok);
+    return !word.empty() && head_ok(word.front()) &&
+           std::all_of(word.begin() + 1, word.end(), tail_ok);
 }
 
 /// `text` in lower case (ASCII), for names compared in any case.
@@ -223,11 +226,11 @@ PackRead read_frame(const std::string& count_line, std::size_t frame, const Read
     const auto fields = detail::split_fields(count_line);
     const auto count = fields.size() == 1 ? detail::parse_integer(fields[0]) : std::nullopt;
     if (!count || *count < 0) {
-        throw reader.error(
-            frame == 1 ? "expected the particle count, found '" + count_line + "'"
-                       : "expected the particle count of frame " + std::to_string(frame) +
-                             " (or the end of the file), found '" + count_line +
-                             "'; are there more particle lines than the frame's count?");
+        throw reader.error(frame == 1
+                               ? "expected the particle count, found '" + count_line + "'"
+                               : "expected the particle count of frame " + std::to_string(frame) +
+                                     " (or the end of the file), found '" + count_line +
+                                     "'; are there more particle lines than the frame's count?");
     }
     std::string line;
     if (!reader.next(line)) {
@@ -257,8 +260,7 @@ PackRead read_frame(const std::string& count_line, std::size_t frame, const Read
             throw reader.error("file ends after " + std::to_string(i) + " of " +
                                std::to_string(*count) + " particle lines");
         }
-        read.pack.particles.push_back(
-            parse_particle(line, *columns, i, options, decimals, reader));
+        read.pack.particles.push_back(parse_particle(line, *columns, i, options, decimals, reader));
         validator.check(read.pack.particles.back(), reader);
     }
     read.decimals = decimals;
@@ -272,9 +274,8 @@ void write_xyz(std::ostream& out, const Pack& pack) {
     const double height = top_of(pack, container) - container.floor;
     out << pack.particles.size() << '\n';
     out << "Properties=" << kProperties << " Lattice=\"" << lattice_text(container, height)
-        << "\" Origin=\"" << format_number(container.x_min) << ' '
-        << format_number(container.floor) << ' ' << format_number(container.z_min)
-        << "\" pbc=\"F F F\"";
+        << "\" Origin=\"" << format_number(container.x_min) << ' ' << format_number(container.floor)
+        << ' ' << format_number(container.z_min) << "\" pbc=\"F F F\"";
     for (const auto& [key, value] : pack.metadata.entries()) {
         if (is_derived_key(key)) {
             continue;
@@ -329,8 +330,9 @@ PackRead read_xyz_lines(LineReader& reader, const ReadOptions& options) {
     } while (reader.next(line));
     if (!chosen) {
         throw InputError(reader.source(), 0,
-                         "frame " + std::to_string(*options.frame) + " does not exist: the file has " +
-                             std::to_string(frames) + " frame(s), counted from 1");
+                         "frame " + std::to_string(*options.frame) +
+                             " does not exist: the file has " + std::to_string(frames) +
+                             " frame(s), counted from 1");
     }
     chosen->frames = frames;
     return std::move(*chosen);

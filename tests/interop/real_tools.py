@@ -177,6 +177,44 @@ def check_csv():
           f"as {text_rows} leading rows of text, so the columns are read as strings")
 
 
+def check_bad_input():
+    """Bad input: one line on stderr naming the value and the rule, the exit code, no file."""
+    def write(name, text):
+        with open(os.path.join(SCRATCH, name), "w") as f:
+            f.write(text)
+
+    def convert(*args):
+        r = subprocess.run([SGMP, "convert", *args], cwd=SCRATCH, capture_output=True,
+                           text=True, encoding="utf-8")
+        return r.returncode, r.stderr.splitlines()
+
+    write("zero.xyz", "1\nProperties=id:I:1:pos:R:3:radius:R:1\n0 0 0 0 0.1\n")
+    write("species.xyz", "2\nProperties=species:S:1:pos:R:3\nAr 0 0 0\nAr 0.5 0 0\n")
+    write("frames.xyz", "1\nProperties=pos:R:3:radius:R:1\n0 0 0 0.1\n" * 2)
+    cases = [
+        (("zero.xyz", "zero.data"), 1,
+         "sgmp convert: format data cannot carry id 0: LAMMPS atom ids must be positive",
+         "zero.data"),
+        (("pack.xyz", "p.out", "--to", "vtp"), 2,
+         "sgmp convert: --to 'vtp': must be one of xyz, xyz.gz, data, dump, vtk", "p.out"),
+        (("species.xyz", "species.data"), 1,
+         "sgmp convert: species.xyz:2: Properties lacks a 'radius' or 'diameter' column; give "
+         "the radius (--radius R)", "species.data"),
+        (("frames.xyz", "frames.dump", "--frame", "3"), 1,
+         "sgmp convert: frames.xyz: frame 3 does not exist: the file has 2 frame(s), counted "
+         "from 1", "frames.dump"),
+        (("pack.xyz", "pack.data"), 2,
+         "sgmp convert: OUT pack.data: exists; pass --force to replace it", None),
+    ]
+    for args, code, message, output in cases:
+        rc, lines = convert(*args)
+        left = output is not None and os.path.exists(os.path.join(SCRATCH, output))
+        check(rc == code and lines == [message] and not left,
+              f"bad input {' '.join(args)}: exit {rc}, {lines}" + (", file left" if left else ""))
+    rc, _ = convert("species.xyz", "species.data", "--radius", "0.2")
+    check(rc == 0, "a species-only file converts with --radius")
+
+
 def main():
     missing = tools_present()
     if missing:
@@ -195,6 +233,7 @@ def main():
     check_vtk(rows)
     check_ase(top)
     check_csv()
+    check_bad_input()
     # The same input gives the same bytes.
     for out in ("pack.data", "pack.dump", "pack.vtk"):
         again = "again." + out.split(".")[1]

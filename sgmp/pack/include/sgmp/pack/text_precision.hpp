@@ -30,8 +30,8 @@ struct PrecisionOverlaps {
     double bound = 0.0;
 };
 
-/// Pairs found with a uniform grid of cells 2·max r wide (each pair tested once, O(N) for
-/// a pack). Compares squared distances as `overlaps` does.
+/// Pairs found by the one overlap search of the pack library (pack_overlaps.hpp), depths
+/// (r_i + r_j) − |c_i − c_j|.
 PrecisionOverlaps precision_overlaps(const std::vector<Particle>& particles, int decimals,
                                      double floor);
 

@@ -121,8 +121,8 @@ CLI::App* register_convert(CLI::App& app) {
     command
         ->add_option("OUT", options.out,
                      "output file: .xyz, .xyz.gz, .data (LAMMPS atom_style sphere), .dump "
-                     "(LAMMPS dump custom), .vtk (legacy VTK; the container goes to "
-                     "OUT-without-.vtk.container.vtk)")
+                     "(LAMMPS dump custom), .vtk (legacy VTK; the container goes beside it: "
+                     "pack.vtk -> pack.container.vtk)")
         ->required();
     command->add_option("--to", options.to, "output format, " + pack_format_choices());
     command

@@ -21,7 +21,8 @@ Pack read_pack_file(const std::filesystem::path& path);
 
 /// The same, with a frame and a radius chosen (read_options.hpp). `options.frame` applies
 /// to extended XYZ only (a dump gives its last complete snapshot; asking another frame of
-/// a dump or data file is an InputError); `options.radius` replaces every radius.
+/// a dump or data file is an InputError); `options.radius` replaces every radius (an
+/// extended XYZ file may then lack a radius column; dump and data files carry one).
 PackRead read_pack_file(const std::filesystem::path& path, const ReadOptions& options);
 
 /// Writes `pack` as extended XYZ (gzip-compressed when the name ends in ".gz"), to a

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "brute_force.hpp"
+#include "refusal.hpp"
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/engine/pack_checks.hpp"
 #include "sgmp/engine/relax.hpp"
@@ -201,12 +202,13 @@ BOOST_AUTO_TEST_CASE(bad_friction_parameters_are_refused_with_the_option_named) 
     request.count = 100;
     request.relax.mode = RelaxMode::Frictional;
     request.relax.friction = -0.1;
-    BOOST_TEST(validate(request).value_or("").find("--relax-friction -0.1: must be in") == 0u);
+    BOOST_TEST(refusal([&] { validate(request); }).find("--relax-friction -0.1: must be in") == 0u);
     request.relax.friction = 0.5;
     request.relax.tangential_ratio = 0.0;
-    BOOST_TEST(validate(request).value_or("").find("--relax-tangential-ratio 0: must be") == 0u);
+    BOOST_TEST(refusal([&] { validate(request); }).find("--relax-tangential-ratio 0: must be") ==
+               0u);
     request.relax.tangential_ratio = 0.4;
-    BOOST_TEST(!validate(request).has_value());
+    BOOST_TEST(refusal([&] { validate(request); }).empty());
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -57,8 +57,9 @@ struct RelaxParams {
     double tangential_ratio = 2.0 / 7.0;
 };
 
-/// One-line error naming the option, the value and the rule; nullopt when valid.
-std::optional<std::string> validate(const RelaxParams& params);
+/// Throws ParameterError (the parameter's header name, its value, the rule) for the
+/// first parameter that breaks its rule.
+void validate(const RelaxParams& params);
 
 std::string_view to_string(RelaxMode mode);
 std::optional<RelaxMode> parse_relax_mode(std::string_view text);

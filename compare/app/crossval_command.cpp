@@ -147,7 +147,7 @@ int run_regress(const RegressOptions& o) {
 
 }  // namespace
 
-std::function<int(const std::string&)> register_crossval(CLI::App& app) {
+CommandRunner register_crossval(CLI::App& app) {
     auto options = std::make_shared<CrossvalOptions>();
     CLI::App* cmd = app.add_subcommand(
         "crossval",
@@ -170,7 +170,7 @@ std::function<int(const std::string&)> register_crossval(CLI::App& app) {
     };
 }
 
-std::function<int(const std::string&)> register_regress(CLI::App& app) {
+CommandRunner register_regress(CLI::App& app) {
     auto options = std::make_shared<RegressOptions>();
     CLI::App* cmd = app.add_subcommand(
         "regress",

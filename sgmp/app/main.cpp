@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "config_file.hpp"
+#include "render_command.hpp"
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/engine/pack_checks.hpp"
 #include "sgmp/pack/atomic_file.hpp"
@@ -345,6 +346,7 @@ int main(int argc, char** argv) {
     arrange->add_option("--config", config_file,
                         "read options from a TOML/INI file of 'option = value' lines; options "
                         "given on the command line win");
+    const auto render = sgmp::app::register_render(app);
     try {
         std::vector<std::string> args(argv + 1, argv + argc);
         args = expand_config(std::move(args));
@@ -360,6 +362,9 @@ int main(int argc, char** argv) {
         return 2;
     }
     install_interrupt_handler("sgmp");
+    if (render.command->parsed()) {
+        return render.run();
+    }
     try {
         return pack->parsed() ? run_pack(pack_options) : run_arrange(arrange_options);
     } catch (const UsageError& e) {

@@ -2,6 +2,7 @@
 // Errors keep the libraries' one-line texts: bad parameters and malformed files raise
 // ValueError, failed reads and writes (an existing file without force=True) OSError.
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <stdexcept>
 
@@ -36,12 +37,13 @@ PYBIND11_MODULE(sgmp, m) {
     bind_making(m);
     bind_measure(m);
     m.def(
-        "read", [](const std::string& path) { return sgmp::read_pack_file(path); }, py::arg("path"),
+        "read", [](const std::filesystem::path& path) { return sgmp::read_pack_file(path); },
+        py::arg("path"),
         "Reads a pack file (extended XYZ or LAMMPS/LIGGGHTS dump custom, .gz transparently). "
         "Raises ValueError (\"file:line: reason\") for malformed files.");
     m.def(
         "write",
-        [](const py::object& pack, const std::string& path, bool force) {
+        [](const py::object& pack, const std::filesystem::path& path, bool force) {
             sgmp::write_pack_file(path, pack_of(pack), force);
         },
         py::arg("pack"), py::arg("path"), py::arg("force") = false,

@@ -105,9 +105,15 @@ int run_crossval(CrossvalOptions& o, const std::string& command) {
     if (o.pictures) {
         const auto choices = choose_pictures(manifest);
         PictureSet set = render_pictures(choices, o.picture_size);
-        context.lead_markdown += pictures_markdown(choices, set);
+        // After the first section (which mode stands in for which class), before the matrix.
+        const auto at = context.lead_markdown.find("\n## Verdict matrix");
+        context.lead_markdown.insert(at == std::string::npos ? context.lead_markdown.size() : at,
+                                     pictures_markdown(choices, set));
         if (!set.made) {
             std::cerr << "sgmp-compare: pictures skipped: " << set.note << "\n";
+        } else {
+            std::cerr << "sgmp-compare: " << set.files.size() << " pictures rendered in "
+                      << set.seconds << " s\n";
         }
         context.extra_files = std::move(set.files);
     }

@@ -92,7 +92,8 @@ BOOST_AUTO_TEST_CASE(crossval_pictures_with_and_without_povray) {
     };
     BOOST_TEST_REQUIRE(crossval("--pictures --picture-size 64 --out cv", "") == 0);
     const std::string md = slurp(dir / "cv" / "report.md");
-    BOOST_TEST(md.find("## Pictures") != std::string::npos);
+    BOOST_TEST(md.find("\n\n## Pictures\n") != std::string::npos);
+    BOOST_TEST(slurp(dir / "cv" / "index.html").find(">Pictures</h2>") != std::string::npos);
     for (const char* file :
          {"pictures/n300-c1-loose-random.png", "pictures/n300-r2-dem-mu-0.5.png"}) {
         const std::string png = slurp(dir / "cv" / file);

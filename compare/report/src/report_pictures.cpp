@@ -152,7 +152,7 @@ PictureSet render_pictures(const std::vector<PictureChoice>& choices, int size) 
 
 std::string pictures_markdown(const std::vector<PictureChoice>& choices, const PictureSet& set) {
     std::ostringstream md;
-    md << "## Pictures\n\n";
+    md << "\n## Pictures\n\n";  // a blank line ends whatever came before
     if (!set.made) {
         md << "No pictures: " << set.note << ".\n\n";
         return md.str();

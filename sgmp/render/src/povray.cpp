@@ -9,9 +9,9 @@
 #include <stdexcept>
 
 #include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/child_process.hpp"
+#include "sgmp/pack/executables.hpp"
 #include "sgmp/pack/interrupt.hpp"
-#include "sgmp/reference/child_process.hpp"
-#include "sgmp/reference/executables.hpp"
 #include "sgmp/render/png_info.hpp"
 
 namespace sgmp::render {
@@ -75,9 +75,9 @@ std::optional<fs::path> find_povray() {
         if (*chosen == '\0') {
             return std::nullopt;
         }
-        return reference::find_executable(chosen);
+        return find_executable(chosen);
     }
-    return reference::find_executable("povray");
+    return find_executable("povray");
 }
 
 std::string povray_missing_note() {
@@ -95,7 +95,7 @@ void render_png(const fs::path& povray, const RenderJob& job) {
             throw std::runtime_error(scratch.path().string() + ": cannot write the scene");
         }
     }
-    reference::ChildOptions options;
+    ChildOptions options;
     options.argv = {povray.string(),
                     "+Iscene.pov",
                     "+Oimage.png",
@@ -116,17 +116,17 @@ void render_png(const fs::path& povray, const RenderJob& job) {
     options.working_directory = scratch.path();
     options.timeout = std::chrono::duration<double>(kTimeoutSeconds);
     std::deque<std::string> lines;
-    const auto result = reference::run_child(options, [&](const std::string& line) {
+    const auto result = run_child(options, [&](const std::string& line) {
         lines.push_back(line);
         if (lines.size() > 40) {
             lines.pop_front();
         }
     });
-    if (result.end == reference::ChildEnd::timed_out) {
+    if (result.end == ChildEnd::timed_out) {
         throw std::runtime_error("povray took longer than " +
                                  std::to_string(static_cast<int>(kTimeoutSeconds)) + " s");
     }
-    if (result.end != reference::ChildEnd::exited || result.exit_code != 0) {
+    if (result.end != ChildEnd::exited || result.exit_code != 0) {
         throw std::runtime_error("povray failed (exit " + std::to_string(result.exit_code) +
                                  "): " + reason(lines));
     }

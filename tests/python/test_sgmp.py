@@ -13,9 +13,11 @@ import pytest
 
 import sgmp
 
-SGMP = os.environ["SGMP_EXECUTABLE"]
-COMPARE = os.environ["SGMP_COMPARE_EXECUTABLE"]
-SOURCE = pathlib.Path(os.environ["SGMP_SOURCE_DIR"])
+# CTest sets these; run by hand (PYTHONPATH=build/sgmp/python /usr/bin/python3 -m pytest
+# tests/python) they default to the source tree holding this file and its build/.
+SOURCE = pathlib.Path(os.environ.get("SGMP_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
+SGMP = os.environ.get("SGMP_EXECUTABLE", SOURCE / "build" / "sgmp" / "sgmp")
+COMPARE = os.environ.get("SGMP_COMPARE_EXECUTABLE", SOURCE / "build" / "compare" / "sgmp-compare")
 
 
 def run(*args):

@@ -5,6 +5,7 @@
 #include "render_command.hpp"
 
 #include <charconv>
+#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <string>

@@ -11,16 +11,15 @@
 #include <string>
 #include <vector>
 
+#include "sgmp/cli/run_main.hpp"
 #include "sgmp/compare/agreement.hpp"
 #include "sgmp/compare/measure.hpp"
 #include "sgmp/pack/pack.hpp"
 
 namespace sgmp::compare::cli {
 
-/// A usage error: exit status 2.
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
+/// A usage error: exit status 2 (sgmp/cli/run_main.hpp).
+using UsageError = ::sgmp::cli::UsageError;
 
 struct CommonOptions {
     std::vector<double> region;
@@ -34,7 +33,7 @@ struct CommonOptions {
 
 /// --out, --force and the measurement options.
 void add_common(CLI::App* command, CommonOptions& o);
-/// Validates the options (UsageError) and checks that --out can be written.
+/// Validates the options (ParameterError) and checks that --out can be written (UsageError).
 void apply(CommonOptions& o);
 /// "sgmp-compare <arguments>", recorded in outputs.
 std::string command_line(int argc, char** argv);

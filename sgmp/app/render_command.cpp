@@ -6,13 +6,14 @@
 
 #include <charconv>
 #include <cstdio>
-#include <iostream>
 #include <memory>
 #include <string>
 
+#include "sgmp/cli/run_main.hpp"
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/pack_file.hpp"
+#include "sgmp/pack/parameter_error.hpp"
 #include "sgmp/pack/version.hpp"
 #include "sgmp/render/povray.hpp"
 #include "sgmp/render/scene.hpp"
@@ -35,9 +36,7 @@ struct RenderOptions {
     bool force = false;
 };
 
-struct UsageError {
-    std::string message;
-};
+using cli::UsageError;
 
 std::optional<std::pair<int, int>> parse_size(const std::string& text) {
     const auto x = text.find('x');
@@ -61,7 +60,7 @@ template <class T>
 T require(std::optional<T> parsed, const std::string& option, const std::string& value,
           const std::string& rule) {
     if (!parsed) {
-        throw UsageError{"--" + option + " " + value + ": " + rule};
+        throw ParameterError(option, value, rule);
     }
     return *parsed;
 }
@@ -105,13 +104,13 @@ int run(const RenderOptions& o) {
     const render::SceneOptions s = scene_options(o);
     const auto povray = render::find_povray();
     if (!povray) {
-        std::cerr << "sgmp: povray was not found on PATH (install the Debian package povray)\n";
-        return 1;
+        throw std::runtime_error(
+            "povray was not found on PATH (install the Debian package povray)");
     }
     try {
         check_writable(o.out, o.force);
     } catch (const std::runtime_error& e) {
-        throw UsageError{std::string("--out ") + e.what()};
+        throw UsageError(std::string("--out ") + e.what());
     }
     const Pack pack = read_pack_file(o.pack);
     if (pack.particles.empty()) {
@@ -171,17 +170,8 @@ RenderCommand register_render(CLI::App& app) {
     cmd->add_option("--threads", o->threads, "POV-Ray render threads (0: all cores)")
         ->check(CLI::Range(0, 256))
         ->capture_default_str();
-    auto run_command = [o]() -> int {
-        try {
-            return run(*o);
-        } catch (const UsageError& e) {
-            std::cerr << "sgmp: " << printable(e.message) << "\n";
-            return 2;
-        } catch (const std::exception& e) {
-            std::cerr << "sgmp: " << printable(e.what()) << "\n";
-            return 1;
-        }
-    };
+    // Errors go to cli::run_main: usage errors exit 2, anything else 1, one line each.
+    auto run_command = [o]() -> int { return run(*o); };
     return RenderCommand{cmd, run_command};
 }
 

@@ -8,7 +8,7 @@ namespace sgmp::app {
 
 struct RenderCommand {
     CLI::App* command = nullptr;
-    /// Runs the command when it was chosen; prints its own errors, returns the exit status.
+    /// Runs the command when it was chosen (errors as exceptions, for cli::run_main).
     std::function<int()> run;
 };
 

@@ -104,26 +104,30 @@ def test_measure_equals_sgmp_compare_measure(tmp_path):
 def test_bad_options_raise_value_error_with_the_command_line_text(tmp_path, options, cli, value):
     with pytest.raises(ValueError) as error:
         sgmp.pack(count=100, arrangement="small-dense", seed=1, **options)
-    assert value in str(error.value)
+    # "keyword = value: rule", the keyword as typed in Python.
+    keyword = next(iter(options))
+    assert str(error.value).startswith(f"{keyword} = {value}: ")
+    rule = str(error.value).split(": ", 1)[1]
     r = run(SGMP, "pack", "--count", "100", "--arrangement", "small-dense", "--seed", "1",
             "--out", tmp_path / "x.xyz", *cli)
     assert r.returncode == 2
-    assert r.stderr == f"sgmp: {error.value}\n"
+    # The command line says the same, with the keyword spelt as its option.
+    assert r.stderr == f"sgmp: {cli[0]} {value}: {rule}\n"
     assert not (tmp_path / "x.xyz").exists()
 
 
 def test_other_bad_input():
-    with pytest.raises(ValueError, match="--count 0: must be between 1"):
+    with pytest.raises(ValueError, match="^count = 0: must be between 1"):
         sgmp.pack(count=0, arrangement="small-dense")
-    with pytest.raises(ValueError, match="--arrangement heap"):
+    with pytest.raises(ValueError, match="^arrangement = heap: must be one of"):
         sgmp.pack(count=10, arrangement="heap")
-    with pytest.raises(ValueError, match="--seed -1"):
+    with pytest.raises(ValueError, match="^seed = -1: "):
         sgmp.pack(count=10, arrangement="small-dense", seed=-1)
-    with pytest.raises(ValueError, match="colour_factor: not an option"):
+    with pytest.raises(ValueError, match="^colour_factor: not an option"):
         sgmp.pack(count=10, arrangement="small-dense", colour_factor=2)
-    with pytest.raises(ValueError, match="--circle-factor fifty: must be a number"):
+    with pytest.raises(ValueError, match="^circle_factor = fifty: must be a number"):
         sgmp.pack(count=10, arrangement="small-dense", circle_factor="fifty")
-    with pytest.raises(ValueError, match="--slab"):
+    with pytest.raises(ValueError, match="^slab = -1: must be a positive number"):
         sgmp.measure(sgmp.pack(count=60, arrangement="small-dense"), slab=-1)
 
 

@@ -9,6 +9,7 @@
 #include "sgmp/compare/measure.hpp"
 #include "sgmp/compare/metrics_output.hpp"
 #include "sgmp/compare/parallel.hpp"
+#include "sgmp/pack/parameter_error.hpp"
 
 namespace sgmp::python {
 namespace {
@@ -60,8 +61,8 @@ py::dict measure(const py::object& pack_object, const std::optional<std::vector<
     MeasureOptions o;
     if (region) {
         if (region->size() != 6) {
-            throw std::invalid_argument(
-                "--region: must be six numbers xlo xhi ylo yhi zlo zhi (length units)");
+            throw ParameterError("region", std::to_string(region->size()) + " numbers",
+                                 "must be six numbers xlo xhi ylo yhi zlo zhi (length units)");
         }
         const auto& b = *region;
         o.region = Box{Vec3(b[0], b[2], b[4]), Vec3(b[1], b[3], b[5])};
@@ -70,8 +71,7 @@ py::dict measure(const py::object& pack_object, const std::optional<std::vector<
     o.gr_bin_width = gr_bin;
     o.gr_range = gr_range;
     if (gr_density != "neighbours" && gr_density != "space") {
-        throw std::invalid_argument("--gr-density " + gr_density +
-                                    ": must be one of neighbours, space");
+        throw ParameterError("gr_density", gr_density, "must be one of neighbours, space");
     }
     o.gr_density =
         gr_density == "space" ? compare::RdfDensity::Space : compare::RdfDensity::Neighbours;
@@ -80,8 +80,8 @@ py::dict measure(const py::object& pack_object, const std::optional<std::vector<
     o.q6_cutoff = q6_cutoff;
     o.overlap_floor = overlap_floor;
     if (threads > 256) {
-        throw std::invalid_argument("--threads " + std::to_string(threads) +
-                                    ": must be in [0, 256] (0: all cores)");
+        throw ParameterError("threads", std::to_string(threads),
+                             "must be in [0, 256] (0: all cores)");
     }
     compare::validate(o);
     compare::set_thread_count(threads);

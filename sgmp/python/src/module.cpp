@@ -1,6 +1,7 @@
 // The Python module `sgmp`: pack making, pack files and metrics over the C++ libraries.
-// Errors keep the libraries' one-line texts: bad parameters and malformed files raise
-// ValueError, failed reads and writes (an existing file without force=True) OSError.
+// Errors keep the libraries' one-line texts: bad parameters (ParameterError, "name =
+// value: rule" with the keyword as name) and malformed files raise ValueError, failed
+// reads and writes (an existing file without force=True) OSError.
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 

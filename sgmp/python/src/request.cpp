@@ -1,9 +1,12 @@
-// sgmp.pack(...) and sgmp.arrange(...): keyword arguments named as the command-line
-// options (dashes as underscores) fill an engine PackRequest whose own defaults stand
-// for every option not given; the engine's validate() judges it. Errors are ValueError
-// with the command line's text ("--gap banana: must be one of largest, random").
+// sgmp.pack(...) and sgmp.arrange(...): keyword arguments named as the parameters in pack
+// headers (the command-line options with dashes as underscores) fill an engine
+// PackRequest whose own defaults stand for every option not given; the engine's
+// validate() judges it. Errors are the libraries' ParameterError, raised as ValueError
+// with its one-line text naming the keyword ("gap = banana: must be one of largest,
+// random"; the command line shows the same as "--gap banana: ...").
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <stdexcept>
@@ -12,6 +15,7 @@
 #include "bindings.hpp"
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/pack/option_rules.hpp"
+#include "sgmp/pack/parameter_error.hpp"
 
 namespace sgmp::python {
 namespace {
@@ -22,9 +26,10 @@ std::string shown(const py::handle& value) {
     return py::str(value).cast<std::string>();
 }
 
-std::invalid_argument bad(const std::string& option, const py::handle& value,
-                          const std::string& rule) {
-    return std::invalid_argument("--" + option + " " + shown(value) + ": " + rule);
+/// The engine's error for a parameter: its keyword (the header name), the value, the rule.
+ParameterError bad(std::string option, const py::handle& value, const std::string& rule) {
+    std::replace(option.begin(), option.end(), '-', '_');
+    return ParameterError(option, shown(value), rule);
 }
 
 double number(const py::handle& value, const std::string& option) {
@@ -169,8 +174,8 @@ PackRequest request_of(const py::handle& count, const py::handle& arrangement,
                        const py::handle& seed, const py::kwargs& options) {
     PackRequest request;
     const long long n = integer(count, "count");
-    if (n < 1 || n > static_cast<long long>(engine::kMaxCount)) {
-        throw bad("count", count, "must be between 1 and " + std::to_string(engine::kMaxCount));
+    if (n < 1 || n > static_cast<long long>(sgmp::kMaxCount)) {
+        throw bad("count", count, "must be between 1 and " + std::to_string(sgmp::kMaxCount));
     }
     request.count = static_cast<std::size_t>(n);
     request.arrangement = choice(engine::parse_arrangement(text(arrangement, "arrangement")),
@@ -199,9 +204,7 @@ PackRequest request_of(const py::handle& count, const py::handle& arrangement,
         }
         setter->second(request, value);
     }
-    if (const auto error = engine::validate(request)) {
-        throw std::invalid_argument(*error);
-    }
+    engine::validate(request);  // ParameterError naming the keyword
     return request;
 }
 

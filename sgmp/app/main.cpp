@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "config_file.hpp"
+#include "convert_command.hpp"
 #include "render_command.hpp"
 #include "sgmp/cli/progress_line.hpp"
 #include "sgmp/cli/run_main.hpp"
@@ -318,6 +319,7 @@ int main(int argc, char** argv) {
     arrange->add_option("--config", config_file,
                         "read options from a TOML/INI file of 'option = value' lines; options "
                         "given on the command line win");
+    CLI::App* convert = sgmp::app::register_convert(app);
     const auto render = sgmp::app::register_render(app);
     const auto parse = [&] {
         std::vector<std::string> args(argv + 1, argv + argc);
@@ -327,6 +329,9 @@ int main(int argc, char** argv) {
     };
     return cli::run_main("sgmp", app, parse, [&] {
         install_interrupt_handler("sgmp");
+        if (convert->parsed()) {
+            return sgmp::app::run_convert();
+        }
         if (render.command->parsed()) {
             return render.run();
         }

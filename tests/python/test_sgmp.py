@@ -164,3 +164,30 @@ def test_example_script_runs(tmp_path):
     png = (tmp_path / "g_r.png").read_bytes()
     assert png[:8] == b"\x89PNG\r\n\x1a\n"
     assert len(sgmp.read(tmp_path / "relaxed.xyz")) == 300
+
+
+def test_every_format_through_the_pack_library(tmp_path):
+    p = sgmp.pack(count=200, arrangement="loose-random", seed=3, size_modes="1:0.6,0.7:0.4")
+    for name in ["p.data", "p.dump"]:
+        sgmp.write(p, tmp_path / name)
+        q = sgmp.read(tmp_path / name)
+        order = np.argsort(q.ids)
+        assert np.array_equal(q.ids[order], p.ids)
+        assert np.array_equal(q.positions[order], p.positions), name  # %.17g: exact
+        assert np.array_equal(q.radii[order], p.radii), name
+    sgmp.write(p, tmp_path / "p.vtk")
+    assert (tmp_path / "p.vtk").read_text().startswith("# vtk DataFile")
+    assert (tmp_path / "p.container.vtk").exists()
+    sgmp.write(p, tmp_path / "named", format="dump")
+    assert len(sgmp.read(tmp_path / "named")) == 200
+    with pytest.raises(ValueError, match="^format = pdf: must be one of"):
+        sgmp.write(p, tmp_path / "x.pdf", format="pdf")
+    with pytest.raises(ValueError, match="^path = .*x.pdf: its ending names no format"):
+        sgmp.write(p, tmp_path / "x.pdf")
+    # Multi-frame extended XYZ: frame picks one, radius replaces every radius.
+    one = tmp_path / "p.xyz"
+    sgmp.write(p, one)
+    text = one.read_text()
+    (tmp_path / "two.xyz").write_text(text + text)
+    assert np.array_equal(sgmp.read(tmp_path / "two.xyz", frame=1).positions, p.positions)
+    assert np.all(sgmp.read(tmp_path / "two.xyz", radius=0.01).radii == 0.01)

@@ -1,37 +1,9 @@
 #include "text_fields.hpp"
 
+#include <algorithm>
 #include <charconv>
 
 namespace sgmp::detail {
-
-bool LineReader::next(std::string& line) {
-    if (pushed_) {
-        line = std::move(*pushed_);
-        pushed_.reset();
-        ++line_number_;
-        return true;
-    }
-    if (!std::getline(in_, line)) {
-        if (in_.bad()) {
-            throw InputError(source_, line_number_, "read error");
-        }
-        return false;
-    }
-    if (!line.empty() && line.back() == '\r') {
-        line.pop_back();
-    }
-    ++line_number_;
-    return true;
-}
-
-bool LineReader::at_end() {
-    return !pushed_ && in_.peek() == std::istream::traits_type::eof();
-}
-
-void LineReader::put_back(std::string line) {
-    pushed_ = std::move(line);
-    --line_number_;
-}
 
 std::vector<std::string_view> split_fields(std::string_view line) {
     std::vector<std::string_view> fields;
@@ -103,6 +75,20 @@ void ParticleValidator::check(const Particle& particle, const LineReader& reader
         throw reader.error("id " + std::to_string(particle.id) + " repeats the id of line " +
                            std::to_string(it->second));
     }
+}
+
+int decimals_of(std::string_view field) {
+    const std::size_t e = field.find_first_of("eE");
+    const std::string_view mantissa = field.substr(0, e);
+    const std::size_t dot = mantissa.find('.');
+    int decimals = dot == std::string_view::npos ? 0 : static_cast<int>(mantissa.size() - dot - 1);
+    if (e != std::string_view::npos) {
+        const auto exponent = parse_integer(field.substr(e + 1));
+        if (exponent && *exponent > -400 && *exponent < 400) {
+            decimals -= static_cast<int>(*exponent);
+        }
+    }
+    return std::max(decimals, 0);
 }
 
 }  // namespace sgmp::detail

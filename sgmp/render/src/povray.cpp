@@ -22,36 +22,6 @@ namespace {
 constexpr double kTimeoutSeconds = 900.0;
 
 /// A fresh scratch directory, removed with everything in it when this goes out of scope.
-class Scratch {
-  public:
-    Scratch() {
-        std::string pattern = (fs::temp_directory_path() / "sgmp-render-XXXXXX").string();
-        if (::mkdtemp(pattern.data()) == nullptr) {
-            throw std::runtime_error("cannot create a scratch directory in " +
-                                     fs::temp_directory_path().string());
-        }
-        path_ = pattern;
-        guard_.emplace(path_);
-    }
-    ~Scratch() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    Scratch(const Scratch&) = delete;
-    Scratch& operator=(const Scratch&) = delete;
-    [[nodiscard]] const fs::path& path() const { return path_; }
-
-  private:
-    fs::path path_;
-    std::optional<TemporaryGuard> guard_;
-};
-
-std::string slurp(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
-    return bytes.str();
-}
 
 /// POV-Ray's most telling line: the last that mentions an error, else the last non-empty.
 std::string reason(const std::deque<std::string>& lines) {
@@ -87,7 +57,7 @@ std::string povray_missing_note() {
 
 void render_png(const fs::path& povray, const RenderJob& job) {
     check_writable(job.out, job.overwrite);
-    const Scratch scratch;
+    const ScratchDirectory scratch("sgmp-render");
     {
         std::ofstream scene(scratch.path() / "scene.pov", std::ios::binary);
         scene << job.scene;
@@ -130,7 +100,7 @@ void render_png(const fs::path& povray, const RenderJob& job) {
         throw std::runtime_error("povray failed (exit " + std::to_string(result.exit_code) +
                                  "): " + reason(lines));
     }
-    const std::string image = slurp(scratch.path() / "image.png");
+    const std::string image = read_text_file(scratch.path() / "image.png");
     const auto size = png_size(image);
     if (!size || size->width != static_cast<std::uint32_t>(job.width) ||
         size->height != static_cast<std::uint32_t>(job.height)) {

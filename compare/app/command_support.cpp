@@ -46,7 +46,8 @@ void add_common(CLI::App* command, CommonOptions& o) {
                         "overlaps deeper than this x d are counted (default 1e-9)");
     command
         ->add_option("--threads", o.threads,
-                     "worker threads, at most 256 (default all cores; results do not depend on it)")
+                     "worker threads, at most 256 (default: the CPUs the process may use; results "
+                     "do not depend on it)")
         ->check([](const std::string& text) {
             return finite_range_rule(text, 0.0, 256.0, "[0, 256] (0: all cores)");
         });

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "batch_command.hpp"
 #include "config_file.hpp"
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/engine/pack_checks.hpp"
@@ -345,6 +346,7 @@ int main(int argc, char** argv) {
     arrange->add_option("--config", config_file,
                         "read options from a TOML/INI file of 'option = value' lines; options "
                         "given on the command line win");
+    sgmp::app::BatchCommand batch(app);
     try {
         std::vector<std::string> args(argv + 1, argv + argc);
         args = expand_config(std::move(args));
@@ -361,6 +363,9 @@ int main(int argc, char** argv) {
     }
     install_interrupt_handler("sgmp");
     try {
+        if (batch.parsed()) {
+            return batch.run();
+        }
         return pack->parsed() ? run_pack(pack_options) : run_arrange(arrange_options);
     } catch (const UsageError& e) {
         std::cerr << "sgmp: " << printable(e.message) << "\n";

@@ -130,15 +130,16 @@ std::map<std::string, std::string> earlier_seconds(const Settings& s) {
 }
 
 /// The first job output that exists although neither --force nor --skip-existing is given.
-std::string first_existing(const Settings& s, const Plan& plan, const OutPattern* pattern) {
+std::string first_existing(const Settings& s, const Plan& plan, const OutPattern* pattern,
+                           const std::vector<std::size_t>& jobs) {
     if (s.force || s.skip_existing) {
         return {};
     }
     if (fs::exists(s.summary)) {
         return s.summary;
     }
-    for (std::size_t job = 0; pattern != nullptr && job < plan.job_count(); ++job) {
-        const std::string name = pattern->expand(plan, job);
+    for (std::size_t i = 0; pattern != nullptr && i < jobs.size(); ++i) {
+        const std::string name = pattern->expand(plan, jobs[i]);
         if (fs::exists(name)) {
             return name;
         }
@@ -180,11 +181,13 @@ int run_sweep(const Settings& s, const World& world) {
     }
     // Every rank checks the same things and so stops on the same error.
     try {
-        check_writable(s.summary, s.force || s.skip_existing);
+        check_writable(s.summary, true);  // its directory; an existing summary comes next
     } catch (const std::runtime_error& e) {
         throw FileProblem{std::string("--summary ") + e.what()};
     }
-    if (const std::string existing = first_existing(s, plan, pattern ? &*pattern : nullptr);
+    const std::vector<std::size_t> shard_jobs = assigned_jobs(plan.job_count(), shard);
+    if (const std::string existing =
+            first_existing(s, plan, pattern ? &*pattern : nullptr, shard_jobs);
         !existing.empty()) {
         throw FileProblem{existing +
                           ": exists; pass --skip-existing to keep what is there or --force to "

@@ -39,6 +39,7 @@ void add_metrics(SummaryRow& row, const Pack& pack, const JobOptions& options) {
 PackMetrics measure_pack(const Pack& pack, bool voronoi) {
     compare::MeasureOptions options;
     options.voronoi = voronoi;
+    options.gr_range = kSummaryGrRange;
     const compare::Measurement m = compare::measure(pack, options);
     PackMetrics metrics;
     metrics.phi = m.phi;

@@ -165,6 +165,7 @@ std::function<int(const std::string&)> register_crossval(CLI::App& app) {
                     "the thesis' starting-pack CSV (data/thesis/starting_packs.csv) to show "
                     "starting heights beside ours");
     add_common(cmd, options->common);
+    add_precomputed(cmd, options->common);
     return [options, cmd](const std::string& command) {
         return *cmd ? run_crossval(*options, command) : -1;
     };

@@ -139,6 +139,7 @@ int main(int argc, char** argv) {
     report_cmd->add_option("--label-a", label_a, "name of the A side (default A)");
     report_cmd->add_option("--label-b", label_b, "name of the B side (default B)");
     add_common(report_cmd, report_options);
+    add_precomputed(report_cmd, report_options);
 
     const auto crossval = register_crossval(app);
     const auto regress = register_regress(app);

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <string>
 
+#include "launcher_options.hpp"
 #include "settle_command.hpp"
 #include "sgmp/engine/arrangement.hpp"
 #include "sgmp/pack/atomic_file.hpp"
@@ -142,8 +143,8 @@ int main(int argc, char** argv) {
         ->required();
     pour_cmd
         ->add_option("--ranks", p.ranks,
-                     "MPI ranks; above 1 runs 'mpirun -np K' with a "
-                     "processor grid 'K 1 1' (split along x)")
+                     "MPI ranks; above 1 runs LIGGGHTS under --launcher with a processor "
+                     "grid chosen from the container (PY = 1: x and z split, never the fall)")
         ->capture_default_str()
         ->check(CLI::Range(1, 64));
     pour_cmd->add_option("--timeout", timeout, "Wall-clock limit in seconds; 0 means none")
@@ -221,6 +222,7 @@ int main(int argc, char** argv) {
         ->add_option("--phi-target", p.phi_target,
                      "Target packing fraction phi* of the sizing rule")
         ->capture_default_str();
+    add_launcher_options(*pour_cmd, request);
     pour_cmd->add_option("--liggghts", request.liggghts, "LIGGGHTS program (name on PATH or path)")
         ->capture_default_str();
     pour_cmd->add_flag("--quiet", quiet, "No progress on stderr");

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "sgmp/reference/executables.hpp"
+#include "sgmp/pack/executables.hpp"
 
 namespace sgmp::reference {
 namespace fs = std::filesystem;

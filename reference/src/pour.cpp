@@ -11,16 +11,17 @@
 #include <fstream>
 #include <limits>
 
+#include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/child_process.hpp"
+#include "sgmp/pack/colour_bins.hpp"
+#include "sgmp/pack/executables.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/pack_file.hpp"
+#include "sgmp/pack/pack_overlaps.hpp"
 #include "sgmp/pack/sphere_box_volume.hpp"
 #include "sgmp/pack/version.hpp"
-#include "sgmp/reference/child_process.hpp"
-#include "sgmp/reference/colours.hpp"
-#include "sgmp/reference/executables.hpp"
 #include "sgmp/reference/input_script.hpp"
 #include "sgmp/reference/launcher.hpp"
-#include "sgmp/reference/pack_checks.hpp"
 #include "sgmp/reference/start_jitter.hpp"
 
 namespace sgmp::reference {
@@ -93,12 +94,12 @@ class WorkDirectory {
     bool temporary_ = false;
 };
 
+/// The pack library's plain write, failing as a PourError.
 void write_text(const fs::path& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    out.close();
-    if (!out) {
-        throw PourError("cannot write " + path.string());
+    try {
+        write_text_file(path, text);
+    } catch (const std::runtime_error& e) {
+        throw PourError(e.what());
     }
 }
 
@@ -397,8 +398,9 @@ PourResult pour(const PourRequest& request, const PourObserver& observer) {
     result.steps = watch.log.steps;
     result.ke_ratio = watch.log.ke_ratio;
     const double d = p.diameter();
-    result.max_overlap_over_d = pair_overlaps(result.pack).max_overlap / d;
-    result.max_wall_penetration_over_d = max_wall_penetration(result.pack, Container{}) / d;
+    const OverlapCount overlaps = count_overlaps(result.pack.particles, Container{}, 0.0);
+    result.max_overlap_over_d = overlaps.max_pair / d;
+    result.max_wall_penetration_over_d = overlaps.max_wall / d;
     result.phi_control_volume = packing_fraction(result.pack, control_volume());
     check_settled(result);
     if (request.start && request.start->colours.size() == p.count) {
@@ -407,7 +409,10 @@ PourResult pour(const PourRequest& request, const PourObserver& observer) {
         }
     } else {
         Random colour_random(p.seed ^ 0xC01005ULL);  // apart from the LIGGGHTS seeds
-        assign_colours(result.pack.particles, colour_random);
+        const std::vector<int> bins = draw_colours(result.pack.particles.size(), colour_random);
+        for (std::size_t i = 0; i < bins.size(); ++i) {
+            result.pack.particles[i].color = bins[i];
+        }
     }
     record(result.pack.metadata, request, watch.log, result);
     return result;

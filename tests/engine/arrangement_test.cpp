@@ -5,7 +5,6 @@
 
 #include "brute_force.hpp"
 #include "sgmp/engine/arrangement.hpp"
-#include "sgmp/engine/colour_bins.hpp"
 
 using namespace sgmp;
 using namespace sgmp::engine;
@@ -40,26 +39,6 @@ BOOST_AUTO_TEST_CASE(grid_columns_match_the_thesis_tables) {
         BOOST_TEST(grid_columns(Arrangement::SmallDense, d) == small[i]);
         BOOST_TEST(grid_columns(Arrangement::LargeDense, d) == large[i]);
     }
-}
-
-BOOST_AUTO_TEST_CASE(colour_bins_share_the_particles_evenly) {
-    for (const std::size_t n : {1u, 9u, 10u, 1002u}) {
-        Random rng(3);
-        const std::vector<int> colours = draw_colours(n, rng);
-        BOOST_TEST(colours.size() == n);
-        std::array<std::size_t, kColourBins> count{};
-        for (const int c : colours) {
-            BOOST_TEST_REQUIRE((c >= 0 && c < kColourBins));
-            ++count[c];
-        }
-        for (int k = 0; k < kColourBins; ++k) {
-            BOOST_TEST(count[k] == n / 10 + (static_cast<std::size_t>(k) < n % 10 ? 1u : 0u));
-        }
-    }
-    // The order is random: two seeds give different sequences.
-    Random a(1);
-    Random b(2);
-    BOOST_TEST(draw_colours(100, a) != draw_colours(100, b));
 }
 
 BOOST_AUTO_TEST_CASE(single_column_stands_on_the_floor_with_gaps_of_a_fifth_diameter) {

@@ -179,7 +179,7 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
         packing_fraction_profile(particles, m.region, m.container.floor,
                                  std::max(m.top, m.region.hi.y()), options.slab_thickness * d);
     stage_times.phi_profile = watch.lap();
-    m.overlaps = measure_overlaps(particles, index, m.container, d, options.overlap_floor,
+    m.overlaps = measure_overlaps(particles, m.container, d, options.overlap_floor,
                                   options.worst_count);
     stage_times.overlaps = watch.lap();
 

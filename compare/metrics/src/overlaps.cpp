@@ -2,14 +2,10 @@
 
 #include <algorithm>
 
-#include "sgmp/compare/parallel.hpp"
-
-#include <cmath>
+#include "sgmp/pack/pack_overlaps.hpp"
 
 namespace sgmp::compare {
 namespace {
-
-constexpr std::size_t kChunk = 4096;
 
 struct Tally {
     std::int64_t count = 0;
@@ -49,15 +45,6 @@ void add(Tally& tally, const OverlapRecord& record, double floor, std::size_t li
     }
 }
 
-void fold(Tally& total, const Tally& part, std::size_t limit) {
-    total.count += part.count;
-    total.count_any += part.count_any;
-    total.sum += part.sum;
-    total.max = std::max(total.max, part.max);
-    total.worst.insert(total.worst.end(), part.worst.begin(), part.worst.end());
-    keep_worst(total.worst, limit);
-}
-
 OverlapSummary summarise(Tally tally, std::size_t limit) {
     keep_worst(tally.worst, limit);
     OverlapSummary summary;
@@ -71,55 +58,26 @@ OverlapSummary summarise(Tally tally, std::size_t limit) {
 
 }  // namespace
 
-OverlapStats measure_overlaps(const std::vector<Particle>& particles, const NeighbourIndex& index,
-                              const Container& container, double mean_diameter, double floor,
-                              std::size_t worst_count) {
-    double max_radius = 0.0;
-    for (const Particle& p : particles) {
-        max_radius = std::max(max_radius, p.radius);
-    }
-    struct Both {
-        Tally pairs;
-        Tally walls;
-    };
-    // One query per particle, in index order (measure() orders particles along a Morton
-    // curve, which keeps consecutive queries in cache).
-    const double reach = 2.0 * max_radius;
-    const Both both = chunked_reduce(
-        particles.size(), kChunk, Both{},
-        [&](Both& part, std::size_t begin, std::size_t end) {
-            std::vector<Index> found;
-            for (std::size_t i = begin; i < end; ++i) {
-                const Particle& a = particles[i];
-                index.within(a.center, std::min(reach, a.radius + max_radius), found);
-                for (const Index j : found) {
-                    if (j <= i) {
-                        continue;
-                    }
-                    const Particle& b = particles[j];
-                    const double depth = a.radius + b.radius - (a.center - b.center).norm();
-                    if (depth > 0.0) {
-                        add(part.pairs,
-                            OverlapRecord{std::min(a.id, b.id), std::max(a.id, b.id),
-                                          depth / mean_diameter},
-                            floor, worst_count);
-                    }
-                }
-                const double wall = container.penetration(a.center, a.radius);
-                if (wall > 0.0) {
-                    add(part.walls, OverlapRecord{a.id, -1, wall / mean_diameter}, floor,
-                        worst_count);
-                }
-            }
+OverlapStats measure_overlaps(const std::vector<Particle>& particles, const Container& container,
+                              double mean_diameter, double floor, std::size_t worst_count) {
+    Tally pairs;
+    Tally walls;
+    for_each_overlap(
+        particles, container,
+        [&](std::size_t i, std::size_t j, double depth) {
+            const std::int64_t a = particles[i].id;
+            const std::int64_t b = particles[j].id;
+            add(pairs, OverlapRecord{std::min(a, b), std::max(a, b), depth / mean_diameter}, floor,
+                worst_count);
         },
-        [&](Both& total, const Both& part) {
-            fold(total.pairs, part.pairs, worst_count);
-            fold(total.walls, part.walls, worst_count);
+        [&](std::size_t i, double depth) {
+            add(walls, OverlapRecord{particles[i].id, -1, depth / mean_diameter}, floor,
+                worst_count);
         });
     OverlapStats stats;
     stats.floor = floor;
-    stats.pairs = summarise(both.pairs, worst_count);
-    stats.walls = summarise(both.walls, worst_count);
+    stats.pairs = summarise(std::move(pairs), worst_count);
+    stats.walls = summarise(std::move(walls), worst_count);
     return stats;
 }
 

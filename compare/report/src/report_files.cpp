@@ -11,15 +11,6 @@ namespace sgmp::compare {
 namespace fs = std::filesystem;
 namespace {
 
-void write_text(const fs::path& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    out.flush();
-    if (!out) {
-        throw std::runtime_error(path.string() + ": cannot write");
-    }
-}
-
 std::string read_text(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     std::ostringstream text;
@@ -50,12 +41,12 @@ ReportContext write_report(const fs::path& directory, bool overwrite, const Repo
         for (const auto& file : plots.files) {
             svgs.push_back(svg_element(read_text(temporary / file)));
         }
-        write_text(temporary / "report.md", render_markdown(report, context));
-        write_text(temporary / "report.csv", render_csv(report, context));
-        write_text(temporary / "report.json", render_json(report, context).dump(2) + "\n");
-        write_text(temporary / "index.html", render_html(report, context, svgs));
+        write_text_file(temporary / "report.md", render_markdown(report, context));
+        write_text_file(temporary / "report.csv", render_csv(report, context));
+        write_text_file(temporary / "report.json", render_json(report, context).dump(2) + "\n");
+        write_text_file(temporary / "index.html", render_html(report, context, svgs));
         for (const auto& [name, content] : context.extra_files) {
-            write_text(temporary / name, content);
+            write_text_file(temporary / name, content);
         }
     });
     return context;

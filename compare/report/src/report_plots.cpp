@@ -1,6 +1,5 @@
 #include "sgmp/compare/report_plots.hpp"
 
-#include <unistd.h>
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
@@ -9,6 +8,9 @@
 #include <stdexcept>
 
 #include "sgmp/compare/measure.hpp"
+#include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/child_process.hpp"
+#include "sgmp/pack/executables.hpp"
 #include "sgmp/pack/metadata.hpp"
 
 namespace sgmp::compare {
@@ -24,22 +26,6 @@ std::string quoted(const std::string& text) {
         out += c;
     }
     return out + "\"";
-}
-
-std::string shell_quoted(const std::string& text) {
-    std::string out = "'";
-    for (const char c : text) {
-        out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    }
-    return out + "'";
-}
-
-void write_text(const fs::path& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    if (!out) {
-        throw std::runtime_error(path.string() + ": cannot write");
-    }
 }
 
 std::string columns(const std::vector<double>& x, const std::vector<double>& y) {
@@ -94,12 +80,12 @@ void write_gr_plot(std::ostringstream& gp, const fs::path& plots, const PlotPane
     for (std::size_t k = 0; k < panel.curves.size(); ++k) {
         const auto& curve = panel.curves[k];
         const std::string file = stem + "_gr_" + std::to_string(k) + ".dat";
-        write_text(plots / file, columns(curve.curves->gr_r, curve.curves->gr));
+        write_text_file(plots / file, columns(curve.curves->gr_r, curve.curves->gr));
         const std::string colour = " lt " + std::to_string(k + 1);
         if (curve.reference) {
             const std::string band = stem + "_grband_" + std::to_string(k) + ".dat";
-            write_text(plots / band,
-                       band_columns(curve.curves->gr_r, curve.curves->gr, curve.curves->gr_sd));
+            write_text_file(plots / band, band_columns(curve.curves->gr_r, curve.curves->gr,
+                                                       curve.curves->gr_sd));
             main << "'" << band << "' using 1:2:3 with filledcurves fs transparent solid 0.25"
                  << colour << " notitle, ";
         }
@@ -146,11 +132,11 @@ std::vector<std::string> write_trend_plots(std::ostringstream& gp, const fs::pat
             const std::string file = "trend_" + metric + "_" + std::to_string(k) + ".dat";
             const std::string colour = " lt " + std::to_string(k);
             if (t.reference) {
-                write_text(plots / file, band_columns(t.count, t.mean, t.sd));
+                write_text_file(plots / file, band_columns(t.count, t.mean, t.sd));
                 plot << "'" << file << "' using 1:2:3 with filledcurves fs transparent solid 0.3"
                      << colour << " title " << quoted(t.label + " ± 2 sd") << ", ";
             } else {
-                write_text(plots / file, columns(t.count, t.mean));
+                write_text_file(plots / file, columns(t.count, t.mean));
                 plot << "'" << file << "' with linespoints pt 7 ps 0.8" << colour << " title "
                      << quoted(t.label) << ", ";
             }
@@ -214,23 +200,13 @@ std::vector<Trend> trends_of(const Report& report, const std::vector<std::string
     return trends;
 }
 
+/// $SGMP_GNUPLOT when set (a path, or empty to disable plots), else gnuplot on $PATH.
 std::optional<fs::path> find_gnuplot() {
-    if (const char* forced = std::getenv("SGMP_GNUPLOT")) {
-        if (*forced == '\0' || ::access(forced, X_OK) != 0) {
-            return std::nullopt;
-        }
-        return fs::path(forced);
+    const char* forced = std::getenv("SGMP_GNUPLOT");
+    if (forced != nullptr && *forced == '\0') {
+        return std::nullopt;
     }
-    const char* path = std::getenv("PATH");
-    std::stringstream dirs(path ? path : "/usr/bin:/bin");
-    std::string dir;
-    while (std::getline(dirs, dir, ':')) {
-        const fs::path candidate = fs::path(dir.empty() ? "." : dir) / "gnuplot";
-        if (::access(candidate.c_str(), X_OK) == 0) {
-            return candidate;
-        }
-    }
-    return std::nullopt;
+    return find_executable(forced != nullptr ? forced : "gnuplot");
 }
 
 std::vector<PlotPanel> panels_per_comparison(const Report& report) {
@@ -319,8 +295,8 @@ PlotResult make_plots(const std::vector<PlotPanel>& panels, const std::vector<Tr
                 const auto& curve = panel.curves[k];
                 const std::string file =
                     stem + "_pz_" + std::to_string(k) + "_" + names[t] + ".dat";
-                write_text(plots / file,
-                           columns(integers(curve.curves->p_z[t].size()), curve.curves->p_z[t]));
+                write_text_file(plots / file, columns(integers(curve.curves->p_z[t].size()),
+                                                      curve.curves->p_z[t]));
                 gp << (first ? "" : ", ") << "'" << file << "' with linespoints lw 2"
                    << style(curve) << " title "
                    << quoted(curve.label + ", gap <= " + names[t] + " d");
@@ -344,7 +320,7 @@ PlotResult make_plots(const std::vector<PlotPanel>& panels, const std::vector<Tr
                     z.push_back(curve.curves->z_mean[t]);
                 }
             }
-            write_text(plots / data_file("zd", k), columns(deltas, z));
+            write_text_file(plots / data_file("zd", k), columns(deltas, z));
             gp << (k == 0 ? "" : ", ") << "'" << data_file("zd", k) << "' with linespoints lw 2"
                << style(curve) << " title " << quoted(curve.label);
         }
@@ -355,8 +331,8 @@ PlotResult make_plots(const std::vector<PlotPanel>& panels, const std::vector<Tr
            << "\nset xlabel 'φ (ratio)'\nset ylabel 'y (length units)'\nplot ";
         for (std::size_t k = 0; k < panel.curves.size(); ++k) {
             const auto& curve = panel.curves[k];
-            write_text(plots / data_file("phiy", k),
-                       columns(curve.curves->phi_y_mid, curve.curves->phi_y));
+            write_text_file(plots / data_file("phiy", k),
+                            columns(curve.curves->phi_y_mid, curve.curves->phi_y));
             gp << (k == 0 ? "" : ", ") << "'" << data_file("phiy", k)
                << "' using 2:1 with lines lw 2" << style(curve) << " title " << quoted(curve.label);
         }
@@ -364,10 +340,15 @@ PlotResult make_plots(const std::vector<PlotPanel>& panels, const std::vector<Tr
         files.push_back("plots/" + stem + "_phiy.svg");
     }
     gp << "unset output\n";
-    write_text(plots / "plots.gp", gp.str());
-    const std::string command = "cd " + shell_quoted(plots.string()) + " && " +
-                                shell_quoted(gnuplot->string()) + " plots.gp > gnuplot.log 2>&1";
-    if (std::system(command.c_str()) != 0) {
+    write_text_file(plots / "plots.gp", gp.str());
+    std::string log;
+    ChildOptions run;
+    run.argv = {gnuplot->string(), "plots.gp"};
+    run.working_directory = plots;
+    run.timeout = std::chrono::minutes(5);
+    const ChildResult ran = run_child(run, [&](const std::string& line) { log += line + "\n"; });
+    write_text_file(plots / "gnuplot.log", log);
+    if (ran.end != ChildEnd::exited || ran.exit_code != 0) {
         result.note = "gnuplot failed; see plots/gnuplot.log";
         return result;
     }

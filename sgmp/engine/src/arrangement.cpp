@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "sgmp/engine/colour_bins.hpp"
+#include "sgmp/pack/colour_bins.hpp"
 #include "sgmp/engine/settled_grid.hpp"
 
 namespace sgmp::engine {

@@ -2,13 +2,47 @@
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 
 #include <Eigen/Dense>
 
-#include "sgmp/engine/settled_grid.hpp"
+#include "sgmp/pack/cell_grid.hpp"
+#include "sgmp/pack/pack_overlaps.hpp"
 
 namespace sgmp::engine {
+
+namespace {
+
+/// Whether a sphere touches the floor or a wall within `tolerance`.
+bool on_container(const Vec3& c, double r, const Container& container, double tolerance) {
+    return c.y() - r - container.floor <= tolerance || c.x() - r - container.x_min <= tolerance ||
+           container.x_max - c.x() - r <= tolerance || c.z() - r - container.z_min <= tolerance ||
+           container.z_max - c.z() - r <= tolerance;
+}
+
+/// Spheres neither on the container nor on a sphere whose centre is not higher (surface
+/// gap ≤ tolerance).
+std::size_t count_unsupported(const std::vector<Particle>& particles, const Container& container,
+                              double tolerance) {
+    const double r_max = max_radius(particles);
+    const CellGrid grid(centres_of(particles), 2.0 * r_max);
+    std::size_t unsupported = 0;
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const Vec3& c = particles[i].center;
+        const double r = particles[i].radius;
+        bool supported = on_container(c, r, container, tolerance);
+        if (!supported) {
+            grid.for_each_near(c, r + r_max + tolerance, [&](std::size_t j, double r2) {
+                const Particle& s = particles[j];
+                supported = supported || (j != i && s.center.y() <= c.y() &&
+                                          std::sqrt(r2) - r - s.radius <= tolerance);
+            });
+        }
+        unsupported += supported ? 0 : 1;
+    }
+    return unsupported;
+}
+
+}  // namespace
 
 PackCheck check_pack(const std::vector<Particle>& particles, const Container& container,
                      double overlap_tolerance, double support_tolerance) {
@@ -16,50 +50,11 @@ PackCheck check_pack(const std::vector<Particle>& particles, const Container& co
     if (particles.empty()) {
         return result;
     }
-    double r_max = 0.0;
-    for (const Particle& p : particles) {
-        r_max = std::max(r_max, p.radius);
-    }
-    SettledGrid grid(container, 2.0 * r_max);
-    for (const Particle& p : particles) {
-        grid.insert(Sphere{p.center.x(), p.center.y(), p.center.z(), p.radius});
-    }
-    for (const Particle& p : particles) {
-        const Vec3& c = p.center;
-        const double r = p.radius;
-        if (container.penetration(c, r) > overlap_tolerance) {
-            ++result.outside;
-        }
-        bool supported = c.y() - r - container.floor <= support_tolerance ||
-                         c.x() - r - container.x_min <= support_tolerance ||
-                         container.x_max - c.x() - r <= support_tolerance ||
-                         c.z() - r - container.z_min <= support_tolerance ||
-                         container.z_max - c.z() - r <= support_tolerance;
-        const double reach = r + r_max + support_tolerance;
-        const Vec3 span = Vec3::Constant(reach);
-        grid.for_each_in_box(c - span, c + span, [&](const Sphere& s) {
-            const double gap =
-                std::sqrt((c.x() - s.x) * (c.x() - s.x) + (c.y() - s.y) * (c.y() - s.y) +
-                          (c.z() - s.z) * (c.z() - s.z)) -
-                r - s.r;
-            const bool self = s.x == c.x() && s.y == c.y() && s.z == c.z() && s.r == r;
-            if (self) {
-                return;
-            }
-            // Each pair is met twice; count it once (from the particle with the lower key).
-            const bool first = std::tie(c.y(), c.x(), c.z()) < std::tie(s.y, s.x, s.z);
-            if (gap < -overlap_tolerance && first) {
-                ++result.overlaps;
-            }
-            if (first) {
-                result.worst_gap = std::min(result.worst_gap, gap);
-            }
-            if (s.y <= c.y() && gap <= support_tolerance) {
-                supported = true;
-            }
-        });
-        result.unsupported += supported ? 0 : 1;
-    }
+    const OverlapCount count = count_overlaps(particles, container, overlap_tolerance);
+    result.overlaps = count.pairs;
+    result.worst_gap = count.max_pair > 0.0 ? -count.max_pair : 0.0;
+    result.outside = count.walls;
+    result.unsupported = count_unsupported(particles, container, support_tolerance);
     return result;
 }
 
@@ -70,12 +65,9 @@ RestCheck check_rolled_rest(const std::vector<Particle>& particles, const Contai
     if (particles.empty()) {
         return result;
     }
-    double r_max = 0.0;
-    for (const Particle& p : particles) {
-        r_max = std::max(r_max, p.radius);
-    }
-    // Drop order is id order: each sphere is checked against the spheres placed before it
-    // (the grid holds exactly those), then added.
+    const double r_max = max_radius(particles);
+    const CellGrid grid(centres_of(particles), 2.0 * r_max);
+    // Drop order is id order: each sphere is checked against the spheres placed before it.
     std::vector<std::size_t> order(particles.size());
     for (std::size_t i = 0; i < order.size(); ++i) {
         order[i] = i;
@@ -83,31 +75,25 @@ RestCheck check_rolled_rest(const std::vector<Particle>& particles, const Contai
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
         return particles[a].id < particles[b].id;
     });
-    SettledGrid grid(container, 2.0 * r_max);
     std::vector<Vec3> normals;
     for (const std::size_t i : order) {
         const Particle& p = particles[i];
         const Vec3& c = p.center;
         const double r = p.radius;
         const double tol = contact_tolerance;
-        grid.insert(Sphere{c.x(), c.y(), c.z(), r});
-        if (c.y() - r - container.floor <= tol || c.x() - r - container.x_min <= tol ||
-            container.x_max - c.x() - r <= tol || c.z() - r - container.z_min <= tol ||
-            container.z_max - c.z() - r <= tol) {
+        if (on_container(c, r, container, tol)) {
             continue;
         }
         normals.clear();
-        const Vec3 span = Vec3::Constant(r + r_max + tol);
-        grid.for_each_in_box(c - span, c + span, [&](const Sphere& s) {
-            const Vec3 sc(s.x, s.y, s.z);
-            if (sc == c && s.r == r) {
-                return;  // itself (inserted above)
+        grid.for_each_near(c, r + r_max + tol, [&](std::size_t j, double) {
+            const Particle& s = particles[j];
+            if (!(s.id < p.id)) {
+                return;  // itself, or placed after it
             }
-            const double distance = (c - sc).norm();
-            if (distance - r - s.r > tol) {
-                return;
+            const double distance = (c - s.center).norm();
+            if (distance - r - s.radius <= tol) {
+                normals.push_back((c - s.center) / distance);
             }
-            normals.push_back((c - sc) / distance);
         });
         bool rests = false;
         const std::size_t n = normals.size();

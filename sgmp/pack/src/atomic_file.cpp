@@ -8,6 +8,7 @@
 #include <boost/iostreams/filtering_stream.hpp>
 #include <cerrno>
 #include <cstring>
+#include <fstream>
 #include <ios>
 #include <stdexcept>
 #include <system_error>
@@ -202,6 +203,15 @@ void write_directory_atomically(const fs::path& target, bool overwrite,
     } catch (...) {
         fs::remove_all(temporary, ignored);
         throw;
+    }
+}
+
+void write_text_file(const fs::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.close();
+    if (!out) {
+        throw path_error(path, "cannot write");
     }
 }
 

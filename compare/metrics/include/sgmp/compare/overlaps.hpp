@@ -9,7 +9,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "sgmp/compare/neighbour_index.hpp"
+#include "sgmp/pack/particle.hpp"
+
 #include "sgmp/pack/geometry.hpp"
 
 namespace sgmp::compare {
@@ -34,9 +35,9 @@ struct OverlapStats {
     OverlapSummary walls;
 };
 
-/// Overlaps between all particles and against the container. `index` holds the centres.
-OverlapStats measure_overlaps(const std::vector<Particle>& particles, const NeighbourIndex& index,
-                              const Container& container, double mean_diameter, double floor,
-                              std::size_t worst_count);
+/// Overlaps between all particles and against the container, found by the pack
+/// library's one overlap search (sgmp/pack/pack_overlaps.hpp).
+OverlapStats measure_overlaps(const std::vector<Particle>& particles, const Container& container,
+                              double mean_diameter, double floor, std::size_t worst_count);
 
 }  // namespace sgmp::compare

@@ -21,6 +21,11 @@ void check_writable(const std::filesystem::path& target, bool overwrite);
 void write_file_atomically(const std::filesystem::path& target, bool overwrite,
                            const std::function<void(std::ostream&)>& produce);
 
+/// Writes `text` to `path`, replacing it: for files inside a directory that is itself
+/// being built atomically (write_directory_atomically) or a scratch directory. Throws
+/// std::runtime_error "<path>: cannot write".
+void write_text_file(const std::filesystem::path& path, const std::string& text);
+
 /// Replaces directory `target` atomically: `produce` fills a fresh temporary directory
 /// beside it, which then takes the target's place (an existing target is removed only
 /// with `overwrite`, and only after `produce` succeeded).

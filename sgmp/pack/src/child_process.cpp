@@ -1,4 +1,4 @@
-#include "sgmp/reference/child_process.hpp"
+#include "sgmp/pack/child_process.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <thread>
 
-namespace sgmp::reference {
+namespace sgmp {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -184,4 +184,4 @@ ChildResult run_child(const ChildOptions& options,
     return result;
 }
 
-}  // namespace sgmp::reference
+}  // namespace sgmp

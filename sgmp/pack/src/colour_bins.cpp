@@ -1,8 +1,8 @@
-#include "sgmp/engine/colour_bins.hpp"
+#include "sgmp/pack/colour_bins.hpp"
 
 #include <array>
 
-namespace sgmp::engine {
+namespace sgmp {
 
 std::vector<int> draw_colours(std::size_t count, Random& rng) {
     std::array<std::size_t, kColourBins> left{};
@@ -32,4 +32,4 @@ std::vector<int> draw_colours(std::size_t count, Random& rng) {
     return colours;
 }
 
-}  // namespace sgmp::engine
+}  // namespace sgmp

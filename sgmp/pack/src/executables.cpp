@@ -1,11 +1,11 @@
-#include "sgmp/reference/executables.hpp"
+#include "sgmp/pack/executables.hpp"
 
 #include <unistd.h>
 
 #include <cstdlib>
 #include <string_view>
 
-namespace sgmp::reference {
+namespace sgmp {
 
 std::optional<std::filesystem::path> find_executable(const std::string& name) {
     const auto runnable = [](const std::filesystem::path& p) {
@@ -32,4 +32,4 @@ std::optional<std::filesystem::path> find_executable(const std::string& name) {
     }
 }
 
-}  // namespace sgmp::reference
+}  // namespace sgmp

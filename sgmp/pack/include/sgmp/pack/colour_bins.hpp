@@ -9,7 +9,7 @@
 
 #include "sgmp/pack/random.hpp"
 
-namespace sgmp::engine {
+namespace sgmp {
 
 /// Number of colour bins used by every arrangement.
 inline constexpr int kColourBins = 10;
@@ -17,4 +17,4 @@ inline constexpr int kColourBins = 10;
 /// Colours 0..9 for `count` particles in drop order, drawn from random non-empty bins.
 std::vector<int> draw_colours(std::size_t count, Random& rng);
 
-}  // namespace sgmp::engine
+}  // namespace sgmp

@@ -6,10 +6,10 @@
 #include <optional>
 #include <string>
 
-namespace sgmp::reference {
+namespace sgmp {
 
 /// `name` itself when it contains a '/', else the first executable file of that name in
 /// the directories of $PATH; nullopt when there is none.
 std::optional<std::filesystem::path> find_executable(const std::string& name);
 
-}  // namespace sgmp::reference
+}  // namespace sgmp

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace sgmp::reference {
+namespace sgmp {
 
 struct ChildOptions {
     std::vector<std::string> argv;                         ///< argv[0] is looked up on PATH
@@ -39,4 +39,4 @@ struct ChildResult {
 ChildResult run_child(const ChildOptions& options,
                       const std::function<void(const std::string& line)>& on_line);
 
-}  // namespace sgmp::reference
+}  // namespace sgmp

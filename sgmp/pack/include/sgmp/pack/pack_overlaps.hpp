@@ -1,0 +1,58 @@
+#pragma once
+/// @file pack_overlaps.hpp
+/// Overlaps of a finished pack, the one search every part uses (the engine's checks, the
+/// reference's checks of a pour, and compare's overlap metric).
+///
+/// A pair overlaps by depth (r_i + r_j) − |c_i − c_j| > 0 (each pair's own radii); a
+/// sphere overlaps the container by Container::penetration > 0 (how far it crosses a
+/// wall or the floor). Pairs are found on a CellGrid of reach 2·r_max: overlapping
+/// centres are closer than r_i + r_j ≤ 2·r_max.
+#include <cstddef>
+#include <vector>
+
+#include "sgmp/pack/cell_grid.hpp"
+#include "sgmp/pack/geometry.hpp"
+
+namespace sgmp {
+
+/// Largest radius of `particles` (0 when empty).
+double max_radius(const std::vector<Particle>& particles);
+
+/// Calls on_pair(i, j, depth) for every overlapping pair i < j (indices into
+/// `particles`, in CellGrid::for_each_pair order), then on_wall(i, depth) for every sphere
+/// crossing the container, in index order. Depths are lengths, > 0.
+template <class OnPair, class OnWall>
+void for_each_overlap(const std::vector<Particle>& particles, const Container& container,
+                      OnPair&& on_pair, OnWall&& on_wall) {
+    const double r_max = max_radius(particles);
+    if (particles.size() >= 2 && r_max > 0.0) {
+        const CellGrid grid(centres_of(particles), 2.0 * r_max);
+        grid.for_each_pair([&](std::size_t i, std::size_t j, double) {
+            const Particle& a = particles[i];
+            const Particle& b = particles[j];
+            const double depth = a.radius + b.radius - (a.center - b.center).norm();
+            if (depth > 0.0) {
+                on_pair(i, j, depth);
+            }
+        });
+    }
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const double depth = container.penetration(particles[i].center, particles[i].radius);
+        if (depth > 0.0) {
+            on_wall(i, depth);
+        }
+    }
+}
+
+/// Counts and deepest depths of the overlaps deeper than `tolerance` (a length ≥ 0).
+struct OverlapCount {
+    std::size_t pairs = 0;  ///< pairs deeper than tolerance
+    double max_pair = 0.0;  ///< deepest pair (any depth), 0 when none overlaps
+    std::size_t walls = 0;  ///< spheres crossing the container by more than tolerance
+    double max_wall = 0.0;  ///< deepest wall or floor penetration, 0 when none
+};
+
+OverlapCount count_overlaps(const std::vector<Particle>& particles, const Container& container,
+                            double tolerance);
+
+}  // namespace sgmp

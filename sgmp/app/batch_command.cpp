@@ -8,6 +8,8 @@
 // Under `mpirun -np K` the ranks split the jobs; rank 0 writes the summary.
 #include "batch_command.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -17,6 +19,7 @@
 #include <iostream>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include "sgmp/batch/executor.hpp"
@@ -147,6 +150,28 @@ std::string first_existing(const Settings& s, const Plan& plan, const OutPattern
     return {};
 }
 
+/// Throws FileProblem when a pack's directory cannot be made or written (checked once per
+/// directory, before any pack is made; nothing is created here).
+void check_pack_directories(const Plan& plan, const OutPattern& pattern,
+                            const std::vector<std::size_t>& jobs) {
+    std::set<fs::path> seen;
+    for (const std::size_t job : jobs) {
+        const fs::path name = pattern.expand(plan, job);
+        fs::path dir = name.parent_path().empty() ? fs::path(".") : name.parent_path();
+        if (!seen.insert(dir).second) {
+            continue;
+        }
+        while (!fs::exists(dir) && dir.has_parent_path() && dir != dir.parent_path()) {
+            dir = dir.parent_path();  // the nearest existing ancestor is where it is created
+        }
+        if (fs::exists(dir) && (!fs::is_directory(dir) || ::access(dir.c_str(), W_OK) != 0)) {
+            throw FileProblem{
+                name.string() + ": cannot be written (" + dir.string() +
+                (fs::is_directory(dir) ? " is not writable)" : " is not a directory)")};
+        }
+    }
+}
+
 class ProgressLine {
   public:
     ProgressLine(std::size_t total, const World& world) : total_(total), world_(world) {}
@@ -192,6 +217,9 @@ int run_sweep(const Settings& s, const World& world) {
         throw FileProblem{existing +
                           ": exists; pass --skip-existing to keep what is there or --force to "
                           "remake it"};
+    }
+    if (pattern) {
+        check_pack_directories(plan, *pattern, shard_jobs);
     }
     if (!world.all(true)) {
         world.abort(1);

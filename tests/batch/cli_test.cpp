@@ -120,6 +120,8 @@ BOOST_AUTO_TEST_CASE(bad_input_gets_one_line_and_writes_nothing) {
         {base + "--seeds 1 --count 0", 2, "sgmp: --count 0: must be between 1 and 10000000"},
         {base + "--seeds 1 --summary file/summary.csv", 1,
          "sgmp: --summary file/summary.csv: cannot create its directory file"},
+        {"--seeds 1 --count 50 --arrangement small-dense --out-pattern 'file/p/{seed}.xyz'", 1,
+         "sgmp: file/p/1.xyz: cannot be written (file is not a directory)"},
         {"--seeds 1-2 --count 50 --arrangement small-dense --out-pattern p.xyz", 2,
          "sgmp: --out-pattern p.xyz: must hold {seed}"},
         {base + "--seeds 1", 2, "sgmp: --seeds: needed"},

@@ -95,16 +95,12 @@ void apply(CommonOptions& o) {
         o.measure.region = Box{Vec3(o.region[0], o.region[2], o.region[4]),
                                Vec3(o.region[1], o.region[3], o.region[5])};
     }
-    try {
-        validate(o.measure);
-    } catch (const std::invalid_argument& error) {
-        throw UsageError(error.what());
-    }
+    validate(o.measure);
     set_thread_count(o.threads);
     try {
         check_writable(o.out, o.force);
     } catch (const std::runtime_error& error) {
-        throw UsageError(std::string(error.what()) + (o.force ? "" : " (use --force to replace)"));
+        throw UsageError(std::string("--out ") + error.what());
     }
     for (const auto& path : o.metrics) {
         for (auto& [pack, summary] : summaries_from_batch(read_text(path), path)) {

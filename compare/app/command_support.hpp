@@ -12,16 +12,15 @@
 #include <string>
 #include <vector>
 
+#include "sgmp/cli/run_main.hpp"
 #include "sgmp/compare/agreement.hpp"
 #include "sgmp/compare/measure.hpp"
 #include "sgmp/pack/pack.hpp"
 
 namespace sgmp::compare::cli {
 
-/// A usage error: exit status 2.
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
+/// A usage error: exit status 2 (sgmp/cli/run_main.hpp).
+using UsageError = ::sgmp::cli::UsageError;
 
 struct CommonOptions {
     std::vector<double> region;
@@ -39,8 +38,8 @@ struct CommonOptions {
 void add_common(CLI::App* command, CommonOptions& o);
 /// --metrics (crossval, report): packs whose metrics are precomputed in batch summaries.
 void add_precomputed(CLI::App* command, CommonOptions& o);
-/// Validates the options (UsageError), checks that --out can be written and reads the
-/// --metrics summaries.
+/// Validates the options (ParameterError), checks that --out can be written (UsageError)
+/// and reads the --metrics summaries.
 void apply(CommonOptions& o);
 /// "sgmp-compare <arguments>", recorded in outputs.
 std::string command_line(int argc, char** argv);

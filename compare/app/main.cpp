@@ -144,35 +144,19 @@ int main(int argc, char** argv) {
     const auto crossval = register_crossval(app);
     const auto regress = register_regress(app);
 
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForVersion& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "sgmp-compare: " << printable(e.what()) << " (see --help)\n";
-        return 2;
-    }
-    install_interrupt_handler("sgmp-compare");
     const std::string cmd = command_line(argc, argv);
-    try {
-        if (*measure_cmd) {
-            return run_measure(packs, measure_options, cmd);
-        }
-        for (const auto& run : {crossval, regress}) {
-            if (const int status = run(cmd); status >= 0) {
-                return status;
+    return ::sgmp::cli::run_main(
+        "sgmp-compare", app, [&] { app.parse(argc, argv); },
+        [&] {
+            install_interrupt_handler("sgmp-compare");
+            if (*measure_cmd) {
+                return run_measure(packs, measure_options, cmd);
             }
-        }
-        return run_report(a, b, label_a, label_b, report_options, cmd);
-    } catch (const UsageError& error) {
-        std::cerr << "sgmp-compare: " << printable(error.what()) << "\n";
-        return 2;
-    } catch (const std::exception& error) {
-        std::cerr << "sgmp-compare: " << printable(error.what()) << "\n";
-        return 1;
-    }
+            for (const auto& run : {crossval, regress}) {
+                if (const int status = run(cmd); status >= 0) {
+                    return status;
+                }
+            }
+            return run_report(a, b, label_a, label_b, report_options, cmd);
+        });
 }

@@ -9,23 +9,24 @@
 
 #include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/metadata.hpp"
+#include "sgmp/pack/parameter_error.hpp"
 #include "sgmp/pack/random.hpp"
 
 namespace sgmp::reference {
 namespace {
 
-void require(bool ok, const char* name, double value, const char* rule) {
+/// Throws ParameterError(name, value, "must be " + rule) unless `ok` and value is finite.
+void require(bool ok, const char* name, double value, const std::string& rule) {
     if (!ok || !std::isfinite(value)) {  // inf passed "positive" and "above" rules
-        throw std::invalid_argument(std::string(name) + " = " + format_number(value) +
-                                    ": must be " + rule);
+        throw ParameterError(name, format_number(value), "must be " + rule);
     }
 }
 
 }  // namespace
 
 void PourParameters::validate() const {
-    require(count >= 1 && count <= 1'000'000, "count", static_cast<double>(count),
-            "between 1 and 1000000");
+    require(count >= 1 && count <= kMaxCount, "count", static_cast<double>(count),
+            "between 1 and " + std::to_string(kMaxCount));
     require(phi_target > 0.0 && phi_target <= kMaxPhiTarget, "phi_target", phi_target,
             "in (0, 0.74048]");
     require(friction >= 0.0 && friction <= 10.0, "friction", friction, "in [0, 10]");
@@ -53,10 +54,9 @@ void PourParameters::validate() const {
     if (!processors.empty()) {
         const auto grid = parse_processor_grid(processors);
         if (!grid || (*grid)[0] * (*grid)[1] * (*grid)[2] != ranks) {
-            throw std::invalid_argument("--processors " + processors +
-                                        ": must be PX,PY,PZ, whole numbers >= 1 with PX*PY*PZ "
-                                        "= --ranks " +
-                                        std::to_string(ranks));
+            throw ParameterError("processors", processors,
+                                 "must be PX,PY,PZ, whole numbers >= 1 with PX*PY*PZ = ranks " +
+                                     std::to_string(ranks));
         }
     }
 }

@@ -2,8 +2,6 @@
 //   sgmp pack    --count N --arrangement A --seed S --out FILE [protocol options] [--force]
 //   sgmp arrange --count N --arrangement A --seed S --out FILE [--force]
 // A thin front end: parses options, calls the engine, writes the pack atomically.
-#include <unistd.h>
-
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -17,6 +15,9 @@
 
 #include "batch_command.hpp"
 #include "config_file.hpp"
+#include "convert_command.hpp"
+#include "sgmp/cli/progress_line.hpp"
+#include "sgmp/cli/run_main.hpp"
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/engine/pack_checks.hpp"
 #include "sgmp/pack/atomic_file.hpp"
@@ -24,6 +25,7 @@
 #include "sgmp/pack/interrupt.hpp"
 #include "sgmp/pack/option_rules.hpp"
 #include "sgmp/pack/pack_file.hpp"
+#include "sgmp/pack/parameter_error.hpp"
 #include "sgmp/pack/sphere_box_volume.hpp"
 #include "sgmp/pack/version.hpp"
 
@@ -57,9 +59,7 @@ struct Options {
     RelaxParams relax_params;
 };
 
-struct UsageError {
-    std::string message;
-};
+using cli::UsageError;
 
 void add_common(CLI::App& app, Options& o) {
     app.add_option("--count", o.count, "number of particles N (1 to 10000000)")->required();
@@ -73,7 +73,7 @@ void add_common(CLI::App& app, Options& o) {
     app.add_option("--out", o.out, "output pack file (extended XYZ; .gz compresses)")->required();
     app.add_flag("--force", o.force, "overwrite an existing output file");
     app.add_option("--phi-target", o.phi_target,
-                   "target packing fraction phi* in (0, 0.7405]; sets the diameter by "
+                   "target packing fraction phi* in (0, 0.74048]; sets the diameter by "
                    "(N/3)(pi/6)d^3 = phi*")
         ->capture_default_str();
     app.add_option("--size-modes", o.size_modes,
@@ -169,15 +169,15 @@ template <class T>
 T parse_choice(std::optional<T> parsed, const std::string& option, const std::string& value,
                const std::string& choices) {
     if (!parsed) {
-        throw UsageError{"--" + option + " " + value + ": must be one of " + choices};
+        throw UsageError("--" + option + " " + value + ": must be one of " + choices);
     }
     return *parsed;
 }
 
 PackRequest to_request(const Options& o) {
     if (o.count < 1 || o.count > static_cast<long long>(kMaxCount)) {
-        throw UsageError{"--count " + std::to_string(o.count) + ": must be between 1 and " +
-                         std::to_string(kMaxCount)};
+        throw ParameterError("count", std::to_string(o.count),
+                             "must be between 1 and " + std::to_string(kMaxCount));
     }
     PackRequest request;
     request.count = static_cast<std::size_t>(o.count);
@@ -187,8 +187,8 @@ PackRequest to_request(const Options& o) {
     request.phi_target = o.phi_target;
     const auto modes = parse_size_modes(o.size_modes);
     if (!modes) {
-        throw UsageError{"--size-modes " + o.size_modes +
-                         ": must be positive diameter:fraction pairs, e.g. 1:0.7,0.5:0.3"};
+        throw UsageError("--size-modes " + o.size_modes +
+                         ": must be positive diameter:fraction pairs, e.g. 1:0.7,0.5:0.3");
     }
     request.size_modes = *modes;
     ProtocolParams& p = request.protocol;
@@ -197,8 +197,8 @@ PackRequest to_request(const Options& o) {
     if (!o.sweep_stages.empty()) {
         const auto stages = parse_stages(o.sweep_stages);
         if (!stages) {
-            throw UsageError{"--sweep-stages " + o.sweep_stages +
-                             ": must be comma-separated whole numbers, e.g. 8,120,720"};
+            throw UsageError("--sweep-stages " + o.sweep_stages +
+                             ": must be comma-separated whole numbers, e.g. 8,120,720");
         }
         p.sweep_stages = *stages;
     }
@@ -215,40 +215,9 @@ PackRequest to_request(const Options& o) {
     request.relax = o.relax_params;
     request.relax.mode =
         parse_choice(parse_relax_mode(o.relax), "relax", o.relax, "none, frictionless");
-    if (const auto error = validate(request)) {
-        throw UsageError{*error};
-    }
+    validate(request);
     return request;
 }
-
-/// Progress on stderr once a run passes one second, only when stderr is a terminal.
-class Progress {
-  public:
-    Progress() : tty_(isatty(STDERR_FILENO) == 1), start_(Clock::now()) {}
-    void operator()(std::size_t done, std::size_t total) {
-        if (!tty_ || seconds() < 1.0) {
-            return;
-        }
-        std::fprintf(stderr, "\rsgmp: %zu / %zu particles dropped (%.0f s)", done, total,
-                     seconds());
-        std::fflush(stderr);
-        shown_ = true;
-    }
-    void finish() const {
-        if (shown_) {
-            std::fprintf(stderr, "\n");
-        }
-    }
-    [[nodiscard]] double seconds() const {
-        return std::chrono::duration<double>(Clock::now() - start_).count();
-    }
-
-  private:
-    using Clock = std::chrono::steady_clock;
-    bool tty_;
-    bool shown_ = false;
-    Clock::time_point start_;
-};
 
 /// `--config FILE` (config_file.hpp): its options are placed before the command line's.
 std::vector<std::string> expand_config(std::vector<std::string> args) {
@@ -262,14 +231,14 @@ std::vector<std::string> expand_config(std::vector<std::string> args) {
             continue;
         }
         if (!std::filesystem::is_regular_file(path)) {
-            throw UsageError{"--config " + path + ": must name a readable file"};
+            throw UsageError("--config " + path + ": must name a readable file");
         }
         std::ifstream in(path);
         try {
             const auto injected = sgmp::app::config_arguments(in, args.front());
             args.insert(args.begin() + 1, injected.begin(), injected.end());
         } catch (const std::invalid_argument& e) {
-            throw UsageError{"--config " + path + ": " + e.what()};
+            throw UsageError("--config " + path + ": " + e.what());
         }
         return args;
     }
@@ -281,16 +250,20 @@ void check_out(const Options& o) {
     try {
         check_writable(o.out, o.force);
     } catch (const std::runtime_error& e) {
-        throw UsageError{std::string("--out ") + e.what()};
+        throw UsageError(std::string("--out ") + e.what());
     }
 }
 
 int run_pack(const Options& o) {
     const PackRequest request = to_request(o);
     check_out(o);
-    Progress progress;
-    const Pack pack =
-        make_pack(request, [&](std::size_t done, std::size_t total) { progress(done, total); });
+    // Progress once a run passes one second.
+    cli::ProgressLine progress(false, std::chrono::seconds(5), std::chrono::seconds(1));
+    const Pack pack = make_pack(request, [&](std::size_t done, std::size_t total) {
+        progress.update("sgmp: " + std::to_string(done) + " / " + std::to_string(total) +
+                        " particles dropped (" +
+                        std::to_string(static_cast<long>(progress.seconds())) + " s)");
+    });
     const double seconds = progress.seconds();
     progress.finish();
     write_pack_file(o.out, pack, o.force);
@@ -346,33 +319,22 @@ int main(int argc, char** argv) {
     arrange->add_option("--config", config_file,
                         "read options from a TOML/INI file of 'option = value' lines; options "
                         "given on the command line win");
+    CLI::App* convert = sgmp::app::register_convert(app);
     sgmp::app::BatchCommand batch(app);
-    try {
+    const auto parse = [&] {
         std::vector<std::string> args(argv + 1, argv + argc);
         args = expand_config(std::move(args));
         std::reverse(args.begin(), args.end());  // CLI11 takes the arguments reversed
         app.parse(args);
-    } catch (const UsageError& e) {
-        std::cerr << "sgmp: " << printable(e.message) << "\n";
-        return 2;
-    } catch (const CLI::Success& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "sgmp: " << printable(e.what()) << "\n";
-        return 2;
-    }
-    install_interrupt_handler("sgmp");
-    try {
+    };
+    return cli::run_main("sgmp", app, parse, [&] {
+        install_interrupt_handler("sgmp");
+        if (convert->parsed()) {
+            return sgmp::app::run_convert();
+        }
         if (batch.parsed()) {
             return batch.run();
         }
         return pack->parsed() ? run_pack(pack_options) : run_arrange(arrange_options);
-    } catch (const UsageError& e) {
-        std::cerr << "sgmp: " << printable(e.message) << "\n";
-        return 2;
-    } catch (const std::exception& e) {
-        // A runtime failure (a failed write, a full disk): exit 1, not the usage code.
-        std::cerr << "sgmp: " << printable(e.what()) << "\n";
-        return 1;
-    }
+    });
 }

@@ -1,5 +1,6 @@
 #include <boost/test/unit_test.hpp>
 
+#include "refusal.hpp"
 #include "sgmp/engine/make_pack.hpp"
 
 using namespace sgmp;
@@ -100,16 +101,16 @@ BOOST_AUTO_TEST_CASE(progress_is_reported_up_to_the_total) {
 BOOST_AUTO_TEST_CASE(bad_requests_are_refused_with_the_option_named) {
     PackRequest request;
     request.count = 0;
-    BOOST_TEST(validate(request).value_or("").find("--count 0") == 0u);
+    BOOST_TEST(refusal([&] { validate(request); }).find("--count 0") == 0u);
     request.count = kMaxCount + 1;
-    BOOST_TEST(validate(request).value_or("").find("--count") == 0u);
+    BOOST_TEST(refusal([&] { validate(request); }).find("--count") == 0u);
     request.count = 100;
     request.phi_target = 0.0;
-    BOOST_TEST(validate(request).value_or("").find("--phi-target 0") == 0u);
-    request.phi_target = 0.7406;
-    BOOST_TEST(validate(request).value_or("").find("--phi-target 0.7406") == 0u);
-    request.phi_target = 0.7405;
-    BOOST_TEST(!validate(request).has_value());
+    BOOST_TEST(refusal([&] { validate(request); }).find("--phi-target 0") == 0u);
+    request.phi_target = 0.74049;
+    BOOST_TEST(refusal([&] { validate(request); }).find("--phi-target 0.74049") == 0u);
+    request.phi_target = kMaxPhiTarget;
+    BOOST_TEST(refusal([&] { validate(request); }).empty());
     PackRequest empty;
     empty.count = 0;
     BOOST_CHECK_THROW(make_pack(empty), std::invalid_argument);

@@ -132,7 +132,7 @@ BOOST_AUTO_TEST_CASE(multi_modal_packs_keep_the_invariants) {
 
 BOOST_AUTO_TEST_CASE(a_dense_target_still_gives_valid_packs) {
     Tally tally;
-    for (const double phi : {0.3, 0.7405}) {
+    for (const double phi : {0.3, kMaxPhiTarget}) {
         PackRequest request;
         request.count = 500;
         request.phi_target = phi;

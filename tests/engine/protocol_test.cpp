@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "brute_force.hpp"
+#include "refusal.hpp"
 #include "sgmp/engine/protocol.hpp"
 #include "sgmp/engine/sweep_table.hpp"
 
@@ -234,9 +235,9 @@ BOOST_AUTO_TEST_CASE(parameters_are_validated_with_the_option_named) {
     const auto error_for = [](auto change) {
         ProtocolParams p;
         change(p);
-        return validate(p, 0.1).value_or("");
+        return refusal([&] { validate(p, 0.1); });
     };
-    BOOST_TEST(!validate(ProtocolParams{}, 0.1).has_value());
+    BOOST_TEST(refusal([&] { validate(ProtocolParams{}, 0.1); }).empty());
     BOOST_TEST(error_for([](auto& p) { p.circle_factor = 1; }).find("--circle-factor 1") == 0u);
     BOOST_TEST(error_for([](auto& p) { p.sweep_stages = {2}; }).find("--sweep-positions 2") == 0u);
     BOOST_TEST(error_for([](auto& p) { p.sweep_stages = {8, 8}; }).find("--sweep-stages") == 0u);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "brute_force.hpp"
+#include "refusal.hpp"
 #include "sgmp/engine/hard_sphere_finish.hpp"
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/engine/pack_checks.hpp"
@@ -285,18 +286,19 @@ BOOST_AUTO_TEST_CASE(bad_relaxation_parameters_are_refused_with_the_option_named
     request.count = 100;
     request.relax.mode = RelaxMode::Frictionless;
     request.relax.stiffness = 10.0;
-    BOOST_TEST(validate(request).value_or("").find("--relax-stiffness 10: must be in") == 0u);
+    BOOST_TEST(refusal([&] { validate(request); }).find("--relax-stiffness 10: must be in") == 0u);
     request.relax.stiffness = 2e3;
     request.relax.stages = 0;
-    BOOST_TEST(validate(request).value_or("").find("--relax-stages 0: must be 1 to 10") == 0u);
+    BOOST_TEST(refusal([&] { validate(request); }).find("--relax-stages 0: must be 1 to 10") == 0u);
     request.relax.stages = 4;
     request.relax.force_tolerance = 0.0;
-    BOOST_TEST(validate(request).value_or("").find("--relax-force-tolerance 0: must be") == 0u);
+    BOOST_TEST(refusal([&] { validate(request); }).find("--relax-force-tolerance 0: must be") ==
+               0u);
     request.relax.force_tolerance = 1e-4;
     request.relax.shell = -1.0;
-    BOOST_TEST(validate(request).value_or("").find("--relax-shell -1: must be in") == 0u);
+    BOOST_TEST(refusal([&] { validate(request); }).find("--relax-shell -1: must be in") == 0u);
     request.relax.shell = 1e-4;
-    BOOST_TEST(!validate(request).has_value());
+    BOOST_TEST(refusal([&] { validate(request); }).empty());
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "refusal.hpp"
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/engine/size_modes.hpp"
 
@@ -74,7 +75,23 @@ BOOST_AUTO_TEST_CASE(a_multi_modal_pack_records_its_modes_and_sizes) {
     }
     BOOST_TEST(small == 200u);
     request.size_modes = {SizeMode{1.0, 0.5}, SizeMode{0.0, 0.5}};
-    BOOST_TEST(validate(request).value_or("").find("--size-modes") == 0u);
+    BOOST_TEST(refusal([&] { validate(request); }).find("--size-modes") == 0u);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(start_pack_sizes)
+
+// The reference pours from the engine's starting arrangements (make_start_pack) with the
+// diameter of the sizing rule: for one size mode the two must be the same number, bit
+// for bit, or a pour's spheres would differ from the arrangement's by rounding.
+BOOST_AUTO_TEST_CASE(one_mode_gives_exactly_the_sizing_rule_diameter) {
+    for (const std::size_t n : {150u, 300u, 750u, 1002u, 2001u, 3000u, 6000u, 9000u, 100000u}) {
+        for (const double phi : {0.3, 0.63, sgmp::kMaxPhiTarget}) {
+            BOOST_TEST(sgmp::engine::diameter_scale(n, phi, {sgmp::engine::SizeMode{1.0, 1.0}}) ==
+                       sgmp::diameter_for_count(n, phi));
+        }
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -83,7 +83,8 @@ BOOST_AUTO_TEST_CASE(malformed_files_name_the_line_and_the_reason) {
     BOOST_TEST(read_error("2\n" + kHeader + "1 0 0 0 0.1 0\n") ==
                "pack.xyz:3: file ends after 1 of 2 particle lines");
     BOOST_TEST(read_error("1\n" + kHeader + "1 0 0 0 0.1 0\n2 0 0 0 0.1 0\n") ==
-               "pack.xyz:4: more particle lines than the count 1 on line 1 (one frame per file)");
+               "pack.xyz:4: expected the particle count of frame 2 (or the end of the file), "
+               "found '2 0 0 0 0.1 0'; are there more particle lines than the frame's count?");
     BOOST_TEST(read_error("1\n" + kHeader + "1 0 zero 0 0.1 0\n") ==
                "pack.xyz:3: coordinate 'zero' is not a number");
     BOOST_TEST(read_error("1\n" + kHeader + "1 0 0 0 0.1\n") ==
@@ -97,7 +98,7 @@ BOOST_AUTO_TEST_CASE(malformed_files_name_the_line_and_the_reason) {
     BOOST_TEST(read_error("2\n" + kHeader + "4 0 0 0 0.1 0\n4 1 0 0 0.1 0\n") ==
                "pack.xyz:4: id 4 repeats the id of line 3");
     BOOST_TEST(read_error("1\nProperties=id:I:1 \"x\n") ==
-               "pack.xyz:2: expected key=value in the header, found '\"x'");
+               "pack.xyz:2: expected key=value or a bare key in the header, found '\"x'");
 }
 
 BOOST_AUTO_TEST_CASE(column_counts_cannot_overflow_the_line_width) {

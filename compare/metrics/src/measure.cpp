@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "sgmp/compare/spatial_order.hpp"
+#include "sgmp/pack/parameter_error.hpp"
 
 namespace sgmp::compare {
 namespace {
@@ -65,34 +66,34 @@ constexpr double kMaxSlabs = 1e6;
 void validate(const MeasureOptions& o) {
     const auto positive = [](double v, const char* name) {
         if (!(v > 0.0) || !std::isfinite(v)) {
-            throw std::invalid_argument(std::string(name) + " must be a positive number");
+            throw ParameterError(name, format_number(v), "must be a positive number");
         }
     };
-    positive(o.slab_thickness, "--slab");
-    positive(o.gr_bin_width, "--gr-bin");
-    positive(o.gr_range, "--gr-range");
-    positive(o.q6_cutoff, "--q6-cutoff");
+    positive(o.slab_thickness, "slab");
+    positive(o.gr_bin_width, "gr_bin");
+    positive(o.gr_range, "gr_range");
+    positive(o.q6_cutoff, "q6_cutoff");
     if (!(o.overlap_floor >= 0.0) || !std::isfinite(o.overlap_floor)) {
-        throw std::invalid_argument("--overlap-floor must be a non-negative number");
+        throw ParameterError("overlap_floor", format_number(o.overlap_floor),
+                             "must be a non-negative number");
     }
     if (o.gr_bin_width > o.gr_range) {
-        throw std::invalid_argument("--gr-bin must not exceed --gr-range");
+        throw ParameterError("gr_bin", format_number(o.gr_bin_width),
+                             "must not exceed --gr-range " + format_number(o.gr_range));
     }
     if (o.gr_range / o.gr_bin_width > 1e5) {
-        throw std::invalid_argument("--gr-range / --gr-bin must be at most 100000 bins");
+        throw ParameterError("gr_bin", format_number(o.gr_bin_width),
+                             "--gr-range / --gr-bin must be at most 100000 bins");
     }
     // Bounds that keep memory finite: slabs are counted below, bonds grow as the cube.
     if (o.slab_thickness < 1e-3) {
-        throw std::invalid_argument("--slab " + format_number(o.slab_thickness) +
-                                    ": must be at least 0.001 d");
+        throw ParameterError("slab", format_number(o.slab_thickness), "must be at least 0.001 d");
     }
     if (o.gr_range > 100.0) {
-        throw std::invalid_argument("--gr-range " + format_number(o.gr_range) +
-                                    ": must be at most 100 d");
+        throw ParameterError("gr_range", format_number(o.gr_range), "must be at most 100 d");
     }
     if (o.q6_cutoff > 10.0) {
-        throw std::invalid_argument("--q6-cutoff " + format_number(o.q6_cutoff) +
-                                    ": must be at most 10");
+        throw ParameterError("q6_cutoff", format_number(o.q6_cutoff), "must be at most 10");
     }
 }
 
@@ -179,8 +180,8 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
         packing_fraction_profile(particles, m.region, m.container.floor,
                                  std::max(m.top, m.region.hi.y()), options.slab_thickness * d);
     stage_times.phi_profile = watch.lap();
-    m.overlaps = measure_overlaps(particles, m.container, d, options.overlap_floor,
-                                  options.worst_count);
+    m.overlaps =
+        measure_overlaps(particles, m.container, d, options.overlap_floor, options.worst_count);
     stage_times.overlaps = watch.lap();
 
     LocalStructureOptions local;

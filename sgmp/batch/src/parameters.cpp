@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "sgmp/pack/metadata.hpp"
+#include "sgmp/pack/parameter_error.hpp"
 
 namespace sgmp::batch {
 namespace {
@@ -20,7 +21,7 @@ std::string option_of(const std::string& name) {
 
 [[noreturn]] void refuse(const std::string& name, const std::string& value,
                          const std::string& rule) {
-    throw std::invalid_argument(option_of(name) + " " + value + ": " + rule);
+    throw std::invalid_argument(option_of(name) + (value.empty() ? "" : " " + value) + ": " + rule);
 }
 
 template <class T>
@@ -48,8 +49,8 @@ void apply(PackRequest& r, const std::string& name, const std::string& v) {
     auto& x = r.relax;
     if (name == "count") {
         const auto count = number<long long>(name, v);
-        if (count < 1 || count > static_cast<long long>(engine::kMaxCount)) {
-            refuse(name, v, "must be between 1 and " + std::to_string(engine::kMaxCount));
+        if (count < 1 || count > static_cast<long long>(kMaxCount)) {
+            refuse(name, v, "must be between 1 and " + std::to_string(kMaxCount));
         }
         r.count = static_cast<std::size_t>(count);
     } else if (name == "arrangement") {
@@ -171,8 +172,11 @@ engine::PackRequest to_request(const ParameterValues& values, std::uint64_t seed
             apply(request, table[i].name, values[i]);
         }
     }
-    if (const auto error = engine::validate(request)) {
-        throw std::invalid_argument(*error);
+    try {
+        engine::validate(request);
+    } catch (const ParameterError& e) {
+        // The engine names the parameter as headers do; say it as the option is typed.
+        refuse(e.name(), e.value(), e.rule());
     }
     return request;
 }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "sgmp/engine/protocol.hpp"
+#include "sgmp/pack/parameter_error.hpp"
 #include "sgmp/pack/version.hpp"
 
 namespace sgmp::engine {
@@ -94,46 +95,43 @@ void record_relaxation(const RelaxParams& params, const RelaxStats& stats, Metad
 
 }  // namespace
 
-std::optional<std::string> validate(const PackRequest& request) {
+void validate(const PackRequest& request) {
     if (request.count < 1 || request.count > kMaxCount) {
-        return "--count " + std::to_string(request.count) + ": must be between 1 and " +
-               std::to_string(kMaxCount);
+        throw ParameterError("count", std::to_string(request.count),
+                             "must be between 1 and " + std::to_string(kMaxCount));
     }
-    if (!(request.phi_target > 0.0) || !(request.phi_target <= kMaxPhiTargetAccepted)) {
-        return "--phi-target " + format_number(request.phi_target) +
-               ": must be in (0, 0.7405] (the densest packing of equal spheres)";
+    if (!(request.phi_target > 0.0) || !(request.phi_target <= kMaxPhiTarget)) {
+        throw ParameterError("phi_target", format_number(request.phi_target),
+                             "must be in (0, 0.74048] (the densest packing of equal spheres)");
     }
     if (request.phi_target < 1e-3) {
         // Below this the sizing rule gives spheres smaller than the default fall step.
-        return "--phi-target " + format_number(request.phi_target) +
-               ": must be at least 0.001 (smaller targets give vanishing diameters)";
+        throw ParameterError("phi_target", format_number(request.phi_target),
+                             "must be at least 0.001 (smaller targets give vanishing diameters)");
     }
     if (request.size_modes.empty()) {
-        return std::string("--size-modes: needs at least one mode");
+        throw ParameterError("size_modes", "", "needs at least one mode");
     }
     for (const SizeMode& m : request.size_modes) {
         if (!(m.relative_diameter > 0.0) || !(m.fraction > 0.0) ||
             !std::isfinite(m.relative_diameter) || !std::isfinite(m.fraction)) {
-            return "--size-modes " + size_modes_to_string(request.size_modes) +
-                   ": relative diameters and fractions must be positive";
+            throw ParameterError("size_modes", size_modes_to_string(request.size_modes),
+                                 "relative diameters and fractions must be positive");
         }
     }
     const Sizes sizes = sizes_of(request);
     if (!(sizes.largest < kContainerSide)) {
-        return "--count " + std::to_string(request.count) + ": the diameter " +
-               format_number(sizes.largest) + " it gives at phi-target " +
-               format_number(request.phi_target) + " does not fit the 1.25-wide container";
+        throw ParameterError("count", std::to_string(request.count),
+                             "the diameter " + format_number(sizes.largest) +
+                                 " it gives at phi_target " + format_number(request.phi_target) +
+                                 " does not fit the 1.25-wide container");
     }
-    if (const auto error = validate(request.protocol, sizes.smallest)) {
-        return error;
-    }
-    return validate(request.relax);
+    validate(request.protocol, sizes.smallest);
+    validate(request.relax);
 }
 
 Pack make_start_pack(const PackRequest& request) {
-    if (const auto error = validate(request)) {
-        throw std::invalid_argument(*error);
-    }
+    validate(request);
     Random rng(request.seed);
     Pack pack;
     pack.particles = starting_particles(request, rng);
@@ -145,9 +143,7 @@ Pack make_start_pack(const PackRequest& request) {
 }
 
 Pack make_pack(const PackRequest& request, const ProgressCallback& progress, PackStats* stats) {
-    if (const auto error = validate(request)) {
-        throw std::invalid_argument(*error);
-    }
+    validate(request);
     const Container container;
     const Sizes sizes = sizes_of(request);
     const double d = sizes.scale;

@@ -41,9 +41,7 @@ Protocol::Protocol(const Container& container, const ProtocolParams& params, dou
       params_(params),
       max_radius_(max_radius),
       grid_(container, cell_side(max_radius)) {
-    if (const auto error = validate(params, 2.0 * max_radius)) {
-        throw std::invalid_argument(*error);
-    }
+    validate(params, 2.0 * max_radius);
     for (const int n : params.sweep_stages) {
         tables_.emplace_back(n);
     }

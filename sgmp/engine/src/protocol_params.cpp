@@ -3,55 +3,48 @@
 #include <charconv>
 #include <cmath>
 
+#include "sgmp/pack/parameter_error.hpp"
+
 namespace sgmp::engine {
 
-namespace {
-
-std::string option_error(std::string_view option, const std::string& value, std::string_view rule) {
-    return "--" + std::string(option) + " " + value + ": " + std::string(rule);
-}
-
-}  // namespace
-
-std::optional<std::string> validate(const ProtocolParams& p, double diameter) {
+void validate(const ProtocolParams& p, double diameter) {
     if (!(p.circle_factor > 1.0) || !std::isfinite(p.circle_factor)) {
-        return option_error("circle-factor", format_number(p.circle_factor),
-                            "must be a number greater than 1 (sweep radius = d / factor)");
+        throw ParameterError("circle_factor", format_number(p.circle_factor),
+                             "must be a number greater than 1 (sweep radius = d / factor)");
     }
     if (p.sweep_stages.empty()) {
-        return option_error("sweep-stages", "", "needs at least one stage");
+        throw ParameterError("sweep_stages", "", "needs at least one stage");
     }
     for (std::size_t i = 0; i < p.sweep_stages.size(); ++i) {
         const int n = p.sweep_stages[i];
         if (n < 3 || n > kMaxSweepPositions) {
-            return option_error(p.sweep_stages.size() == 1 ? "sweep-positions" : "sweep-stages",
-                                stages_to_string(p.sweep_stages),
-                                "every stage needs 3 to 1000000 sweep positions");
+            throw ParameterError(p.sweep_stages.size() == 1 ? "sweep_positions" : "sweep_stages",
+                                 stages_to_string(p.sweep_stages),
+                                 "every stage needs 3 to 1000000 sweep positions");
         }
         if (i > 0 && n <= p.sweep_stages[i - 1]) {
-            return option_error("sweep-stages", stages_to_string(p.sweep_stages),
-                                "stages must have strictly increasing position counts");
+            throw ParameterError("sweep_stages", stages_to_string(p.sweep_stages),
+                                 "stages must have strictly increasing position counts");
         }
     }
     if (p.lower_neighbours < 1) {
-        return option_error("lower-neighbours", std::to_string(p.lower_neighbours),
-                            "must be at least 1");
+        throw ParameterError("lower_neighbours", std::to_string(p.lower_neighbours),
+                             "must be at least 1");
     }
     if (!(p.fall_step > 0.0) || !(p.fall_step < diameter)) {
-        return option_error(
-            "fall-step", format_number(p.fall_step),
+        throw ParameterError(
+            "fall_step", format_number(p.fall_step),
             "must be greater than 0 and less than the diameter " + format_number(diameter));
     }
     if (!(p.momentum >= 0.0) || !(p.momentum < 1.0)) {
-        return option_error("momentum", format_number(p.momentum), "must be in [0, 1)");
+        throw ParameterError("momentum", format_number(p.momentum), "must be in [0, 1)");
     }
     if (p.stall_moves < 1) {
-        return option_error("stall-moves", std::to_string(p.stall_moves), "must be at least 1");
+        throw ParameterError("stall_moves", std::to_string(p.stall_moves), "must be at least 1");
     }
     if (p.max_moves < 1) {
-        return option_error("max-moves", std::to_string(p.max_moves), "must be at least 1");
+        throw ParameterError("max_moves", std::to_string(p.max_moves), "must be at least 1");
     }
-    return std::nullopt;
 }
 
 std::string_view to_string(FallMode mode) {

@@ -2,46 +2,40 @@
 
 #include <cmath>
 
+#include "sgmp/pack/parameter_error.hpp"
+
 namespace sgmp::engine {
 
-namespace {
-
-std::string option_error(std::string_view option, const std::string& value, std::string_view rule) {
-    return "--" + std::string(option) + " " + value + ": " + std::string(rule);
-}
-
-}  // namespace
-
-std::optional<std::string> validate(const RelaxParams& p) {
+void validate(const RelaxParams& p) {
     if (!(p.stiffness >= 1e2) || !(p.stiffness <= 1e12)) {
-        return option_error("relax-stiffness", format_number(p.stiffness),
-                            "must be in [100, 1e12] (m*g/d)");
+        throw ParameterError("relax_stiffness", format_number(p.stiffness),
+                             "must be in [100, 1e12] (m*g/d)");
     }
     if (!(p.stiffness_factor >= 1.0) || !(p.stiffness_factor <= 1e6)) {
-        return option_error("relax-stiffness-factor", format_number(p.stiffness_factor),
-                            "must be in [1, 1e6]");
+        throw ParameterError("relax_stiffness_factor", format_number(p.stiffness_factor),
+                             "must be in [1, 1e6]");
     }
     if (p.stages < 1 || p.stages > 10) {
-        return option_error("relax-stages", std::to_string(p.stages), "must be 1 to 10");
+        throw ParameterError("relax_stages", std::to_string(p.stages), "must be 1 to 10");
     }
     if (!(p.stiffness * std::pow(p.stiffness_factor, p.stages - 1) <= 1e12)) {
-        return option_error("relax-stages", std::to_string(p.stages),
-                            "the last stage's stiffness must not exceed 1e12 m*g/d");
+        throw ParameterError("relax_stages", std::to_string(p.stages),
+                             "the last stage's stiffness must not exceed 1e12 m*g/d");
     }
     if (!(p.shell >= 0.0) || !(p.shell <= 0.01)) {
-        return option_error("relax-shell", format_number(p.shell), "must be in [0, 0.01]");
+        throw ParameterError("relax_shell", format_number(p.shell), "must be in [0, 0.01]");
     }
     if (!(p.force_tolerance > 0.0) || !(p.force_tolerance <= 1.0)) {
-        return option_error("relax-force-tolerance", format_number(p.force_tolerance),
-                            "must be in (0, 1] (m*g)");
+        throw ParameterError("relax_force_tolerance", format_number(p.force_tolerance),
+                             "must be in (0, 1] (m*g)");
     }
     if (!(p.time > 0.0) || !(p.time <= 1e4)) {
-        return option_error("relax-time", format_number(p.time), "must be in (0, 10000]");
+        throw ParameterError("relax_time", format_number(p.time), "must be in (0, 10000]");
     }
     if (!(p.crossings > 0.0) || !(p.crossings <= 1e4)) {
-        return option_error("relax-crossings", format_number(p.crossings), "must be in (0, 10000]");
+        throw ParameterError("relax_crossings", format_number(p.crossings),
+                             "must be in (0, 10000]");
     }
-    return std::nullopt;
 }
 
 std::string_view to_string(RelaxMode mode) {

@@ -14,6 +14,7 @@ struct DumpColumns {
     std::array<int, 3> position{-1, -1, -1};
     int radius = -1;
     int diameter = -1;
+    int bin = -1;
     std::size_t width = 0;
 };
 
@@ -32,6 +33,8 @@ DumpColumns parse_atom_labels(const std::vector<std::string_view>& labels,
             columns.radius = index;
         } else if (label == "diameter") {
             columns.diameter = index;
+        } else if (label == "bin") {
+            columns.bin = index;
         }
         for (std::size_t axis = 0; axis < 3; ++axis) {
             if (label == position_labels[axis][0] ||
@@ -151,6 +154,14 @@ Pack read_snapshot(detail::LineReader& reader) {
         p.radius = columns.radius >= 0
                        ? field_number(fields[columns.radius], "radius", reader)
                        : 0.5 * field_number(fields[columns.diameter], "diameter", reader);
+        if (columns.bin >= 0) {
+            const auto bin = detail::parse_integer(fields[columns.bin]);
+            if (!bin || *bin < 0 || *bin > 1000000) {
+                throw reader.error("column 'bin' holds '" + std::string(fields[columns.bin]) +
+                                   "', which is not an integer in [0, 1000000]");
+            }
+            p.color = static_cast<int>(*bin);
+        }
         validator.check(p, reader);
         pack.particles.push_back(p);
     }

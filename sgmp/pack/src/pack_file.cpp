@@ -3,8 +3,13 @@
 #include <boost/iostreams/filter/gzip.hpp>
 #include <boost/iostreams/filtering_stream.hpp>
 #include <fstream>
+#include <sstream>
+#include <stdexcept>
 
 #include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/dump_format.hpp"
+#include "sgmp/pack/lammps_data_format.hpp"
+#include "sgmp/pack/vtk_format.hpp"
 #include "sgmp/pack/xyz_format.hpp"
 #include "text_fields.hpp"
 
@@ -19,7 +24,28 @@ bool starts_with_gzip_magic(std::istream& in) {
     return first == 0x1f && second == 0x8b;
 }
 
-Pack read_detected(std::istream& in, const std::string& source) {
+void refuse_frame(const std::string& source, const ReadOptions& options, const char* format) {
+    if (options.frame) {
+        throw InputError(source, 0,
+                         std::string("a frame can be chosen in extended XYZ files only; this is "
+                                     "a ") +
+                             format + " file");
+    }
+}
+
+PackRead single(Pack pack, const ReadOptions& options) {
+    if (options.radius) {
+        for (auto& p : pack.particles) {
+            p.radius = *options.radius;
+        }
+    }
+    PackRead read;
+    read.pack = std::move(pack);
+    return read;
+}
+
+PackRead read_detected(std::istream& in, const std::string& source, bool data_name,
+                       const ReadOptions& options) {
     detail::LineReader reader(in, source);
     std::string line;
     std::size_t blanks = 0;
@@ -30,20 +56,38 @@ Pack read_detected(std::istream& in, const std::string& source) {
         throw InputError(source, 0, "empty file");
     }
     const bool is_dump = line.rfind("ITEM:", 0) == 0;
+    const bool is_data = !is_dump && (data_name || line.rfind("LAMMPS data file", 0) == 0);
     reader.put_back(line);
     if (is_dump) {
-        return detail::read_dump_lines(reader);
+        refuse_frame(source, options, "dump");
+        return single(detail::read_dump_lines(reader), options);
+    }
+    if (is_data) {
+        refuse_frame(source, options, "LAMMPS data");
+        // The data reader numbers lines itself: hand it the rest of the stream.
+        std::ostringstream rest;
+        std::string text;
+        while (reader.next(text)) {
+            rest << text << '\n';
+        }
+        std::istringstream again(rest.str());
+        return single(read_lammps_data(again, source), options);
     }
     if (blanks > 0) {
         throw InputError(source, 1, "blank line where the particle count was expected");
     }
-    return detail::read_xyz_lines(reader);
+    return detail::read_xyz_lines(reader, options);
 }
 
 }  // namespace
 
 Pack read_pack_file(const std::filesystem::path& path) {
+    return read_pack_file(path, ReadOptions{}).pack;
+}
+
+PackRead read_pack_file(const std::filesystem::path& path, const ReadOptions& options) {
     const std::string source = path.string();
+    const bool data_name = format_from_extension(path) == PackFormat::lammps_data;
     std::ifstream file(path, std::ios::binary);
     if (!file) {
         throw InputError(source, 0, "cannot open for reading");
@@ -54,7 +98,7 @@ Pack read_pack_file(const std::filesystem::path& path) {
             decompressed.push(boost::iostreams::gzip_decompressor());
             decompressed.push(file);
             try {
-                return read_detected(decompressed, source);
+                return read_detected(decompressed, source, data_name, options);
             } catch (const InputError&) {
                 // Decompression failures surface as a bad stream, not as gzip_error.
                 if (decompressed.bad()) {
@@ -63,7 +107,7 @@ Pack read_pack_file(const std::filesystem::path& path) {
                 throw;
             }
         }
-        return read_detected(file, source);
+        return read_detected(file, source, data_name, options);
     } catch (const boost::iostreams::gzip_error& error) {
         throw InputError(source, 0, std::string("corrupt or truncated gzip data: ") + error.what());
     }
@@ -71,6 +115,80 @@ Pack read_pack_file(const std::filesystem::path& path) {
 
 void write_pack_file(const std::filesystem::path& path, const Pack& pack, bool overwrite) {
     write_file_atomically(path, overwrite, [&](std::ostream& out) { write_xyz(out, pack); });
+}
+
+std::filesystem::path container_file_for(const std::filesystem::path& path) {
+    std::filesystem::path stem = path;
+    if (stem.extension() == ".vtk") {
+        stem.replace_extension();
+    }
+    stem += ".container.vtk";
+    return stem;
+}
+
+namespace {
+
+/// The text of one format, produced in memory first, so a pack the format cannot carry
+/// fails before any file is touched.
+std::string format_text(const Pack& pack, PackFormat format) {
+    std::ostringstream out;
+    switch (format) {
+        case PackFormat::xyz:
+        case PackFormat::xyz_gz:
+            write_xyz(out, pack);
+            break;
+        case PackFormat::lammps_data:
+            write_lammps_data(out, pack);
+            break;
+        case PackFormat::lammps_dump:
+            write_dump_custom(out, pack);
+            break;
+        case PackFormat::vtk:
+            write_vtk_particles(out, pack);
+            break;
+    }
+    return out.str();
+}
+
+void check_name(const std::filesystem::path& path, PackFormat format) {
+    const bool gz_name = path.filename().string().ends_with(".gz");
+    if (format == PackFormat::xyz_gz && !gz_name) {
+        throw std::invalid_argument(path.string() +
+                                    ": format xyz.gz needs a file name ending in .gz");
+    }
+    if (format != PackFormat::xyz_gz && gz_name) {
+        throw std::invalid_argument(path.string() + ": format " + std::string(to_string(format)) +
+                                    " is not compressed; a name ending in .gz is for xyz.gz");
+    }
+}
+
+void write_text(const std::filesystem::path& path, const std::string& text, bool overwrite) {
+    write_file_atomically(path, overwrite, [&](std::ostream& out) { out << text; });
+}
+
+}  // namespace
+
+void write_pack_as(const std::filesystem::path& path, const Pack& pack, PackFormat format,
+                   const WriteOptions& options) {
+    check_name(path, format);
+    check_writable(path, options.overwrite);
+    const std::string text = format_text(pack, format);
+    if (format != PackFormat::vtk) {
+        write_text(path, text, options.overwrite);
+        return;
+    }
+    const std::filesystem::path container = container_file_for(path);
+    check_writable(container, options.overwrite);
+    std::ostringstream box;
+    write_vtk_container(box, pack);
+    write_text(container, box.str(), options.overwrite);
+    try {
+        write_text(path, text, options.overwrite);
+    } catch (...) {
+        std::error_code ignored;
+        std::filesystem::remove(container, ignored);
+        throw;
+    }
 }
 
 }  // namespace sgmp

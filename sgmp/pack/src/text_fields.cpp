@@ -1,5 +1,6 @@
 #include "text_fields.hpp"
 
+#include <algorithm>
 #include <charconv>
 
 namespace sgmp::detail {
@@ -103,6 +104,20 @@ void ParticleValidator::check(const Particle& particle, const LineReader& reader
         throw reader.error("id " + std::to_string(particle.id) + " repeats the id of line " +
                            std::to_string(it->second));
     }
+}
+
+int decimals_of(std::string_view field) {
+    const std::size_t e = field.find_first_of("eE");
+    const std::string_view mantissa = field.substr(0, e);
+    const std::size_t dot = mantissa.find('.');
+    int decimals = dot == std::string_view::npos ? 0 : static_cast<int>(mantissa.size() - dot - 1);
+    if (e != std::string_view::npos) {
+        const auto exponent = parse_integer(field.substr(e + 1));
+        if (exponent && *exponent > -400 && *exponent < 400) {
+            decimals -= static_cast<int>(*exponent);
+        }
+    }
+    return std::max(decimals, 0);
 }
 
 }  // namespace sgmp::detail

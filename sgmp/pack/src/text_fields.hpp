@@ -47,6 +47,10 @@ std::vector<std::string_view> split_fields(std::string_view line);
 std::optional<double> parse_double(std::string_view field);
 std::optional<std::int64_t> parse_integer(std::string_view field);
 
+/// Digits after the decimal point of a number's text, less its decimal exponent
+/// ("0.125" 3, "1.5e-05" 6, "12" 0, "1e3" 0): the place of its last written digit.
+int decimals_of(std::string_view field);
+
 /// True when the line has only blanks.
 bool is_blank(std::string_view line);
 
@@ -71,9 +75,10 @@ class ParticleValidator {
 }  // namespace sgmp::detail
 
 #include "sgmp/pack/pack.hpp"
+#include "sgmp/pack/read_options.hpp"
 
 namespace sgmp::detail {
 /// Format readers on an already-open line reader (used after format detection).
-Pack read_xyz_lines(LineReader& reader);
+PackRead read_xyz_lines(LineReader& reader, const ReadOptions& options);
 Pack read_dump_lines(LineReader& reader);
 }  // namespace sgmp::detail

@@ -1,15 +1,17 @@
 #include "sgmp/pack/xyz_format.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <stdexcept>
 
+#include "sgmp/pack/pack_extent.hpp"
 #include "text_fields.hpp"
 
 namespace sgmp {
 namespace {
 
-constexpr std::string_view kProperties = "id:I:1:pos:R:3:radius:R:1:color:I:1";
+constexpr std::string_view kProperties = "id:I:1:pos:R:3:radius:R:1:bin:I:1";
 
 /// Most columns a particle line may declare in all; far above any real file, and small
 /// enough that column positions and the line width never overflow an int.
@@ -26,6 +28,26 @@ void check_value(const std::string& key, const std::string& value) {
     }
 }
 
+bool is_identifier(const std::string& word) {
+    const auto head_ok = [](char c) {
+        return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
+    };
+    const auto tail_ok = [&](char c) {
+        return head_ok(c) || std::isdigit(static_cast<unsigned char>(c)) || c == '-';
+    };
+    return !word.empty() && head_ok(word.front()) &&
+           std::all_of(word.begin() + 1, word.end(), tail_ok);
+}
+
+/// `text` in lower case (ASCII), for names compared in any case.
+std::string lower(std::string_view text) {
+    std::string out(text);
+    for (char& c : out) {
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+    return out;
+}
+
 /// key=value pairs of the comment line; values may be double-quoted.
 std::vector<std::pair<std::string, std::string>> parse_comment(const std::string& line,
                                                                const detail::LineReader& reader) {
@@ -39,9 +61,15 @@ std::vector<std::pair<std::string, std::string>> parse_comment(const std::string
         const std::size_t eq = line.find('=', pos);
         const std::size_t space = line.find_first_of(" \t", pos);
         if (eq == std::string::npos || (space != std::string::npos && space < eq)) {
-            const std::string word =
+            std::string word =
                 line.substr(pos, space == std::string::npos ? std::string::npos : space - pos);
-            throw reader.error("expected key=value in the header, found '" + word + "'");
+            if (!is_identifier(word)) {
+                throw reader.error("expected key=value or a bare key in the header, found '" +
+                                   word + "'");
+            }
+            pairs.emplace_back(std::move(word), "T");  // a bare key is a true flag (ASE)
+            pos = space == std::string::npos ? line.size() : space;
+            continue;
         }
         std::string key = line.substr(pos, eq - pos);
         std::string value;
@@ -73,7 +101,8 @@ struct Columns {
     int width = 0;
 };
 
-Columns parse_properties(const std::string& descriptor, const detail::LineReader& reader) {
+Columns parse_properties(const std::string& descriptor, bool have_radius,
+                         const detail::LineReader& reader) {
     std::vector<std::string> parts;
     std::size_t pos = 0;
     while (pos <= descriptor.size()) {
@@ -91,6 +120,7 @@ Columns parse_properties(const std::string& descriptor, const detail::LineReader
     Columns columns;
     for (std::size_t i = 0; i < parts.size(); i += 3) {
         const std::string& name = parts[i];
+        const std::string key = lower(name);
         const auto count = detail::parse_integer(parts[i + 2]);
         if (!count || *count < 1 || *count > kMaxColumns - columns.width) {
             throw reader.error("Properties entry '" + name + "' has count '" + parts[i + 2] +
@@ -104,19 +134,19 @@ Columns parse_properties(const std::string& descriptor, const detail::LineReader
                                    std::to_string(wanted) + " column(s)");
             }
         };
-        if (name == "id") {
+        if (key == "id") {
             expect(1);
             columns.id = columns.width;
-        } else if (name == "pos") {
+        } else if (key == "pos") {
             expect(3);
             columns.x = columns.width;
-        } else if (name == "radius") {
+        } else if (key == "radius") {
             expect(1);
             columns.radius = columns.width;
-        } else if (name == "diameter") {
+        } else if (key == "diameter") {
             expect(1);
             columns.diameter = columns.width;
-        } else if (name == "color") {
+        } else if (key == "bin" || key == "color") {
             expect(1);
             columns.color = columns.width;
         }
@@ -125,8 +155,9 @@ Columns parse_properties(const std::string& descriptor, const detail::LineReader
     if (columns.x < 0) {
         throw reader.error("Properties lacks the 'pos' column");
     }
-    if (columns.radius < 0 && columns.diameter < 0) {
-        throw reader.error("Properties lacks a 'radius' or 'diameter' column");
+    if (columns.radius < 0 && columns.diameter < 0 && !have_radius) {
+        throw reader.error(
+            "Properties lacks a 'radius' or 'diameter' column; give the radius (--radius R)");
     }
     return columns;
 }
@@ -148,7 +179,9 @@ std::int64_t integer_field(std::string_view field, const char* what,
     return *value;
 }
 
+/// One particle line; `decimals` grows to the most decimals of its numbers.
 Particle parse_particle(const std::string& line, const Columns& columns, std::int64_t index,
+                        const ReadOptions& options, int& decimals,
                         const detail::LineReader& reader) {
     const auto fields = detail::split_fields(line);
     if (static_cast<int>(fields.size()) != columns.width) {
@@ -159,23 +192,92 @@ Particle parse_particle(const std::string& line, const Columns& columns, std::in
     particle.id = columns.id >= 0 ? integer_field(fields[columns.id], "id", reader) : index + 1;
     for (int k = 0; k < 3; ++k) {
         particle.center[k] = number_field(fields[columns.x + k], "coordinate", reader);
+        decimals = std::max(decimals, detail::decimals_of(fields[columns.x + k]));
     }
-    particle.radius = columns.radius >= 0
-                          ? number_field(fields[columns.radius], "radius", reader)
-                          : 0.5 * number_field(fields[columns.diameter], "diameter", reader);
+    if (options.radius) {
+        particle.radius = *options.radius;
+    } else if (columns.radius >= 0) {
+        particle.radius = number_field(fields[columns.radius], "radius", reader);
+        decimals = std::max(decimals, detail::decimals_of(fields[columns.radius]));
+    } else {
+        particle.radius = 0.5 * number_field(fields[columns.diameter], "diameter", reader);
+        decimals = std::max(decimals, detail::decimals_of(fields[columns.diameter]));
+    }
     if (columns.color >= 0) {
-        particle.color = static_cast<int>(integer_field(fields[columns.color], "color", reader));
+        particle.color = static_cast<int>(integer_field(fields[columns.color], "bin", reader));
     }
     return particle;
+}
+
+/// Header keys the writer derives; the reader does not keep them (names in any case).
+bool is_derived_key(const std::string& key) {
+    const std::string name = lower(key);
+    return name == "properties" || name == "pbc" || name == "lattice" || name == "origin";
+}
+
+std::string lattice_text(const Container& c, double height) {
+    return format_number(c.x_max - c.x_min) + " 0 0 0 " + format_number(height) + " 0 0 0 " +
+           format_number(c.z_max - c.z_min);
+}
+
+/// Reads one frame whose count line is `count_line`; the reader stands on that line.
+PackRead read_frame(const std::string& count_line, std::size_t frame, const ReadOptions& options,
+                    detail::LineReader& reader) {
+    const auto fields = detail::split_fields(count_line);
+    const auto count = fields.size() == 1 ? detail::parse_integer(fields[0]) : std::nullopt;
+    if (!count || *count < 0) {
+        throw reader.error(frame == 1
+                               ? "expected the particle count, found '" + count_line + "'"
+                               : "expected the particle count of frame " + std::to_string(frame) +
+                                     " (or the end of the file), found '" + count_line +
+                                     "'; are there more particle lines than the frame's count?");
+    }
+    std::string line;
+    if (!reader.next(line)) {
+        throw reader.error("file ends before the header line");
+    }
+    PackRead read;
+    read.frame = frame;
+    std::optional<Columns> columns;
+    for (auto& [key, value] : parse_comment(line, reader)) {
+        if (lower(key) == "properties") {
+            columns = parse_properties(value, options.radius.has_value(), reader);
+        } else if (!is_derived_key(key)) {
+            read.pack.metadata.set(key, std::move(value));
+        }
+    }
+    if (!columns) {
+        throw reader.error("header lacks Properties=...");
+    }
+    // The count is only a claim until the lines arrive: reserve no more than a small
+    // block up front, so a short file claiming 10^15 particles fails at its end, not in
+    // the allocator.
+    read.pack.particles.reserve(static_cast<std::size_t>(std::min<std::int64_t>(*count, 1 << 16)));
+    detail::ParticleValidator validator;
+    int decimals = 0;
+    for (std::int64_t i = 0; i < *count; ++i) {
+        if (!reader.next(line)) {
+            throw reader.error("file ends after " + std::to_string(i) + " of " +
+                               std::to_string(*count) + " particle lines");
+        }
+        read.pack.particles.push_back(parse_particle(line, *columns, i, options, decimals, reader));
+        validator.check(read.pack.particles.back(), reader);
+    }
+    read.decimals = decimals;
+    return read;
 }
 
 }  // namespace
 
 void write_xyz(std::ostream& out, const Pack& pack) {
+    const Container container = container_of(pack);
+    const double height = top_of(pack, container) - container.floor;
     out << pack.particles.size() << '\n';
-    out << "Properties=" << kProperties << " pbc=\"F F F\"";
+    out << "Properties=" << kProperties << " Lattice=\"" << lattice_text(container, height)
+        << "\" Origin=\"" << format_number(container.x_min) << ' ' << format_number(container.floor)
+        << ' ' << format_number(container.z_min) << "\" pbc=\"F F F\"";
     for (const auto& [key, value] : pack.metadata.entries()) {
-        if (key == "Properties" || key == "pbc") {
+        if (is_derived_key(key)) {
             continue;
         }
         check_value(key, value);
@@ -195,58 +297,45 @@ void write_xyz(std::ostream& out, const Pack& pack) {
 }
 
 Pack read_xyz(std::istream& in, const std::string& source) {
+    return read_xyz(in, source, ReadOptions{}).pack;
+}
+
+PackRead read_xyz(std::istream& in, const std::string& source, const ReadOptions& options) {
     detail::LineReader reader(in, source);
-    return detail::read_xyz_lines(reader);
+    return detail::read_xyz_lines(reader, options);
 }
 
 namespace detail {
 
-Pack read_xyz_lines(LineReader& reader) {
+PackRead read_xyz_lines(LineReader& reader, const ReadOptions& options) {
+    if (options.frame && *options.frame < 1) {
+        throw InputError(reader.source(), 0, "frame 0 does not exist: frames count from 1");
+    }
     std::string line;
     if (!reader.next(line) || is_blank(line)) {
         throw InputError(reader.source(), reader.line_number(),
                          "empty file: expected the particle count on line 1");
     }
-    const auto fields = split_fields(line);
-    const auto count = fields.size() == 1 ? parse_integer(fields[0]) : std::nullopt;
-    if (!count || *count < 0) {
-        throw reader.error("expected the particle count, found '" + line + "'");
-    }
-    if (!reader.next(line)) {
-        throw reader.error("file ends before the header line");
-    }
-    Pack pack;
-    std::optional<Columns> columns;
-    for (auto& [key, value] : parse_comment(line, reader)) {
-        if (key == "Properties") {
-            columns = parse_properties(value, reader);
-        } else if (key != "pbc") {
-            pack.metadata.set(key, std::move(value));
+    std::optional<PackRead> chosen;
+    std::size_t frames = 0;
+    do {
+        if (frames > 0 && is_blank(line)) {
+            continue;  // blank lines may follow the last frame
         }
-    }
-    if (!columns) {
-        throw reader.error("header lacks Properties=...");
-    }
-    // The count is only a claim until the lines arrive: reserve no more than a small
-    // block up front, so a short file claiming 10^15 particles fails at its end, not in
-    // the allocator.
-    pack.particles.reserve(static_cast<std::size_t>(std::min<std::int64_t>(*count, 1 << 16)));
-    ParticleValidator validator;
-    for (std::int64_t i = 0; i < *count; ++i) {
-        if (!reader.next(line)) {
-            throw reader.error("file ends after " + std::to_string(i) + " of " +
-                               std::to_string(*count) + " particle lines");
+        ++frames;
+        PackRead read = read_frame(line, frames, options, reader);
+        if (!options.frame || *options.frame == frames) {
+            chosen = std::move(read);
         }
-        pack.particles.push_back(parse_particle(line, *columns, i, reader));
-        validator.check(pack.particles.back(), reader);
+    } while (reader.next(line));
+    if (!chosen) {
+        throw InputError(reader.source(), 0,
+                         "frame " + std::to_string(*options.frame) +
+                             " does not exist: the file has " + std::to_string(frames) +
+                             " frame(s), counted from 1");
     }
-    while (reader.next(line)) {
-        if (!is_blank(line)) {
-            throw reader.error("more particle lines than the count " + std::to_string(*count) +
-                               " on line 1 (one frame per file)");
-        }
-    }
-    return pack;
+    chosen->frames = frames;
+    return std::move(*chosen);
 }
 
 }  // namespace detail

@@ -46,7 +46,7 @@ struct PourParameters {
     /// (start_jitter.hpp); 0 keeps the arrangement exactly.
     double start_jitter = 0.0;
 
-    /// Throws std::invalid_argument naming the parameter and the rule it breaks.
+    /// Throws ParameterError (the parameter's name, its value, the rule it breaks).
     void validate() const;
 
     [[nodiscard]] double diameter() const;

@@ -23,13 +23,6 @@
 
 namespace sgmp::engine {
 
-/// Largest φ* accepted: the densest packing of equal spheres, π/√18 ≈ 0.74048, rounded to
-/// the 0.7405 users type.
-inline constexpr double kMaxPhiTargetAccepted = 0.7405;
-
-/// Largest particle count accepted.
-inline constexpr std::size_t kMaxCount = 10'000'000;
-
 struct PackRequest {
     std::size_t count = 1002;
     Arrangement arrangement = Arrangement::LargeDense;
@@ -60,13 +53,14 @@ struct PackStats {
 /// Called as (particles dropped, total) now and then while packing.
 using ProgressCallback = std::function<void(std::size_t, std::size_t)>;
 
-/// One-line error naming the option, the value and the rule; nullopt when valid.
-std::optional<std::string> validate(const PackRequest& request);
+/// Checks every parameter of the request; throws ParameterError (the parameter's header
+/// name, its value, the rule) for the first that breaks its rule.
+void validate(const PackRequest& request);
 
 /// The pack made by the request, with metadata: generator=sgmp, version, count, diameter,
 /// phi_target, arrangement, seed, every protocol parameter, container, start_height and
 /// the statistics; with a relaxation, its parameters and statistics follow (`relax_*`). Throws
-/// std::invalid_argument (the `validate` message) for bad requests.
+/// ParameterError (see `validate`) for bad requests.
 Pack make_pack(const PackRequest& request, const ProgressCallback& progress = {},
                PackStats* stats = nullptr);
 

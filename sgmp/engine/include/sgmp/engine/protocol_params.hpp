@@ -87,9 +87,9 @@ struct ProtocolParams {
 /// Largest number of sweep positions in one stage.
 inline constexpr int kMaxSweepPositions = 1000000;
 
-/// Checks the parameters for particles of diameter `diameter`; returns a one-line error
-/// naming the command-line option, the value and the rule, or nullopt when valid.
-std::optional<std::string> validate(const ProtocolParams& params, double diameter);
+/// Checks the parameters for particles of diameter `diameter`; throws ParameterError
+/// (the parameter's header name, its value, the rule) for the first that breaks its rule.
+void validate(const ProtocolParams& params, double diameter);
 
 std::string_view to_string(FallMode mode);
 std::string_view to_string(GapRule rule);

@@ -47,8 +47,9 @@ struct RelaxParams {
     double crossings = 40.0;
 };
 
-/// One-line error naming the option, the value and the rule; nullopt when valid.
-std::optional<std::string> validate(const RelaxParams& params);
+/// Throws ParameterError (the parameter's header name, its value, the rule) for the
+/// first parameter that breaks its rule.
+void validate(const RelaxParams& params);
 
 std::string_view to_string(RelaxMode mode);
 std::optional<RelaxMode> parse_relax_mode(std::string_view text);

@@ -13,9 +13,16 @@
 /// the file (a dump still being written, or a stopped run), even in the middle of a line,
 /// is skipped when an earlier one is complete. An error followed by further lines, or in
 /// the only snapshot, rejects the file. The timestep and box are recorded in the metadata
-/// (`timestep`, `dump_box`). Errors name source:line and the reason.
+/// (`timestep`, `dump_box`); a `bin` column, if present, gives the colour bins. Errors name
+/// source:line and the reason.
+///
+/// The writer gives one snapshot, `ITEM: ATOMS id type x y z radius bin`, with the box
+/// bounds `ff ff ff` of the container up to the top (pack_extent.hpp), types by size mode
+/// (atom_types.hpp), the header's `timestep` or 0, and numbers in shortest round-trip text.
+/// The format has no place for provenance: use the data or XYZ format to keep it.
 
 #include <istream>
+#include <ostream>
 #include <string>
 
 #include "sgmp/pack/pack.hpp"
@@ -23,5 +30,7 @@
 namespace sgmp {
 
 Pack read_dump_custom(std::istream& in, const std::string& source);
+
+void write_dump_custom(std::ostream& out, const Pack& pack);
 
 }  // namespace sgmp

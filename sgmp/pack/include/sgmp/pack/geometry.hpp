@@ -31,8 +31,11 @@ inline constexpr double kControlSide = 1.0;
 inline constexpr double kContainerSide = 1.25;
 /// Target packing fraction of every thesis run.
 inline constexpr double kThesisPhiTarget = 0.63;
-/// Densest packing of equal spheres, π/(3√2); no target may exceed it.
+/// Densest packing of equal spheres, π/(3√2) = 0.740480489…, to five decimals: no target
+/// packing fraction may exceed it (every part checks against this one bound).
 inline constexpr double kMaxPhiTarget = 0.74048;
+/// Largest particle count any part accepts: a pack, a pour, a measured file.
+inline constexpr std::size_t kMaxCount = 10'000'000;
 
 /// The container: walls at x = x_min, x_max and z = z_min, z_max, a floor at y = floor,
 /// no lid. A particle is inside when its sphere lies between the walls and above the floor.

@@ -24,6 +24,18 @@ inline std::string seed_rule(std::string_view text) {
     return {};
 }
 
+/// A particle count: a whole number in [1, max] written in decimal digits ("-5" is
+/// refused rather than wrapped).
+inline std::string count_rule(std::string_view text, std::uint64_t max) {
+    std::uint64_t value = 0;
+    const auto* end = text.data() + text.size();
+    const auto result = std::from_chars(text.data(), end, value);
+    if (text.empty() || result.ec != std::errc() || result.ptr != end || value < 1 || value > max) {
+        return "must be a whole number from 1 to " + std::to_string(max);
+    }
+    return {};
+}
+
 /// A finite number in [lo, hi].
 inline std::string finite_range_rule(std::string_view text, double lo, double hi,
                                      const std::string& range) {

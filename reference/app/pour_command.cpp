@@ -1,0 +1,183 @@
+#include "pour_command.hpp"
+
+#include "launcher_options.hpp"
+
+#include <cstdio>
+#include <iostream>
+
+#include "sgmp/cli/run_main.hpp"
+#include "sgmp/engine/arrangement.hpp"
+#include "sgmp/engine/make_pack.hpp"
+#include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/input_error.hpp"
+#include "sgmp/pack/interrupt.hpp"
+#include "sgmp/pack/option_rules.hpp"
+#include "sgmp/pack/pack_file.hpp"
+
+namespace sgmp::reference {
+namespace {
+
+/// The engine's starting arrangement for this pour (same count, φ*, hence diameter, and
+/// seed), made by the engine itself.
+StartPositions start_positions(const std::string& name, const PourParameters& p) {
+    engine::PackRequest request;
+    request.count = p.count;
+    request.arrangement = *engine::parse_arrangement(name);
+    request.seed = p.seed;
+    request.phi_target = p.phi_target;
+    const Pack pack = engine::make_start_pack(request);
+    StartPositions start;
+    start.name = std::string(engine::to_string(request.arrangement));
+    for (const Particle& particle : pack.particles) {
+        start.centers.push_back(particle.center);
+        start.colours.push_back(particle.color);
+    }
+    return start;
+}
+
+}  // namespace
+
+CLI::App* add_pour_command(CLI::App& app, PourOptions& o) {
+    CLI::App* cmd = app.add_subcommand(
+        "pour", "Pour N equal spheres into the container and write the settled pack.");
+    PourParameters& p = o.request.parameters;
+    cmd->add_option("--count", p.count,
+                    "Number of spheres N; d follows the sizing rule "
+                    "(N/3)(pi/6)d^3 = phi_target")
+        ->required()
+        ->check([](const std::string& text) { return count_rule(text, kMaxCount); });
+    cmd->add_option("--seed", p.seed,
+                    "Seed of the LIGGGHTS insertion and the colour "
+                    "labels (integer)")
+        ->required()
+        ->check([](const std::string& text) { return sgmp::seed_rule(text); });
+    cmd->add_option("--friction", p.friction,
+                    "Sliding friction coefficient mu, particles and walls")
+        ->capture_default_str();
+    cmd->add_option("--out", o.out, "Output pack file (extended XYZ; .gz compresses)")->required();
+    cmd->add_option("--ranks", p.ranks,
+                    "MPI ranks; above 1 runs LIGGGHTS under --launcher with a processor grid "
+                    "chosen from the container (PY = 1: x and z split, never the fall)")
+        ->capture_default_str();
+    add_launcher_options(*cmd, o.request);
+    cmd->add_option("--timeout", o.timeout, "Wall-clock limit in seconds; 0 means none")
+        ->capture_default_str()
+        ->check([](const std::string& text) {
+            return sgmp::finite_range_rule(text, 0.0, 2592000.0, "[0, 2592000] s (30 days)");
+        });
+    cmd->add_option("--from-arrangement", o.arrangement,
+                    std::string("Start from an SGMP starting arrangement (") +
+                        std::string(sgmp::engine::arrangement_names()) +
+                        ", made with --seed) instead of a loose random cloud")
+        ->check([](const std::string& name) {
+            return sgmp::engine::parse_arrangement(name)
+                       ? std::string()
+                       : "must be one of " + std::string(sgmp::engine::arrangement_names());
+        });
+    cmd->add_option("--start-jitter", p.start_jitter,
+                    "With --from-arrangement: move each sphere horizontally by a random "
+                    "offset up to this fraction of d (no overlaps created), which breaks "
+                    "symmetries DEM keeps for ever (a single column lands as a tower)")
+        ->capture_default_str();
+    cmd->add_flag("--force", o.force, "Overwrite an existing output file");
+    cmd->add_option("--keep-work", o.keep_work,
+                    "Run in this directory and keep it (input script, log, dump); "
+                    "default: a temporary directory, removed afterwards");
+    cmd->add_option("--restitution", p.restitution, "Normal coefficient of restitution e")
+        ->capture_default_str();
+    cmd->add_option("--rolling-friction", p.rolling_friction,
+                    "Rolling friction coefficient (constant directional torque)")
+        ->capture_default_str();
+    cmd->add_option("--tangential-damping", o.tangential_damping,
+                    "Viscous damping of the tangential contact spring, on or off (off for "
+                    "exactly frictionless pours: at mu = 0 it still turns the spheres)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"on", "off"}));
+    cmd->add_option("--youngs-modulus", p.youngs_modulus,
+                    "Young's modulus E in Pa (must exceed 5e6)")
+        ->capture_default_str();
+    cmd->add_option("--poisson-ratio", p.poisson_ratio, "Poisson's ratio nu")
+        ->capture_default_str();
+    cmd->add_option("--density", p.density, "Particle density in kg/m^3")->capture_default_str();
+    cmd->add_option("--gravity", p.gravity, "Gravitational acceleration in m/s^2 (along -Y)")
+        ->capture_default_str();
+    cmd->add_option("--timestep-fraction", p.timestep_fraction,
+                    "Time step as a fraction of the Rayleigh time")
+        ->capture_default_str();
+    cmd->add_option("--settle-threshold", p.settle_threshold,
+                    "Settled when the translational kinetic energy per particle stays "
+                    "below this times m g d at two consecutive checks")
+        ->capture_default_str();
+    cmd->add_option("--check-time", p.check_time, "Simulated seconds between settling checks")
+        ->capture_default_str();
+    cmd->add_option("--max-time", p.max_time,
+                    "Simulated seconds allowed before the pour counts as not settled "
+                    "(the step cap)")
+        ->capture_default_str();
+    cmd->add_option("--cloud-fraction", p.cloud_fraction,
+                    "Solid fraction of the starting cloud (sets its height)")
+        ->capture_default_str();
+    cmd->add_option("--phi-target", p.phi_target, "Target packing fraction phi* of the sizing rule")
+        ->capture_default_str();
+    cmd->add_option("--liggghts", o.request.liggghts, "LIGGGHTS program (name on PATH or path)")
+        ->capture_default_str();
+    cmd->add_flag("--quiet", o.quiet, "No progress on stderr");
+    return cmd;
+}
+
+int run_pour(PourOptions& o, const PourObserver& observer, const std::function<bool()>& interrupted,
+             const std::function<void()>& finish) {
+    PourRequest& request = o.request;
+    PourParameters& p = request.parameters;
+    p.tangential_damping = o.tangential_damping == "on";
+    p.validate();
+    try {
+        check_writable(o.out, o.force);
+    } catch (const std::exception& e) {
+        throw cli::UsageError(std::string("--out ") + e.what());
+    }
+    if (o.timeout > 0.0) {
+        request.timeout = std::chrono::duration<double>(o.timeout);
+    }
+    request.work_directory = o.keep_work;
+    if (!o.arrangement.empty()) {
+        request.start = start_positions(o.arrangement, p);
+        p.arrangement = o.arrangement;
+    }
+    request.should_stop = interrupted;
+    try {
+        const auto result = pour(request, observer);
+        finish();
+        if (interrupted()) {
+            std::cerr << "sgmp-reference: interrupted after the pour: no pack written\n";
+            return kInterruptedStatus;
+        }
+        write_pack_file(o.out, result.pack, o.force);
+        if (!o.quiet) {
+            char summary[256];
+            std::snprintf(summary, sizeof summary,
+                          "poured %zu spheres in %.1f s, %lld steps; settling measure %.3g; max "
+                          "overlap %.3g d; phi(control volume) %.4f; wrote ",
+                          p.count, result.wall_seconds, static_cast<long long>(result.steps),
+                          result.ke_ratio, result.max_overlap_over_d, result.phi_control_volume);
+            std::cerr << summary << o.out << '\n';
+        }
+        return 0;
+    } catch (const PourError& e) {
+        finish();
+        std::cerr << "sgmp-reference: " << printable(e.what()) << '\n';
+        if (!e.log_tail().empty()) {
+            std::cerr << "--- last lines of LIGGGHTS output ---\n";
+            for (const auto& line : e.log_tail()) {
+                std::cerr << "  " << printable(line) << '\n';
+            }
+        }
+        return interrupted() ? kInterruptedStatus : 1;
+    } catch (const std::exception& e) {
+        finish();
+        std::cerr << "sgmp-reference: " << printable(e.what()) << '\n';
+        return interrupted() ? kInterruptedStatus : 1;
+    }
+}
+
+}  // namespace sgmp::reference

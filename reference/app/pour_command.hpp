@@ -1,0 +1,34 @@
+#pragma once
+/// @file pour_command.hpp
+/// `sgmp-reference pour --count N --friction MU --seed S --out OUT`: N equal spheres
+/// poured into the container with LIGGGHTS (pour.hpp) from a loose random cloud or from
+/// an SGMP starting arrangement, written as a pack file.
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <string>
+
+#include "sgmp/reference/pour.hpp"
+
+namespace sgmp::reference {
+
+struct PourOptions {
+    PourRequest request;
+    std::string out;
+    std::string keep_work;
+    std::string arrangement;
+    std::string tangential_damping = "on";
+    double timeout = 0.0;
+    bool force = false;
+    bool quiet = false;
+};
+
+/// Adds the `pour` subcommand with its options to `app`.
+CLI::App* add_pour_command(CLI::App& app, PourOptions& options);
+
+/// Runs it: 0 when the pack is written. Bad parameters throw ParameterError and a bad
+/// output path cli::UsageError (exit 2 through run_main); a failed pour prints its message
+/// and the tail of the LIGGGHTS log and returns 1 (130 when `interrupted`).
+int run_pour(PourOptions& options, const PourObserver& observer,
+             const std::function<bool()>& interrupted, const std::function<void()>& finish);
+
+}  // namespace sgmp::reference

@@ -1,0 +1,160 @@
+#include "convert_command.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/input_error.hpp"
+#include "sgmp/pack/option_rules.hpp"
+#include "sgmp/pack/pack_file.hpp"
+#include "sgmp/pack/pack_format.hpp"
+#include "sgmp/pack/text_precision.hpp"
+#include "sgmp/pack/version.hpp"
+
+namespace sgmp::app {
+namespace {
+
+struct ConvertOptions {
+    std::string in;
+    std::string out;
+    std::string to;
+    std::size_t frame = 0;  // 0: the last
+    double radius = 0.0;    // 0: the file's
+    bool force = false;
+};
+
+ConvertOptions options;
+
+struct UsageError {
+    std::string message;
+};
+
+PackFormat output_format(const ConvertOptions& o) {
+    if (!o.to.empty()) {
+        const auto format = parse_pack_format(o.to);
+        if (!format) {
+            throw UsageError{"--to '" + o.to + "': must be " + pack_format_choices()};
+        }
+        return *format;
+    }
+    const auto format = format_from_extension(o.out);
+    if (!format) {
+        throw UsageError{"OUT '" + o.out +
+                         "': the format cannot be told from the name; name it with --to (" +
+                         pack_format_choices() +
+                         ") or end the name in .xyz, .xyz.gz, .data, "
+                         ".dump or .vtk"};
+    }
+    return *format;
+}
+
+/// The one-line warning when overlaps are within the file's text precision.
+void warn_on_precision(const PackRead& read) {
+    if (!read.decimals) {
+        return;
+    }
+    // Overlaps count beyond 1e-9 d, as in the metrics (sgmp-compare measure).
+    const double d = mean_diameter(read.pack);
+    const PrecisionOverlaps found =
+        precision_overlaps(read.pack.particles, *read.decimals, 1e-9 * d);
+    if (found.within_precision == 0) {
+        return;
+    }
+    std::fprintf(stderr,
+                 "sgmp convert: warning: %zu overlaps of at most %.3g d come only from the "
+                 "file's text precision (%d decimals)\n",
+                 found.within_precision, found.max_overlap / d, *read.decimals);
+}
+
+void record_provenance(Pack& pack, const ConvertOptions& o) {
+    pack.metadata.set("converted_by", "sgmp convert");
+    pack.metadata.set("converted_version", std::string(version()));
+    pack.metadata.set("converted_from", o.in);
+    if (o.frame > 0) {
+        pack.metadata.set_integer("converted_frame", static_cast<long long>(o.frame));
+    }
+    if (o.radius > 0.0) {
+        pack.metadata.set_number("converted_radius", o.radius);
+    }
+}
+
+int convert(const ConvertOptions& o) {
+    const PackFormat format = output_format(o);
+    try {
+        check_writable(o.out, o.force);
+        if (format == PackFormat::vtk) {
+            check_writable(container_file_for(o.out), o.force);
+        }
+    } catch (const std::runtime_error& e) {
+        throw UsageError{std::string("OUT ") + e.what()};
+    }
+    ReadOptions read_options;
+    if (o.frame > 0) {
+        read_options.frame = o.frame;
+    }
+    if (o.radius > 0.0) {
+        read_options.radius = o.radius;
+    }
+    PackRead read = read_pack_file(o.in, read_options);
+    warn_on_precision(read);
+    record_provenance(read.pack, o);
+    write_pack_as(o.out, read.pack, format, WriteOptions{o.force});
+    std::printf("sgmp convert: %zu particles (frame %zu of %zu) from %s -> %s (%s)\n",
+                read.pack.particles.size(), read.frame, read.frames, o.in.c_str(), o.out.c_str(),
+                std::string(to_string(format)).c_str());
+    return 0;
+}
+
+}  // namespace
+
+CLI::App* register_convert(CLI::App& app) {
+    CLI::App* command = app.add_subcommand(
+        "convert",
+        "convert a pack file (extended XYZ, LAMMPS dump custom or data file) to another "
+        "format: " +
+            pack_format_choices() + "; the format comes from OUT's name or --to");
+    command->add_option("IN", options.in, "input pack file")->required();
+    command
+        ->add_option("OUT", options.out,
+                     "output file: .xyz, .xyz.gz, .data (LAMMPS atom_style sphere), .dump "
+                     "(LAMMPS dump custom), .vtk (legacy VTK; the container goes beside it: "
+                     "pack.vtk -> pack.container.vtk)")
+        ->required();
+    command->add_option("--to", options.to, "output format, " + pack_format_choices());
+    command
+        ->add_option("--frame", options.frame,
+                     "frame of a multi-frame extended XYZ file, counted from 1 (default: "
+                     "the last)")
+        ->check([](const std::string& text) {
+            return seed_rule(text).empty() && text != "0"
+                       ? std::string()
+                       : std::string("must be a whole number >= 1");
+        });
+    command
+        ->add_option("--radius", options.radius,
+                     "radius of every particle (control-volume sides), for files without a "
+                     "radius or diameter column; replaces the file's radii otherwise")
+        ->check([](const std::string& text) {
+            return finite_range_rule(text, 1e-300, 1e300, "(0, 1e300]");
+        });
+    command->add_flag("--force", options.force, "overwrite existing output files");
+    return command;
+}
+
+int run_convert() {
+    try {
+        return convert(options);
+    } catch (const UsageError& e) {
+        std::cerr << "sgmp convert: " << printable(e.message) << "\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "sgmp convert: " << printable(e.what()) << "\n";
+        return 1;
+    }
+}
+
+}  // namespace sgmp::app

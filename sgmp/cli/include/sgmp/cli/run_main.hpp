@@ -1,0 +1,49 @@
+#pragma once
+/// @file run_main.hpp
+/// The one error contract of the three command lines (`sgmp`, `sgmp-reference`,
+/// `sgmp-compare`): every message is one line prefixed with the program's name, and
+///
+/// | exit | when |
+/// | --- | --- |
+/// | 0 | success (also `--help`, `--version`) |
+/// | 1 | a bad input file or a runtime failure (any other exception) |
+/// | 2 | a usage error: CLI11's parse errors, UsageError, ParameterError |
+/// | 130 | interrupted (sgmp/pack/interrupt.hpp) |
+///
+/// A ParameterError names the parameter as the libraries spell it (`phi_target`); a
+/// program shows it as its option (`--phi-target`), through `option_spelling` and the
+/// program's own exceptions to that rule.
+#include <functional>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include <CLI/CLI.hpp>
+
+#include "sgmp/pack/parameter_error.hpp"
+
+namespace sgmp::cli {
+
+/// A usage error found by a front end itself (exit 2), e.g. "--out x.xyz: exists".
+class UsageError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+/// Option spellings that do not follow the rule `name` → `--name` with '_' → '-'.
+using OptionSpellings = std::map<std::string, std::string, std::less<>>;
+
+/// "--" + the name with every '_' as '-', unless `exceptions` spells it otherwise.
+std::string option_spelling(std::string_view name, const OptionSpellings& exceptions = {});
+
+/// "OPTION VALUE: RULE" (or "OPTION: RULE" for an empty value).
+std::string usage_message(const ParameterError& error, const OptionSpellings& exceptions = {});
+
+/// Runs `parse` (which parses the command line into `app`) and then `body` (the
+/// program's work, returning its exit status), mapping every exception to its one-line
+/// message and exit status as in the table above.
+int run_main(std::string_view program, CLI::App& app, const std::function<void()>& parse,
+             const std::function<int()>& body, const OptionSpellings& exceptions = {});
+
+}  // namespace sgmp::cli

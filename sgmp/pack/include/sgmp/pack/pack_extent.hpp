@@ -1,0 +1,26 @@
+#pragma once
+/// @file pack_extent.hpp
+/// Where a pack sits: its container (from the `container` header key, else the testbed's)
+/// and its top, the height of the highest sphere's top, y_top = max_i (y_i + r_i). Writers
+/// of other formats use these for box bounds and cells.
+
+#include "sgmp/pack/geometry.hpp"
+#include "sgmp/pack/pack.hpp"
+
+namespace sgmp {
+
+/// The container recorded in the header (`container="x_min x_max z_min z_max floor"`), or
+/// the testbed's when the key is absent. Throws std::invalid_argument for a malformed key.
+Container container_of(const Pack& pack);
+
+/// max_i (y_i + r_i), never below the floor; for an empty pack the floor plus the
+/// container's width in x (a cube), so a box is never flat.
+double top_of(const Pack& pack, const Container& container);
+
+/// The box other formats are given: the container from the floor up to `top_of`, widened
+/// where needed so that it holds every centre (a pack from elsewhere may not sit in the
+/// testbed's container; tools such as LAMMPS drop atoms whose centre is outside the box).
+/// For a testbed pack this is exactly the container up to the top.
+Box container_box(const Pack& pack);
+
+}  // namespace sgmp

@@ -1,0 +1,31 @@
+#pragma once
+/// @file read_options.hpp
+/// What a caller may ask of a pack reader, and what it learns besides the pack.
+
+#include <cstddef>
+#include <optional>
+
+#include "sgmp/pack/pack.hpp"
+
+namespace sgmp {
+
+struct ReadOptions {
+    /// The frame of a multi-frame extended XYZ file, counted from 1; nullopt reads the last.
+    std::optional<std::size_t> frame;
+    /// Every particle gets this radius: needed for files that carry no radius or diameter
+    /// column (species-only files), and replaces the file's radii otherwise.
+    std::optional<double> radius;
+};
+
+struct PackRead {
+    Pack pack;
+    /// The frame returned (from 1) and how many frames the file holds.
+    std::size_t frame = 1;
+    std::size_t frames = 1;
+    /// The most digits after the decimal point of any coordinate or radius in the frame
+    /// (for "1.5e-05", 6), so 0.5·10^-decimals bounds each number's rounding; nullopt when
+    /// the reader does not track it.
+    std::optional<int> decimals;
+};
+
+}  // namespace sgmp

@@ -1,0 +1,52 @@
+#include "sgmp/pack/atom_types.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "text_fields.hpp"
+
+namespace sgmp {
+namespace {
+
+/// Mode diameters a_k·D; empty when the keys are absent or malformed.
+std::vector<double> mode_diameters(const Pack& pack) {
+    const auto text = pack.metadata.get("size_modes");
+    const auto scale = pack.metadata.get("diameter");
+    const auto d = scale ? detail::parse_double(*scale) : std::nullopt;
+    if (!text || !d) {
+        return {};
+    }
+    std::vector<double> modes;
+    std::stringstream in(*text);
+    std::string item;
+    while (std::getline(in, item, ',')) {
+        const auto a = detail::parse_double(item.substr(0, item.find(':')));
+        if (!a) {
+            return {};
+        }
+        modes.push_back(*a * *d);
+    }
+    return modes;
+}
+
+}  // namespace
+
+AtomTypes atom_types(const Pack& pack) {
+    const std::vector<double> modes = mode_diameters(pack);
+    AtomTypes types;
+    types.count = modes.empty() ? 1 : static_cast<int>(modes.size());
+    types.type.reserve(pack.particles.size());
+    for (const auto& p : pack.particles) {
+        std::size_t best = 0;
+        for (std::size_t k = 1; k < modes.size(); ++k) {
+            if (std::abs(2.0 * p.radius - modes[k]) < std::abs(2.0 * p.radius - modes[best])) {
+                best = k;
+            }
+        }
+        types.type.push_back(static_cast<int>(best) + 1);
+    }
+    return types;
+}
+
+}  // namespace sgmp

@@ -1,0 +1,32 @@
+#include <string>
+
+#include "sgmp/pack/atom_types.hpp"
+#include "sgmp/pack/dump_format.hpp"
+#include "sgmp/pack/pack_extent.hpp"
+#include "text_fields.hpp"
+
+namespace sgmp {
+
+void write_dump_custom(std::ostream& out, const Pack& pack) {
+    std::int64_t step = 0;
+    if (const auto text = pack.metadata.get("timestep")) {
+        step = detail::parse_integer(*text).value_or(0);
+    }
+    const AtomTypes types = atom_types(pack);
+    const Box box = container_box(pack);
+    out << "ITEM: TIMESTEP\n" << (step >= 0 ? step : 0) << '\n';
+    out << "ITEM: NUMBER OF ATOMS\n" << pack.particles.size() << '\n';
+    out << "ITEM: BOX BOUNDS ff ff ff\n";
+    for (int k = 0; k < 3; ++k) {
+        out << format_number(box.lo[k]) << ' ' << format_number(box.hi[k]) << '\n';
+    }
+    out << "ITEM: ATOMS id type x y z radius bin\n";
+    for (std::size_t i = 0; i < pack.particles.size(); ++i) {
+        const Particle& p = pack.particles[i];
+        out << p.id << ' ' << types.type[i] << ' ' << format_number(p.center.x()) << ' '
+            << format_number(p.center.y()) << ' ' << format_number(p.center.z()) << ' '
+            << format_number(p.radius) << ' ' << p.color << '\n';
+    }
+}
+
+}  // namespace sgmp

@@ -1,0 +1,203 @@
+#include "sgmp/pack/lammps_data_format.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "sgmp/pack/atom_types.hpp"
+#include "sgmp/pack/pack_extent.hpp"
+#include "text_fields.hpp"
+
+namespace sgmp {
+
+void write_lammps_data(std::ostream& out, const Pack& pack) {
+    for (const auto& p : pack.particles) {
+        if (p.id <= 0) {
+            throw std::invalid_argument("format data cannot carry id " + std::to_string(p.id) +
+                                        ": LAMMPS atom ids must be positive");
+        }
+    }
+    for (const auto& [key, value] : pack.metadata.entries()) {
+        if (value.find_first_of("\n\r") != std::string::npos) {
+            throw std::invalid_argument("format data cannot carry the value of '" + key +
+                                        "': it holds a line break");
+        }
+    }
+    const AtomTypes types = atom_types(pack);
+    const Box box = container_box(pack);
+    out << "LAMMPS data file (atom_style sphere) of a sphere pack\n";
+    for (const auto& [key, value] : pack.metadata.entries()) {
+        out << "# " << key << '=' << value << '\n';
+    }
+    out << "# density " << format_number(kLammpsDataDensity)
+        << ": mass = density * (pi/6) * diameter^3, lengths in control-volume sides\n\n";
+    out << pack.particles.size() << " atoms\n" << types.count << " atom types\n\n";
+    const char* axes[3] = {"x", "y", "z"};
+    for (int k = 0; k < 3; ++k) {
+        out << format_number(box.lo[k]) << ' ' << format_number(box.hi[k]) << ' ' << axes[k]
+            << "lo " << axes[k] << "hi\n";
+    }
+    out << "\nAtoms # sphere\n\n";
+    for (std::size_t i = 0; i < pack.particles.size(); ++i) {
+        const Particle& p = pack.particles[i];
+        out << p.id << ' ' << types.type[i] << ' ' << format_number(2.0 * p.radius) << ' '
+            << format_number(kLammpsDataDensity) << ' ' << format_number(p.center.x()) << ' '
+            << format_number(p.center.y()) << ' ' << format_number(p.center.z()) << " # bin "
+            << p.color << '\n';
+    }
+}
+
+namespace {
+
+bool is_key(std::string_view word) {
+    if (word.empty() || !(std::isalpha(static_cast<unsigned char>(word[0])) || word[0] == '_')) {
+        return false;
+    }
+    return std::all_of(word.begin(), word.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+    });
+}
+
+/// Header line "numbers... words..." (comment removed): the words joined, the numbers kept.
+struct HeaderLine {
+    std::vector<double> numbers;
+    std::string words;
+};
+
+HeaderLine split_header(std::string_view text) {
+    HeaderLine line;
+    for (const auto field : detail::split_fields(text)) {
+        const auto number = detail::parse_double(field);
+        if (number && line.words.empty()) {
+            line.numbers.push_back(*number);
+        } else {
+            line.words += (line.words.empty() ? "" : " ") + std::string(field);
+        }
+    }
+    return line;
+}
+
+std::string_view before_comment(std::string_view line) {
+    return line.substr(0, line.find('#'));
+}
+
+Particle parse_atom(const std::string& line, const detail::LineReader& reader) {
+    const auto hash = line.find('#');
+    const auto fields = detail::split_fields(before_comment(line));
+    if (fields.size() != 7 && fields.size() != 10) {
+        throw reader.error(
+            "expected 'id type diameter density x y z' (and optionally 3 image "
+            "flags), found " +
+            std::to_string(fields.size()) + " fields");
+    }
+    Particle p;
+    const auto id = detail::parse_integer(fields[0]);
+    if (!id) {
+        throw reader.error("atom id '" + std::string(fields[0]) + "' is not an integer");
+    }
+    p.id = *id;
+    const auto number = [&](std::size_t i, const char* what) {
+        const auto value = detail::parse_double(fields[i]);
+        if (!value) {
+            throw reader.error(std::string(what) + " '" + std::string(fields[i]) +
+                               "' is not a number");
+        }
+        return *value;
+    };
+    p.radius = 0.5 * number(2, "diameter");
+    for (int k = 0; k < 3; ++k) {
+        p.center[k] = number(4 + static_cast<std::size_t>(k), "coordinate");
+    }
+    if (hash != std::string::npos) {
+        const auto comment = detail::split_fields(std::string_view(line).substr(hash + 1));
+        if (comment.size() == 2 && comment[0] == "bin") {
+            const auto bin = detail::parse_integer(comment[1]);
+            if (bin && *bin >= 0 && *bin <= 1000000) {
+                p.color = static_cast<int>(*bin);
+            }
+        }
+    }
+    return p;
+}
+
+}  // namespace
+
+Pack read_lammps_data(std::istream& in, const std::string& source) {
+    detail::LineReader reader(in, source);
+    std::string line;
+    if (!reader.next(line)) {
+        throw InputError(source, 0, "empty file: expected the title line of a data file");
+    }
+    Pack pack;
+    std::optional<std::int64_t> count;
+    std::array<std::optional<std::pair<double, double>>, 3> bounds;
+    const std::array<std::string, 3> bound_words{"xlo xhi", "ylo yhi", "zlo zhi"};
+    bool in_atoms = false;
+    while (!in_atoms && reader.next(line)) {
+        const std::string_view text = line;
+        const auto first = text.find_first_not_of(" \t");
+        if (first != std::string_view::npos && text[first] == '#') {
+            const auto body = text.substr(first + 1);
+            const auto start = body.find_first_not_of(" \t");
+            const auto eq = body.find('=');
+            if (start != std::string_view::npos && eq != std::string_view::npos &&
+                is_key(body.substr(start, eq - start))) {
+                pack.metadata.set(body.substr(start, eq - start), std::string(body.substr(eq + 1)));
+            }
+            continue;
+        }
+        const HeaderLine header = split_header(before_comment(text));
+        if (header.words == "atoms" && header.numbers.size() == 1) {
+            const double n = header.numbers[0];
+            // Checked before the cast: a double beyond 2^62 has no int64 to become.
+            if (!(n >= 0.0 && n <= 4.6e18) || n != std::floor(n)) {
+                throw reader.error("the atom count must be a non-negative integer");
+            }
+            count = static_cast<std::int64_t>(n);
+        }
+        for (std::size_t k = 0; k < 3; ++k) {
+            if (header.words == bound_words[k] && header.numbers.size() == 2) {
+                bounds[k] = std::pair{header.numbers[0], header.numbers[1]};
+            }
+        }
+        if (header.numbers.empty() && header.words == "Atoms") {
+            const auto style = detail::split_fields(text.substr(text.find("Atoms") + 5));
+            if (style.size() >= 2 && style[0] == "#" && style[1] != "sphere") {
+                throw reader.error("Atoms section of atom_style '" + std::string(style[1]) +
+                                   "'; only atom_style sphere is read");
+            }
+            in_atoms = true;
+        }
+    }
+    if (!count) {
+        throw InputError(source, 0, "data file lacks the 'N atoms' header line");
+    }
+    if (!in_atoms) {
+        throw InputError(source, 0, "data file lacks the Atoms section");
+    }
+    pack.particles.reserve(static_cast<std::size_t>(std::min<std::int64_t>(*count, 1 << 16)));
+    detail::ParticleValidator validator;
+    while (static_cast<std::int64_t>(pack.particles.size()) < *count) {
+        if (!reader.next(line)) {
+            throw reader.error("file ends after " + std::to_string(pack.particles.size()) + " of " +
+                               std::to_string(*count) + " atom lines");
+        }
+        if (detail::is_blank(before_comment(line))) {
+            continue;
+        }
+        pack.particles.push_back(parse_atom(line, reader));
+        validator.check(pack.particles.back(), reader);
+    }
+    if (!pack.metadata.contains("container") && bounds[0] && bounds[1] && bounds[2]) {
+        const Container c{bounds[0]->first, bounds[0]->second, bounds[2]->first, bounds[2]->second,
+                          bounds[1]->first};
+        pack.metadata.set("container", c.to_string());
+    }
+    pack.metadata.set("source_format", "lammps data");
+    return pack;
+}
+
+}  // namespace sgmp

@@ -1,0 +1,249 @@
+#!/usr/bin/python3
+"""Pack files written by `sgmp convert`, read back by the tools users take them to.
+
+    real_tools.py SGMP SGMP_COMPARE SCRATCH_DIR
+
+- LAMMPS (`lmp`, Debian lammps): `read_data` of the data file; the atom count and every
+  radius, written back with `write_dump ... format float %.17g`, equal the pack's exactly.
+- VTK (python3-vtk9): vtkPolyDataReader reads the points, the `radius`, `id` and `bin`
+  arrays and the provenance, and the container file's 8 corners and 12 edges.
+- ASE (python3-ase): ase.io.read(format='extxyz') gets the cell from Lattice, the origin,
+  the `bin` and `radius` arrays; a file ASE writes (8 decimals) converts with a warning
+  naming the overlaps that come from its text precision.
+- ParaView-style CSV: vtkDelimitedTextReader on g_r.csv gives the header row's columns.
+
+Exit 0 when every check passes, 1 on a failed check, 77 (CTest's skip) when a tool is
+missing (scripts/setup installs them all).
+"""
+import os
+import shutil
+import subprocess
+import sys
+
+SGMP, COMPARE, SCRATCH = sys.argv[1], sys.argv[2], sys.argv[3]
+failures = []
+
+
+def check(condition, what):
+    print(("ok   " if condition else "FAIL ") + what)
+    if not condition:
+        failures.append(what)
+
+
+def run(*args, **kwargs):
+    return subprocess.run(list(args), check=True, capture_output=True, text=True, encoding="utf-8", cwd=SCRATCH,
+                          **kwargs)
+
+
+def read_xyz_pack(path):
+    """(header line, rows of id x y z radius bin) of our own extended XYZ, by hand."""
+    with open(path) as f:
+        n = int(f.readline())
+        header = f.readline()
+        rows = [f.readline().split() for _ in range(n)]
+    return header, [(int(r[0]), float(r[1]), float(r[2]), float(r[3]), float(r[4]), int(r[5]))
+                    for r in rows]
+
+
+def tools_present():
+    missing = []
+    if shutil.which("lmp") is None:
+        missing.append("lmp (Debian lammps)")
+    for module, package in (("vtk", "python3-vtk9"), ("ase", "python3-ase")):
+        try:
+            __import__(module)
+        except ImportError:
+            missing.append(package)
+    return missing
+
+
+def check_lammps(pack_rows, top):
+    script = """units lj
+atom_style sphere
+boundary f f f
+read_data pack.data
+variable n equal count(all)
+compute r all property/atom radius
+compute rmin all reduce min c_r
+compute rmax all reduce max c_r
+thermo_style custom step v_n c_rmin c_rmax
+run 0
+write_dump all custom lammps.dump id type radius x y z modify sort id format float %.17g
+"""
+    with open(os.path.join(SCRATCH, "in.check"), "w") as f:
+        f.write(script)
+    out = run("lmp", "-in", "in.check", "-log", "none", "-screen", "lammps.screen")
+    with open(os.path.join(SCRATCH, "lammps.dump")) as f:
+        lines = f.read().splitlines()
+    count = int(lines[lines.index("ITEM: NUMBER OF ATOMS") + 1])
+    check(count == len(pack_rows), f"LAMMPS read_data: {count} atoms, pack has {len(pack_rows)}")
+    start = next(i for i, l in enumerate(lines) if l.startswith("ITEM: ATOMS")) + 1
+    radii = {int(l.split()[0]): float(l.split()[2]) for l in lines[start:]}
+    expected = {r[0]: r[4] for r in pack_rows}
+    check(radii == expected, "LAMMPS read_data: every radius equals the pack's (%.17g)")
+    ylo, yhi = map(float, lines[lines.index("ITEM: BOX BOUNDS ff ff ff") + 2].split())
+    check((ylo, yhi) == (-0.625, top), f"LAMMPS box y = [{ylo}, {yhi}], the container to the top")
+    types = {int(l.split()[1]) for l in lines[start:]}
+    # The dump file: read_dump replaces the coordinates (zeroed first) by the dump's.
+    with open(os.path.join(SCRATCH, "in.dump"), "w") as f:
+        f.write("units lj\natom_style sphere\nboundary f f f\nread_data pack.data\n"
+                "set group all x 0.0\nread_dump pack.dump 0 x y z box yes\n"
+                "write_dump all custom lammps2.dump id x y z modify sort id format float %.17g\n")
+    screen = run("lmp", "-in", "in.dump", "-log", "none").stdout
+    check(f"{len(pack_rows)} atoms replaced" in screen, "LAMMPS read_dump: every atom replaced")
+    with open(os.path.join(SCRATCH, "lammps2.dump")) as f:
+        lines = f.read().splitlines()
+    start = lines.index("ITEM: ATOMS id x y z") + 1
+    centres = {int(l.split()[0]): tuple(map(float, l.split()[1:4])) for l in lines[start:]}
+    check(centres == {r[0]: tuple(r[1:4]) for r in pack_rows},
+          "LAMMPS read_dump: every centre equals the pack's")
+    return types, out
+
+
+def check_vtk(pack_rows):
+    import vtk
+    reader = vtk.vtkPolyDataReader()
+    reader.SetFileName(os.path.join(SCRATCH, "pack.vtk"))
+    reader.ReadAllScalarsOn()
+    reader.ReadAllFieldsOn()
+    reader.Update()
+    data = reader.GetOutput()
+    n = data.GetNumberOfPoints()
+    check(n == len(pack_rows), f"VTK vtkPolyDataReader: {n} points")
+    check(data.GetNumberOfVerts() == n, "VTK: one vertex per point")
+    arrays = data.GetPointData()
+    radius, ids, bins = (arrays.GetArray(name) for name in ("radius", "id", "bin"))
+    check(all(a is not None for a in (radius, ids, bins)), "VTK: radius, id and bin arrays")
+    check([radius.GetValue(i) for i in range(n)] == [r[4] for r in pack_rows],
+          "VTK: every radius equals the pack's")
+    check([ids.GetValue(i) for i in range(n)] == [r[0] for r in pack_rows]
+          and [bins.GetValue(i) for i in range(n)] == [r[5] for r in pack_rows],
+          "VTK: ids and bins equal the pack's")
+    check(all(data.GetPoint(i) == tuple(pack_rows[i][1:4]) for i in range(n)),
+          "VTK: every point equals the pack's centre")
+    provenance = data.GetFieldData().GetAbstractArray("provenance")
+    entries = [provenance.GetValue(i) for i in range(provenance.GetNumberOfValues())]
+    check("container=-0.625 0.625 -0.625 0.625 -0.625" in entries
+          and "converted_by=sgmp convert" in entries,
+          "VTK: provenance strings (spaces encoded) read back")
+    box_reader = vtk.vtkPolyDataReader()
+    box_reader.SetFileName(os.path.join(SCRATCH, "pack.container.vtk"))
+    box_reader.Update()
+    box = box_reader.GetOutput()
+    check(box.GetNumberOfPoints() == 8 and box.GetNumberOfLines() == 12,
+          "VTK: the container file has 8 corners and 12 edges")
+
+
+def check_ase(top):
+    import ase.io
+    atoms = ase.io.read(os.path.join(SCRATCH, "pack.xyz"), format="extxyz")
+    cell = atoms.cell.array.tolist()
+    height = top + 0.625
+    check(cell == [[1.25, 0, 0], [0, height, 0], [0, 0, 1.25]],
+          f"ASE: the cell from Lattice is diag(1.25, {height}, 1.25)")
+    check(list(atoms.info.get("Origin", [])) == [-0.625, -0.625, -0.625], "ASE: Origin in info")
+    check("bin" in atoms.arrays and "radius" in atoms.arrays, "ASE: bin and radius arrays")
+    check(atoms.info.get("generator") == "sgmp", "ASE: the header keys in info")
+    # ASE writes 8 decimals: the pack's contacts come back as overlaps, and convert says so.
+    ase.io.write(os.path.join(SCRATCH, "ase.xyz"), atoms, format="extxyz")
+    result = subprocess.run([SGMP, "convert", "ase.xyz", "from-ase.xyz"], cwd=SCRATCH,
+                            capture_output=True, text=True, encoding="utf-8")
+    warning = [l for l in result.stderr.splitlines() if "warning" in l]
+    check(result.returncode == 0 and len(warning) == 1 and "(8 decimals)" in warning[0]
+          and "overlaps of at most" in warning[0],
+          "ASE round trip: one warning line: " + (warning[0] if warning else result.stderr))
+
+
+def check_csv():
+    import vtk
+    run(COMPARE, "measure", "pack.xyz", "--out", "metrics")
+    reader = vtk.vtkDelimitedTextReader()
+    reader.SetFileName(os.path.join(SCRATCH, "metrics", "pack.g_r.csv"))
+    reader.SetHaveHeaders(True)
+    reader.SetFieldDelimiterCharacters(",")
+    reader.Update()
+    table = reader.GetOutput()
+    names = [table.GetColumnName(i) for i in range(table.GetNumberOfColumns())]
+    with open(os.path.join(SCRATCH, "metrics", "pack.g_r.csv")) as f:
+        header = f.readline().strip().split(",")
+    check(names == header, f"CSV (vtkDelimitedTextReader): columns {names}")
+    text_rows = 0
+    for i in range(table.GetNumberOfRows()):
+        try:
+            float(table.GetValue(i, 0).ToString())
+        except ValueError:
+            text_rows += 1
+    print(f"note VTK 9.1's vtkDelimitedTextReader has no comment option: the '#' lines come "
+          f"as {text_rows} leading rows of text, so the columns are read as strings")
+
+
+def check_bad_input():
+    """Bad input: one line on stderr naming the value and the rule, the exit code, no file."""
+    def write(name, text):
+        with open(os.path.join(SCRATCH, name), "w") as f:
+            f.write(text)
+
+    def convert(*args):
+        r = subprocess.run([SGMP, "convert", *args], cwd=SCRATCH, capture_output=True,
+                           text=True, encoding="utf-8")
+        return r.returncode, r.stderr.splitlines()
+
+    write("zero.xyz", "1\nProperties=id:I:1:pos:R:3:radius:R:1\n0 0 0 0 0.1\n")
+    write("species.xyz", "2\nProperties=species:S:1:pos:R:3\nAr 0 0 0\nAr 0.5 0 0\n")
+    write("frames.xyz", "1\nProperties=pos:R:3:radius:R:1\n0 0 0 0.1\n" * 2)
+    cases = [
+        (("zero.xyz", "zero.data"), 1,
+         "sgmp convert: format data cannot carry id 0: LAMMPS atom ids must be positive",
+         "zero.data"),
+        (("pack.xyz", "p.out", "--to", "vtp"), 2,
+         "sgmp convert: --to 'vtp': must be one of xyz, xyz.gz, data, dump, vtk", "p.out"),
+        (("species.xyz", "species.data"), 1,
+         "sgmp convert: species.xyz:2: Properties lacks a 'radius' or 'diameter' column; give "
+         "the radius (--radius R)", "species.data"),
+        (("frames.xyz", "frames.dump", "--frame", "3"), 1,
+         "sgmp convert: frames.xyz: frame 3 does not exist: the file has 2 frame(s), counted "
+         "from 1", "frames.dump"),
+        (("pack.xyz", "pack.data"), 2,
+         "sgmp convert: OUT pack.data: exists; pass --force to replace it", None),
+    ]
+    for args, code, message, output in cases:
+        rc, lines = convert(*args)
+        left = output is not None and os.path.exists(os.path.join(SCRATCH, output))
+        check(rc == code and lines == [message] and not left,
+              f"bad input {' '.join(args)}: exit {rc}, {lines}" + (", file left" if left else ""))
+    rc, _ = convert("species.xyz", "species.data", "--radius", "0.2")
+    check(rc == 0, "a species-only file converts with --radius")
+
+
+def main():
+    missing = tools_present()
+    if missing:
+        print("SKIP: missing " + ", ".join(missing) + " (scripts/setup installs them)")
+        return 77
+    shutil.rmtree(SCRATCH, ignore_errors=True)
+    os.makedirs(SCRATCH)
+    run(SGMP, "pack", "--count", "300", "--arrangement", "loose-random", "--seed", "2",
+        "--size-modes", "1:0.7,0.5:0.3", "--out", "pack.xyz")
+    for out in ("pack.data", "pack.dump", "pack.vtk"):
+        run(SGMP, "convert", "pack.xyz", out)
+    header, rows = read_xyz_pack(os.path.join(SCRATCH, "pack.xyz"))
+    top = max(r[2] + r[4] for r in rows)
+    types, _ = check_lammps(rows, top)
+    check(types == {1, 2}, f"LAMMPS: atom types {sorted(types)} from the two size modes")
+    check_vtk(rows)
+    check_ase(top)
+    check_csv()
+    check_bad_input()
+    # The same input gives the same bytes.
+    for out in ("pack.data", "pack.dump", "pack.vtk"):
+        again = "again." + out.split(".")[1]
+        run(SGMP, "convert", "pack.xyz", again)
+        with open(os.path.join(SCRATCH, out), "rb") as a, open(os.path.join(SCRATCH, again), "rb") as b:
+            first, second = a.read(), b.read()
+        check(first.replace(b"again.", b"pack.") == second.replace(b"again.", b"pack.") or
+              first == second, f"{out}: the same bytes on a second conversion")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

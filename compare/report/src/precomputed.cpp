@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "csv_line.hpp"
 #include "sgmp/compare/metrics_output.hpp"
+#include "sgmp/pack/csv_fields.hpp"
 #include "sgmp/pack/input_error.hpp"
 
 namespace sgmp::compare {
@@ -31,7 +31,7 @@ std::vector<std::vector<double>> columns(std::string_view text, const std::strin
     if (lines.empty()) {
         throw InputError(source, 0, "is empty");
     }
-    const auto header = detail::split_csv_line(lines.front());
+    const auto header = split_csv_line(lines.front());
     std::vector<std::size_t> at;
     for (const auto& name : wanted) {
         const auto found = std::find(header.begin(), header.end(), name);
@@ -45,7 +45,7 @@ std::vector<std::vector<double>> columns(std::string_view text, const std::strin
         if (lines[n].empty() || lines[n].front() == '#') {
             continue;
         }
-        const auto fields = detail::split_csv_line(lines[n]);
+        const auto fields = split_csv_line(lines[n]);
         for (std::size_t c = 0; c < at.size(); ++c) {
             double value = 0.0;
             const std::string& f = at[c] < fields.size() ? fields[at[c]] : std::string();
@@ -134,7 +134,7 @@ std::vector<std::pair<std::string, PackSummary>> summaries_from_batch(std::strin
         if (lines[n].empty() || lines[n].front() == '#') {
             continue;
         }
-        const auto fields = detail::split_csv_line(lines[n]);
+        const auto fields = split_csv_line(lines[n]);
         if (header.empty()) {
             header = fields;
             if (std::find(header.begin(), header.end(), "split_ratio") == header.end() ||

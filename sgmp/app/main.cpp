@@ -16,6 +16,7 @@
 #include "batch_command.hpp"
 #include "config_file.hpp"
 #include "convert_command.hpp"
+#include "render_command.hpp"
 #include "sgmp/cli/progress_line.hpp"
 #include "sgmp/cli/run_main.hpp"
 #include "sgmp/engine/make_pack.hpp"
@@ -320,6 +321,7 @@ int main(int argc, char** argv) {
                         "read options from a TOML/INI file of 'option = value' lines; options "
                         "given on the command line win");
     CLI::App* convert = sgmp::app::register_convert(app);
+    const auto render = sgmp::app::register_render(app);
     sgmp::app::BatchCommand batch(app);
     const auto parse = [&] {
         std::vector<std::string> args(argv + 1, argv + argc);
@@ -331,6 +333,9 @@ int main(int argc, char** argv) {
         install_interrupt_handler("sgmp");
         if (convert->parsed()) {
             return sgmp::app::run_convert();
+        }
+        if (render.command->parsed()) {
+            return render.run();
         }
         if (batch.parsed()) {
             return batch.run();

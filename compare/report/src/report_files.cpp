@@ -46,6 +46,7 @@ ReportContext write_report(const fs::path& directory, bool overwrite, const Repo
         write_text_file(temporary / "report.json", render_json(report, context).dump(2) + "\n");
         write_text_file(temporary / "index.html", render_html(report, context, svgs));
         for (const auto& [name, content] : context.extra_files) {
+            fs::create_directories((temporary / name).parent_path());  // e.g. pictures/
             write_text_file(temporary / name, content);
         }
     });

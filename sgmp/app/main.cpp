@@ -13,8 +13,10 @@
 #include <string>
 #include <vector>
 
+#include "batch_command.hpp"
 #include "config_file.hpp"
 #include "convert_command.hpp"
+#include "render_command.hpp"
 #include "sgmp/cli/progress_line.hpp"
 #include "sgmp/cli/run_main.hpp"
 #include "sgmp/engine/make_pack.hpp"
@@ -326,6 +328,8 @@ int main(int argc, char** argv) {
                         "read options from a TOML/INI file of 'option = value' lines; options "
                         "given on the command line win");
     CLI::App* convert = sgmp::app::register_convert(app);
+    const auto render = sgmp::app::register_render(app);
+    sgmp::app::BatchCommand batch(app);
     const auto parse = [&] {
         std::vector<std::string> args(argv + 1, argv + argc);
         args = expand_config(std::move(args));
@@ -336,6 +340,12 @@ int main(int argc, char** argv) {
         install_interrupt_handler("sgmp");
         if (convert->parsed()) {
             return sgmp::app::run_convert();
+        }
+        if (render.command->parsed()) {
+            return render.run();
+        }
+        if (batch.parsed()) {
+            return batch.run();
         }
         return pack->parsed() ? run_pack(pack_options) : run_arrange(arrange_options);
     });

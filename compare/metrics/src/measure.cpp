@@ -170,7 +170,9 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
         throw std::invalid_argument("--region '" + describe(m.region) +
                                     "' holds no particle centre");
     }
-    const NeighbourIndex index(centres);
+    // The kd-tree only fixes the order in which Q6 sums each origin's bonds; it is freed
+    // before the pair pass.
+    const std::vector<Index> report_rank = NeighbourIndex(centres).report_rank();
     std::vector<Vec3>().swap(centres);
     stage_times.index = watch.lap();
 
@@ -194,7 +196,7 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     local.space = options.gr_container_space ? container_space(particles, m.container)
                                              : centre_space(particles, m.container, 0.5 * d);
     local.container = m.container;
-    m.local = measure_local_structure(particles, index, origins, local);
+    m.local = measure_local_structure(particles, report_rank, origins, local);
     if (options.gr_thesis) {
         m.thesis_rdf = thesis_rdf(particles, m.region, m.phi, options.gr_bin_width * d, local.bins);
     }

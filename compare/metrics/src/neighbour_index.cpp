@@ -119,6 +119,36 @@ void NeighbourIndex::within(const Vec3& q, double radius, std::vector<Index>& ou
                        sphere);
 }
 
+std::vector<Index> NeighbourIndex::report_rank() const {
+    const std::vector<Point>& points = impl_->points;
+    std::vector<Index> order;
+    order.reserve(points.size());
+    if (!points.empty()) {
+        double lo[3] = {points[0].x(), points[0].y(), points[0].z()};
+        double hi[3] = {lo[0], lo[1], lo[2]};
+        for (const Point& p : points) {
+            for (int a = 0; a < 3; ++a) {
+                lo[a] = std::min(lo[a], p[a]);
+                hi[a] = std::max(hi[a], p[a]);
+            }
+        }
+        const Point centre(0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2]));
+        double radius = 1.0;  // more than the whole box: the root reports every point
+        for (int a = 0; a < 3; ++a) {
+            radius += hi[a] - lo[a];
+        }
+        impl_->tree.search(std::back_inserter(order), Sphere(centre, radius, 0.0, impl_->traits));
+    }
+    if (order.size() != points.size()) {
+        throw std::logic_error("the kd-tree did not report every point once");
+    }
+    std::vector<Index> rank(points.size());
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        rank[order[k]] = static_cast<Index>(k);
+    }
+    return rank;
+}
+
 std::vector<std::pair<Index, Index>> pairs_within(const std::vector<Vec3>& points, double cutoff) {
     const NeighbourIndex index(points);
     using Pairs = std::vector<std::pair<Index, Index>>;

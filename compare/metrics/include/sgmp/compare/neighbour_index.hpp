@@ -29,6 +29,11 @@ class NeighbourIndex {
     /// particular order. `out` is a buffer the caller may reuse between queries.
     void within(const Vec3& q, double radius, std::vector<Index>& out) const;
 
+    /// The rank of each point in the tree's report order: every query reports the points
+    /// it finds in increasing rank (the tree is walked lower child first, leaves in their
+    /// stored order). Sorting by rank reproduces a query's order without the tree.
+    [[nodiscard]] std::vector<Index> report_rank() const;
+
   private:
     struct Impl;
     std::unique_ptr<Impl> impl_;

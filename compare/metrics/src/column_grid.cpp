@@ -6,17 +6,35 @@
 
 namespace sgmp::compare {
 
-ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, double side) : side_(side) {
+namespace {
+
+std::vector<Index> every_index(std::size_t n) {
+    if (n >= std::numeric_limits<std::uint32_t>::max()) {
+        throw std::length_error("too many particles for the column grid");
+    }
+    std::vector<Index> all(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        all[i] = static_cast<Index>(i);
+    }
+    return all;
+}
+
+}  // namespace
+
+ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, double side)
+    : ColumnGrid(particles, every_index(particles.size()), side) {}
+
+ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, const std::vector<Index>& members,
+                       double side)
+    : side_(side) {
     if (!(side > 0.0) || !std::isfinite(side)) {
         throw std::invalid_argument("the cell side of a column grid must be positive");
     }
-    if (particles.size() >= std::numeric_limits<std::uint32_t>::max()) {
-        throw std::length_error("too many particles for the column grid");
-    }
-    const std::size_t n = particles.size();
-    Vec3 lo = n > 0 ? particles.front().center : Vec3::Zero();
+    const std::size_t n = members.size();
+    Vec3 lo = n > 0 ? particles[members.front()].center : Vec3::Zero();
     Vec3 hi = lo;
-    for (const Particle& p : particles) {
+    for (const Index m : members) {
+        const Particle& p = particles[m];
         if (!p.center.allFinite()) {
             throw std::invalid_argument("a centre of the column grid is not finite");
         }
@@ -43,7 +61,7 @@ ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, double side) : si
     std::vector<std::uint32_t> cell_of(n);
     start_.assign(cells + 1, 0);
     for (std::size_t i = 0; i < n; ++i) {
-        const Vec3& c = particles[i].center;
+        const Vec3& c = particles[members[i]].center;
         const auto cell = static_cast<std::size_t>(
             (axis_cell(0, c.x()) * dims_[1] + axis_cell(1, c.y())) * dims_[2] +
             axis_cell(2, c.z()));
@@ -61,12 +79,12 @@ ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, double side) : si
     index.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         const std::uint32_t k = next[cell_of[i]]++;
-        const Particle& p = particles[i];
+        const Particle& p = particles[members[i]];
         x[k] = p.center.x();
         y[k] = p.center.y();
         z[k] = p.center.z();
         r[k] = p.radius;
-        index[k] = static_cast<Index>(i);
+        index[k] = members[i];
     }
 }
 

@@ -157,23 +157,23 @@ struct Setup {
 /// A neighbour close enough to be a contact or a bond, with its kd-tree report rank.
 struct Close {
     Index rank;
-    Index position;  // in the column grid
+    Index index;  // into the particles
     double distance;
 };
 
 /// Buffers of one work item, reused for each of its origins.
 struct Scratch {
-    std::vector<Index> near;  // grid positions within reach
-    std::vector<double> squared;
+    std::vector<double> squared;  // of the candidates within reach
     std::vector<double> distance;
     std::vector<std::int32_t> bin;
     std::vector<Close> close;
     std::vector<int> z;
 };
 
-/// Fills scratch.near / scratch.squared with the neighbours of particle i within reach
-/// (branch-free compaction: about half the candidates pass, a branch would mispredict).
-std::size_t gather_near(const ColumnGrid& grid, Index i, const Vec3& c, const Setup& s,
+/// Fills scratch.squared with the squared distances from c of the grid's centres within
+/// reach (all, or only those after position `after`, see ColumnGrid::for_each_range), by
+/// branch-free compaction (about half the candidates pass: a branch would mispredict).
+std::size_t gather_near(const ColumnGrid& grid, const Vec3& c, const Setup& s, std::size_t after,
                         Scratch& scratch) {
     std::size_t m = 0;
     const double ax = c.x();
@@ -183,37 +183,36 @@ std::size_t gather_near(const ColumnGrid& grid, Index i, const Vec3& c, const Se
     const double* const xs = grid.x.data();
     const double* const ys = grid.y.data();
     const double* const zs = grid.z.data();
-    const Index* const ids = grid.index.data();
-    grid.for_each_range(c, s.reach, [&](std::size_t begin, std::size_t end) {
-        if (scratch.near.size() < m + (end - begin)) {
-            scratch.near.resize(2 * (m + end - begin));
-            scratch.squared.resize(scratch.near.size());
-        }
-        Index* __restrict const near = scratch.near.data();
-        double* __restrict const squared = scratch.squared.data();
-        std::size_t count = m;  // a local: the compiler keeps it in a register
-        for (std::size_t k = begin; k < end; ++k) {
-            const double dx = xs[k] - ax;
-            const double dy = ys[k] - ay;
-            const double dz = zs[k] - az;
-            const double q = dx * dx + dy * dy + dz * dz;
-            near[count] = static_cast<Index>(k);
-            squared[count] = q;
-            count += static_cast<std::size_t>((q <= reach_squared) & (ids[k] != i));
-        }
-        m = count;
-    });
+    grid.for_each_range(
+        c, s.reach,
+        [&](std::size_t begin, std::size_t end) {
+            if (scratch.squared.size() < m + (end - begin)) {
+                scratch.squared.resize(2 * (m + end - begin));
+            }
+            double* __restrict const squared = scratch.squared.data();
+            std::size_t count = m;  // a local: the compiler keeps it in a register
+            for (std::size_t k = begin; k < end; ++k) {
+                const double dx = xs[k] - ax;
+                const double dy = ys[k] - ay;
+                const double dz = zs[k] - az;
+                const double q = dx * dx + dy * dy + dz * dz;
+                squared[count] = q;
+                count += static_cast<std::size_t>(q <= reach_squared);
+            }
+            m = count;
+        },
+        after);
     return m;
 }
 
-/// g(r) and split-window pair counts of one origin; keeps its close neighbours. Distances
-/// and bins first, in a loop the compiler vectorises (bin_of's arithmetic, truncated by a
+/// Adds `weight` × the g(r) and split-window counts of the m gathered pairs. Distances and
+/// bins first, in a loop the compiler vectorises (bin_of's arithmetic, truncated by a
 /// 32-bit conversion: the same value for bins below 2³¹), then the counts.
-void count_pairs(const ColumnGrid& grid, const std::vector<Index>& rank, const Setup& s,
-                 std::size_t m, Scratch& scratch, Partial& part) {
+void count_pairs(const Setup& s, std::size_t m, std::int64_t weight, Scratch& scratch,
+                 Partial& part) {
     if (scratch.distance.size() < m) {
-        scratch.distance.resize(scratch.near.size());
-        scratch.bin.resize(scratch.near.size());
+        scratch.distance.resize(scratch.squared.size());
+        scratch.bin.resize(scratch.squared.size());
     }
     const double* __restrict const squared = scratch.squared.data();
     double* __restrict const distance = scratch.distance.data();
@@ -223,36 +222,52 @@ void count_pairs(const ColumnGrid& grid, const std::vector<Index>& rank, const S
         distance[q] = std::sqrt(squared[q]);
         bin[q] = static_cast<std::int32_t>(distance[q] * per_width + 0.5);
     }
-    scratch.close.clear();
     const auto bins = static_cast<std::uint32_t>(s.bins);
     const auto split_first = static_cast<std::uint32_t>(s.split_first_bin);
     const auto split_bins = static_cast<std::uint32_t>(s.split_bins);
     std::int64_t* const pairs = part.pairs.data();
+    std::int64_t split_pairs[2] = {0, 0};
     for (std::size_t q = 0; q < m; ++q) {
         const auto b = static_cast<std::uint32_t>(bin[q]);
         if (b < bins) {
-            ++pairs[b];
+            pairs[b] += weight;
         }
         if (b - split_first <= split_bins) {  // unsigned: one compare
-            s.split.count(distance[q], part.split_pairs);
-        }
-        if (squared[q] <= s.close_squared) {
-            const Index k = scratch.near[q];
-            scratch.close.push_back({rank[grid.index[k]], k, distance[q]});
+            s.split.count(distance[q], split_pairs);
         }
     }
+    part.split_pairs[0] += weight * split_pairs[0];
+    part.split_pairs[1] += weight * split_pairs[1];
+}
+
+/// Appends to scratch.close the centres of `grid` other than particle i close enough to
+/// it to be a contact or a bond.
+void gather_close(const ColumnGrid& grid, const std::vector<Index>& rank, Index i, const Vec3& c,
+                  const Setup& s, Scratch& scratch) {
+    grid.for_each_range(c, std::sqrt(s.close_squared), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) {
+            const double dx = grid.x[k] - c.x();
+            const double dy = grid.y[k] - c.y();
+            const double dz = grid.z[k] - c.z();
+            const double q = dx * dx + dy * dy + dz * dz;
+            if (q <= s.close_squared && grid.index[k] != i) {
+                scratch.close.push_back({rank[grid.index[k]], grid.index[k], std::sqrt(q)});
+            }
+        }
+    });
 }
 
 /// Z at every tolerance and the Q6 bond sums of one origin, bonds summed in kd-tree report
 /// order (which fixes their rounding).
-BondSums contacts_and_bonds(const ColumnGrid& grid, const Particle& a, const Setup& s,
-                            Scratch& scratch) {
+BondSums contacts_and_bonds(const std::vector<Particle>& particles, const Particle& a,
+                            const Setup& s, Scratch& scratch) {
     std::sort(scratch.close.begin(), scratch.close.end(),
               [](const Close& u, const Close& v) { return u.rank < v.rank; });
     std::fill(scratch.z.begin(), scratch.z.end(), 0);
     BondSums bonds;
     for (const Close& c : scratch.close) {
-        const double rb = grid.r[c.position];
+        const Particle& b = particles[c.index];
+        const double rb = b.radius;
         const double gap = c.distance - a.radius - rb;
         if (gap <= s.max_threshold) {
             for (std::size_t t = 0; t < s.tolerances; ++t) {
@@ -260,8 +275,8 @@ BondSums contacts_and_bonds(const ColumnGrid& grid, const Particle& a, const Set
             }
         }
         if (c.distance <= s.q6_cutoff * (a.radius + rb) && c.distance > 0.0) {
-            const Vec3 bond(grid.x[c.position] - a.center.x(), grid.y[c.position] - a.center.y(),
-                            grid.z[c.position] - a.center.z());
+            const Vec3 bond(b.center.x() - a.center.x(), b.center.y() - a.center.y(),
+                            b.center.z() - a.center.z());
             bonds.add(bond / c.distance);
         }
     }
@@ -359,6 +374,21 @@ BondOrder finish_bond_order(const Partial& total, const LocalStructureOptions& o
     return q;
 }
 
+/// The indices of [0, n) not in `subset` (sorted), increasing.
+std::vector<Index> others(std::size_t n, const std::vector<Index>& subset) {
+    std::vector<char> in(n, 0);
+    for (const Index i : subset) {
+        in[i] = 1;
+    }
+    std::vector<Index> rest;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (in[i] == 0) {
+            rest.push_back(static_cast<Index>(i));
+        }
+    }
+    return rest;
+}
+
 }  // namespace
 
 LocalStructure measure_local_structure(const std::vector<Particle>& particles,
@@ -370,7 +400,15 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
     }
     const Setup s(particles, options);
     const std::vector<Index> ordered = spatial_order(particles, origins, options.mean_diameter);
-    const ColumnGrid grid(particles, kCellSideOverD * options.mean_diameter);
+    // g(r) counts each pair once: origin–origin pairs from their earlier member in the
+    // origins' grid (weight 2, both are origins), origin–other pairs from the origin.
+    const double side = kCellSideOverD * options.mean_diameter;
+    const ColumnGrid origin_grid(particles, origins, side);
+    const ColumnGrid other_grid(particles, others(particles.size(), origins), side);
+    std::vector<Index> position(particles.size(), 0);  // in origin_grid
+    for (std::size_t k = 0; k < origin_grid.index.size(); ++k) {
+        position[origin_grid.index[k]] = static_cast<Index>(k);
+    }
     const Partial total = chunked_reduce(
         ordered.size(), kOriginsPerChunk, Partial(s.tolerances, options.bins),
         [&](Partial& part, std::size_t begin, std::size_t end) {
@@ -379,9 +417,14 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
             for (std::size_t o = begin; o < end; ++o) {
                 const Index i = ordered[o];
                 const Particle& a = particles[i];
-                const std::size_t m = gather_near(grid, i, a.center, s, scratch);
-                count_pairs(grid, report_rank, s, m, scratch, part);
-                const BondSums bonds = contacts_and_bonds(grid, a, s, scratch);
+                count_pairs(s, gather_near(origin_grid, a.center, s, position[i], scratch), 2,
+                            scratch, part);
+                count_pairs(s, gather_near(other_grid, a.center, s, ColumnGrid::kAll, scratch), 1,
+                            scratch, part);
+                scratch.close.clear();
+                gather_close(origin_grid, report_rank, i, a.center, s, scratch);
+                gather_close(other_grid, report_rank, i, a.center, s, scratch);
+                const BondSums bonds = contacts_and_bonds(particles, a, s, scratch);
                 add_origin(a, bonds, s, options, scratch.z, part);
             }
         },

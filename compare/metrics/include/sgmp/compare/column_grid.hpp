@@ -11,6 +11,7 @@
 /// cover every centre within ρ (and some more: the caller tests exact distances), and
 /// their union is about the ball widened by one cell side in x and y only.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -25,6 +26,12 @@ class ColumnGrid {
     /// Cells of side `side` > 0 over the bounding box of the centres (the side grows when
     /// the centres are spread so far apart that more than 2·N + 64 cells would be needed).
     ColumnGrid(const std::vector<Particle>& particles, double side);
+    /// The same over the particles `members` only (indices into `particles`).
+    ColumnGrid(const std::vector<Particle>& particles, const std::vector<Index>& members,
+               double side);
+
+    /// `after` of for_each_range: every position.
+    static constexpr std::size_t kAll = static_cast<std::size_t>(-1);
 
     /// Stored arrays, cell by cell: centre coordinates, radius and index into `particles`.
     std::vector<double> x, y, z, r;
@@ -32,8 +39,13 @@ class ColumnGrid {
 
     /// Calls f(begin, end) for ranges of stored positions that together hold every centre
     /// c with |c − p| ≤ radius (ranges are disjoint, in increasing x then y).
+    /// With `after` the stored position of p itself, only positions after it: its own
+    /// column beyond it and the columns after its own (so that over all stored p, each
+    /// pair within radius is met once, from its earlier member).
     template <class F>
-    void for_each_range(const Vec3& p, double radius, F&& f) const {
+    void for_each_range(const Vec3& p, double radius, F&& f, std::size_t after = kAll) const {
+        const std::int64_t own =
+            after == kAll ? -1 : axis_cell(0, p.x()) * dims_[1] + axis_cell(1, p.y());
         const double wide = radius * (1.0 + 1e-12) + side_ * 1e-12;  // covers cell rounding
         const double wide2 = wide * wide;
         const std::int64_t x_lo = axis_cell(0, p.x() - wide);
@@ -43,6 +55,9 @@ class ColumnGrid {
         for (std::int64_t i = x_lo; i <= x_hi; ++i) {
             const double sx = slab_gap(0, i, p.x());
             for (std::int64_t j = y_lo; j <= y_hi; ++j) {
+                if (i * dims_[1] + j < own) {
+                    continue;
+                }
                 const double sy = slab_gap(1, j, p.y());
                 const double rest = wide2 - sx * sx - sy * sy;
                 if (rest < 0.0) {
@@ -52,7 +67,11 @@ class ColumnGrid {
                 const std::size_t row = static_cast<std::size_t>((i * dims_[1] + j) * dims_[2]);
                 const std::size_t lo = row + static_cast<std::size_t>(axis_cell(2, p.z() - half));
                 const std::size_t hi = row + static_cast<std::size_t>(axis_cell(2, p.z() + half));
-                f(static_cast<std::size_t>(start_[lo]), static_cast<std::size_t>(start_[hi + 1]));
+                auto begin = static_cast<std::size_t>(start_[lo]);
+                if (i * dims_[1] + j == own) {
+                    begin = std::max(begin, after + 1);
+                }
+                f(begin, std::max(begin, static_cast<std::size_t>(start_[hi + 1])));
             }
         }
     }

@@ -48,9 +48,14 @@ std::string stem_of(const std::string& path);
 Group measure_group(const std::string& label, const std::vector<std::string>& packs,
                     const CommonOptions& o);
 
-/// The crossval and regress subcommands (crossval_command.cpp). `register_*` adds the
-/// subcommand and returns a runner called when it was chosen.
-std::function<int(const std::string&)> register_crossval(CLI::App& app);
-std::function<int(const std::string&)> register_regress(CLI::App& app);
+/// Every subcommand is registered the same way: `register_*` adds it with its options to
+/// the app and returns a runner, called with the command line; it returns the exit status
+/// when its subcommand was chosen and −1 otherwise.
+using CommandRunner = std::function<int(const std::string& command)>;
+CommandRunner register_measure(CLI::App& app);   // measure_command.cpp
+CommandRunner register_report(CLI::App& app);    // measure_command.cpp
+CommandRunner register_header(CLI::App& app);    // measure_command.cpp
+CommandRunner register_crossval(CLI::App& app);  // crossval_command.cpp
+CommandRunner register_regress(CLI::App& app);   // crossval_command.cpp
 
 }  // namespace sgmp::compare::cli

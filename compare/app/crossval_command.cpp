@@ -11,6 +11,7 @@
 #include "sgmp/compare/manifest.hpp"
 #include "sgmp/compare/metrics_output.hpp"
 #include "sgmp/compare/report_files.hpp"
+#include "sgmp/compare/report_pictures.hpp"
 #include "sgmp/compare/thesis_table.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/version.hpp"
@@ -42,6 +43,8 @@ struct CrossvalOptions {
     std::string manifest;
     std::string thesis;
     std::string thesis_start;
+    bool pictures = false;
+    int picture_size = 360;
     CommonOptions common;
 };
 
@@ -99,13 +102,29 @@ int run_crossval(CrossvalOptions& o, const std::string& command) {
     context.parameters = provenance["parameters"];
     context.lead_markdown = render_crossval_markdown(cv);
     context.plots_per_count = true;
+    if (o.pictures) {
+        const auto choices = choose_pictures(manifest);
+        PictureSet set = render_pictures(choices, o.picture_size);
+        // After the first section (which mode stands in for which class), before the matrix.
+        const auto at = context.lead_markdown.find("\n## Verdict matrix");
+        context.lead_markdown.insert(at == std::string::npos ? context.lead_markdown.size() : at,
+                                     pictures_markdown(choices, set));
+        if (!set.made) {
+            std::cerr << "sgmp-compare: pictures skipped: " << set.note << "\n";
+        } else {
+            std::cerr << "sgmp-compare: " << set.files.size() << " pictures rendered in "
+                      << set.seconds << " s\n";
+        }
+        context.extra_files = std::move(set.files);
+    }
     nlohmann::ordered_json crossval = crossval_json(cv);
     crossval["provenance"] = provenance;
     crossval["packs"] = manifest_json(manifest);
-    context.extra_files = {
-        {"headline.csv", render_headline_csv(cv, command)},
-        {"crossval.json", crossval.dump(2) + "\n"},
-        {"baseline.json", baseline_json(baseline_entries(report), provenance).dump(2) + "\n"}};
+    context.extra_files.insert(
+        context.extra_files.end(),
+        {{"headline.csv", render_headline_csv(cv, command)},
+         {"crossval.json", crossval.dump(2) + "\n"},
+         {"baseline.json", baseline_json(baseline_entries(report), provenance).dump(2) + "\n"}});
     const auto used = write_report(o.common.out, o.common.force, report, context);
     std::cout << render_headline_text(cv);
     if (!used.plots_made) {
@@ -147,7 +166,7 @@ int run_regress(const RegressOptions& o) {
 
 }  // namespace
 
-std::function<int(const std::string&)> register_crossval(CLI::App& app) {
+CommandRunner register_crossval(CLI::App& app) {
     auto options = std::make_shared<CrossvalOptions>();
     CLI::App* cmd = app.add_subcommand(
         "crossval",
@@ -164,13 +183,22 @@ std::function<int(const std::string&)> register_crossval(CLI::App& app) {
     cmd->add_option("--thesis-start", options->thesis_start,
                     "the thesis' starting-pack CSV (data/thesis/starting_packs.csv) to show "
                     "starting heights beside ours");
+    cmd->add_flag("--pictures,!--no-pictures", options->pictures,
+                  "add pictures of packs rendered with POV-Ray: at N = 9000 (or the largest "
+                  "count with both roles) one seed of each candidate group beside one pack of "
+                  "each reference group, cut away so the inside shows (pictures/*.png; a "
+                  "missing POV-Ray is a one-line note)");
+    cmd->add_option("--picture-size", options->picture_size,
+                    "side of each picture in pixels (64 to 2048)")
+        ->check(CLI::Range(64, 2048))
+        ->capture_default_str();
     add_common(cmd, options->common);
     return [options, cmd](const std::string& command) {
         return *cmd ? run_crossval(*options, command) : -1;
     };
 }
 
-std::function<int(const std::string&)> register_regress(CLI::App& app) {
+CommandRunner register_regress(CLI::App& app) {
     auto options = std::make_shared<RegressOptions>();
     CLI::App* cmd = app.add_subcommand(
         "regress",

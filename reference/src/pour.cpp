@@ -68,29 +68,18 @@ class WorkDirectory {
             return;
         }
         remove_orphaned_work_directories();
-        std::string pattern = (fs::temp_directory_path() /
-                               ("sgmp-reference-" + std::to_string(::getpid()) + "-XXXXXX"))
-                                  .string();
-        if (mkdtemp(pattern.data()) == nullptr) {
-            throw PourError("cannot create a temporary work directory in " +
-                            fs::temp_directory_path().string());
+        try {
+            scratch_.emplace("sgmp-reference");
+        } catch (const std::runtime_error& e) {
+            throw PourError(e.what());
         }
-        path_ = pattern;
-        temporary_ = true;
+        path_ = scratch_->path();
     }
-    ~WorkDirectory() {
-        if (temporary_) {
-            std::error_code ec;
-            fs::remove_all(path_, ec);
-        }
-    }
-    WorkDirectory(const WorkDirectory&) = delete;
-    WorkDirectory& operator=(const WorkDirectory&) = delete;
     [[nodiscard]] const fs::path& path() const { return path_; }
 
   private:
     fs::path path_;
-    bool temporary_ = false;
+    std::optional<ScratchDirectory> scratch_;  ///< a temporary, removed with the object
 };
 
 /// The pack library's plain write, failing as a PourError.

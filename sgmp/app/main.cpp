@@ -15,6 +15,7 @@
 
 #include "config_file.hpp"
 #include "convert_command.hpp"
+#include "render_command.hpp"
 #include "sgmp/cli/progress_line.hpp"
 #include "sgmp/cli/run_main.hpp"
 #include "sgmp/engine/make_pack.hpp"
@@ -319,6 +320,7 @@ int main(int argc, char** argv) {
                         "read options from a TOML/INI file of 'option = value' lines; options "
                         "given on the command line win");
     CLI::App* convert = sgmp::app::register_convert(app);
+    const auto render = sgmp::app::register_render(app);
     const auto parse = [&] {
         std::vector<std::string> args(argv + 1, argv + argc);
         args = expand_config(std::move(args));
@@ -329,6 +331,9 @@ int main(int argc, char** argv) {
         install_interrupt_handler("sgmp");
         if (convert->parsed()) {
             return sgmp::app::run_convert();
+        }
+        if (render.command->parsed()) {
+            return render.run();
         }
         return pack->parsed() ? run_pack(pack_options) : run_arrange(arrange_options);
     });

@@ -97,6 +97,28 @@ BOOST_AUTO_TEST_CASE(bad_pack_files_give_one_line_and_status_1) {
     }
 }
 
+BOOST_AUTO_TEST_CASE(header_prints_the_provenance_keys_scripts_read) {
+    write("keys.xyz",
+          "1\nProperties=id:I:1:pos:R:3:radius:R:1:color:I:1 generator=test seed=7 "
+          "label=\"a b\"\n1 0 0 0 0.05 0\n");
+    const std::string out = (scratch() / "header.txt").string();
+    const auto header = [&](const std::string& arguments) {
+        const std::string command = "cd '" + scratch().string() + "' && '" + kTool.string() +
+                                    "' header " + arguments + " >'" + out + "' 2>/dev/null";
+        const int raw = std::system(command.c_str());
+        return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    };
+    BOOST_TEST(header("keys.xyz seed label") == 0);
+    BOOST_TEST(slurp(out) == "7\na b\n");
+    BOOST_TEST(header("keys.xyz seed absent --allow-missing") == 0);
+    BOOST_TEST(slurp(out) == "7\n\n");
+    BOOST_TEST(header("keys.xyz absent") == 1);              // a missing key is an input error
+    write("cut.xyz", "2\n" + kHeader + "1 0 0 0 0.05 0\n");  // truncated: not reusable
+    BOOST_TEST(header("cut.xyz generator") == 1);
+    const Result r = run("header keys.xyz absent");
+    BOOST_TEST(r.err == "sgmp-compare: keys.xyz:2: the header has no key 'absent'\n");
+}
+
 BOOST_AUTO_TEST_CASE(usage_errors_give_status_2) {
     good_pack("a.xyz", 1);
     good_pack("b.xyz", 2);

@@ -83,7 +83,7 @@ BOOST_AUTO_TEST_SUITE(pack_file)
 BOOST_AUTO_TEST_CASE(sigint_in_the_middle_of_a_write_removes_the_temporary_and_exits_130) {
     // In a child: the interrupt handler is installed, a .gz and a directory are half
     // written, then SIGINT arrives. The child must exit 130 and leave nothing behind.
-    ScratchDirectory scratch("pack_file_interrupt");
+    TestDirectory scratch("pack_file_interrupt");
     for (const bool directory : {false, true}) {
         const pid_t pid = ::fork();
         BOOST_TEST_REQUIRE(pid >= 0);
@@ -117,7 +117,7 @@ BOOST_AUTO_TEST_CASE(sigint_in_the_middle_of_a_write_removes_the_temporary_and_e
 
 BOOST_AUTO_TEST_CASE(a_full_disk_fails_a_compressed_or_plain_write_in_one_line) {
     // The gzip compressor once retried a failed write for ever (100 % CPU).
-    ScratchDirectory scratch("pack_file_full_disk");
+    TestDirectory scratch("pack_file_full_disk");
     for (const std::string name : {"big.xyz.gz", "big.xyz"}) {
         int status = 0;
         const std::string message = write_past_the_size_limit(scratch.path() / name, status);
@@ -129,7 +129,7 @@ BOOST_AUTO_TEST_CASE(a_full_disk_fails_a_compressed_or_plain_write_in_one_line) 
 }
 
 BOOST_AUTO_TEST_CASE(plain_and_gzip_files_read_back_the_same) {
-    ScratchDirectory scratch("pack_file_round_trip");
+    TestDirectory scratch("pack_file_round_trip");
     const Pack pack = small_pack();
     write_pack_file(scratch.path() / "a.xyz", pack, false);
     write_pack_file(scratch.path() / "a.xyz.gz", pack, false);
@@ -147,7 +147,7 @@ BOOST_AUTO_TEST_CASE(plain_and_gzip_files_read_back_the_same) {
 }
 
 BOOST_AUTO_TEST_CASE(dump_files_are_detected) {
-    ScratchDirectory scratch("pack_file_dump");
+    TestDirectory scratch("pack_file_dump");
     write_text(scratch.path() / "pour.dump",
                "\nITEM: TIMESTEP\n5\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS ff ff ff\n"
                "0 1\n0 1\n0 1\nITEM: ATOMS id x y z diameter\n1 0.5 0.5 0.5 0.2\n");
@@ -156,7 +156,7 @@ BOOST_AUTO_TEST_CASE(dump_files_are_detected) {
 }
 
 BOOST_AUTO_TEST_CASE(unreadable_and_corrupt_files) {
-    ScratchDirectory scratch("pack_file_errors");
+    TestDirectory scratch("pack_file_errors");
     const fs::path missing = scratch.path() / "missing.xyz";
     BOOST_TEST(input_error_of([&] { read_pack_file(missing); }) ==
                missing.string() + ": cannot open for reading");
@@ -171,7 +171,7 @@ BOOST_AUTO_TEST_CASE(unreadable_and_corrupt_files) {
 }
 
 BOOST_AUTO_TEST_CASE(existing_files_are_kept_without_overwrite) {
-    ScratchDirectory scratch("pack_file_keep");
+    TestDirectory scratch("pack_file_keep");
     const fs::path target = scratch.path() / "keep.xyz";
     write_text(target, "precious");
     BOOST_CHECK_THROW(write_pack_file(target, small_pack(), false), std::runtime_error);
@@ -182,7 +182,7 @@ BOOST_AUTO_TEST_CASE(existing_files_are_kept_without_overwrite) {
 }
 
 BOOST_AUTO_TEST_CASE(a_failed_write_leaves_nothing_behind) {
-    ScratchDirectory scratch("pack_file_atomic");
+    TestDirectory scratch("pack_file_atomic");
     const fs::path target = scratch.path() / "half.xyz";
     BOOST_CHECK_THROW(write_file_atomically(target, false,
                                             [](std::ostream& out) {
@@ -209,7 +209,7 @@ BOOST_AUTO_TEST_CASE(a_failed_write_leaves_nothing_behind) {
 }
 
 BOOST_AUTO_TEST_CASE(unwritable_targets_are_refused_before_any_work) {
-    ScratchDirectory scratch("pack_file_unwritable");
+    TestDirectory scratch("pack_file_unwritable");
     const fs::path blocker = scratch.path() / "file";
     write_text(blocker, "x");
     BOOST_CHECK_THROW(check_writable(blocker / "sub" / "pack.xyz", false), std::runtime_error);

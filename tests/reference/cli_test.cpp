@@ -201,8 +201,8 @@ BOOST_AUTO_TEST_CASE(values_once_accepted_silently_are_refused_with_the_prefix) 
         {"--timeout", "nan", "--timeout: must be a number in [0, 2592000] s (30 days)"},
         {"--timeout", "-1", "--timeout: must be a number in [0, 2592000] s (30 days)"},
         {"--friction", "x", "--friction"},
-        {"--density", "inf", "density = inf: must be positive"},
-        {"--check-time", "1e-300", "max_time = 30: must be at most 10^6 settling checks"},
+        {"--density", "inf", "--density inf: must be positive"},
+        {"--check-time", "1e-300", "--max-time 30: must be at most 10^6 settling checks"},
     };
     for (const auto& [option, value, message] : cases) {
         const ProgramRun run = fake.pour({option, value});

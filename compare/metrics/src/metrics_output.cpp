@@ -1,5 +1,8 @@
 #include "sgmp/compare/metrics_output.hpp"
 
+#include <fstream>
+#include <stdexcept>
+
 #include "sgmp/pack/version.hpp"
 
 namespace sgmp::compare {
@@ -241,6 +244,24 @@ void write_p_z_csv(std::ostream& out, const Measurement& m, const Json& prov) {
         }
         out << '\n';
     }
+}
+
+void write_pack_metrics(const std::filesystem::path& dir, const std::string& stem,
+                        const Measurement& m, const nlohmann::ordered_json& provenance) {
+    const auto write = [&](const std::string& suffix, const auto& produce) {
+        std::ofstream out(dir / (stem + suffix), std::ios::binary);
+        produce(out);
+        out.flush();
+        if (!out) {
+            throw std::runtime_error((dir / (stem + suffix)).string() + ": cannot write");
+        }
+    };
+    write(".metrics.json",
+          [&](std::ostream& out) { out << metrics_json(m, provenance).dump(2) << "\n"; });
+    write(".g_r.csv", [&](std::ostream& out) { write_g_r_csv(out, m, provenance); });
+    write(".phi_y.csv", [&](std::ostream& out) { write_phi_y_csv(out, m, provenance); });
+    write(".p_z.csv", [&](std::ostream& out) { write_p_z_csv(out, m, provenance); });
+    write(".voronoi_phi.csv", [&](std::ostream& out) { write_voronoi_csv(out, m, provenance); });
 }
 
 }  // namespace sgmp::compare

@@ -2,8 +2,9 @@
 
 #include <set>
 
-#include "csv_line.hpp"
+#include "sgmp/pack/csv_fields.hpp"
 #include "sgmp/pack/input_error.hpp"
+#include "sgmp/pack/line_reader.hpp"
 
 namespace sgmp::compare {
 namespace {
@@ -13,29 +14,25 @@ constexpr const char* kHeader = "role,group,count,seed,seconds,path";
 }  // namespace
 
 std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& source) {
+    LineReader reader(in, source);
     std::string line;
-    std::size_t number = 0;
-    if (!std::getline(in, line)) {
+    if (!reader.next(line)) {
         throw InputError(source, 0,
                          "empty manifest: expected the header '" + std::string(kHeader) + "'");
     }
-    ++number;
-    if (!line.empty() && line.back() == '\r') {
-        line.pop_back();
-    }
     if (line != kHeader) {
         throw InputError(
-            source, number,
+            source, 1,
             "expected the header '" + std::string(kHeader) + "', found '" + line + "'");
     }
     std::vector<ManifestEntry> entries;
     std::set<std::string> paths;
-    while (std::getline(in, line)) {
-        ++number;
-        if (line.find_first_not_of(" \t\r") == std::string::npos) {
+    while (reader.next(line)) {
+        const std::size_t number = reader.line_number();
+        if (line.find_first_not_of(" \t") == std::string::npos) {
             continue;
         }
-        const auto quoted = detail::split_quoted_csv_line(line);
+        const auto quoted = split_quoted_csv_line(line);
         if (!quoted) {
             throw InputError(source, number,
                              "a quoted field lacks its closing quote or has text after it");
@@ -62,20 +59,20 @@ std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& so
         if (entry.group.empty()) {
             throw InputError(source, number, "the group is empty");
         }
-        const auto count = detail::parse_csv_number<std::size_t>(fields[2]);
+        const auto count = parse_csv_number<std::size_t>(fields[2]);
         if (!count || *count == 0) {
             throw InputError(source, number,
                              "count '" + fields[2] + "' must be a positive integer");
         }
         entry.count = *count;
-        const auto seed = detail::parse_csv_number<std::uint64_t>(fields[3]);
+        const auto seed = parse_csv_number<std::uint64_t>(fields[3]);
         if (!seed) {
             throw InputError(source, number,
                              "seed '" + fields[3] + "' must be a non-negative integer");
         }
         entry.seed = *seed;
         if (!fields[4].empty()) {
-            const auto seconds = detail::parse_csv_number<double>(fields[4]);
+            const auto seconds = parse_csv_number<double>(fields[4]);
             if (!seconds || *seconds < 0.0) {
                 throw InputError(source, number,
                                  "seconds '" + fields[4] + "' must be a number >= 0 or empty");
@@ -92,7 +89,7 @@ std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& so
         entries.push_back(std::move(entry));
     }
     if (entries.empty()) {
-        throw InputError(source, number, "the manifest lists no packs");
+        throw InputError(source, reader.line_number(), "the manifest lists no packs");
     }
     return entries;
 }

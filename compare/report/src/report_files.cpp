@@ -11,13 +11,6 @@ namespace sgmp::compare {
 namespace fs = std::filesystem;
 namespace {
 
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 /// The SVG element of a file, without the XML prolog and doctype, for inlining in HTML.
 std::string svg_element(const std::string& svg) {
     const auto start = svg.find("<svg");
@@ -39,13 +32,14 @@ ReportContext write_report(const fs::path& directory, bool overwrite, const Repo
         context.plot_files = plots.files;
         std::vector<std::string> svgs;
         for (const auto& file : plots.files) {
-            svgs.push_back(svg_element(read_text(temporary / file)));
+            svgs.push_back(svg_element(read_text_file(temporary / file)));
         }
         write_text_file(temporary / "report.md", render_markdown(report, context));
         write_text_file(temporary / "report.csv", render_csv(report, context));
         write_text_file(temporary / "report.json", render_json(report, context).dump(2) + "\n");
         write_text_file(temporary / "index.html", render_html(report, context, svgs));
         for (const auto& [name, content] : context.extra_files) {
+            fs::create_directories((temporary / name).parent_path());  // e.g. pictures/
             write_text_file(temporary / name, content);
         }
     });

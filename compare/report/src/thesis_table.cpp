@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <functional>
 
-#include "csv_line.hpp"
+#include "sgmp/pack/csv_fields.hpp"
 #include "sgmp/pack/input_error.hpp"
+#include "sgmp/pack/line_reader.hpp"
 
 namespace sgmp::compare {
 namespace {
@@ -15,30 +16,28 @@ using Fields = std::vector<std::string>;
 /// and its number.
 void read_rows(std::istream& in, const std::string& source, const std::string& header,
                const std::function<void(const Fields&, std::size_t)>& row) {
+    LineReader reader(in, source);
     std::string line;
-    std::size_t number = 1;
-    const Fields columns = detail::split_csv_line(header);
-    if (!std::getline(in, line) || detail::split_csv_line(line) != columns) {
-        throw InputError(source, number, "expected the header '" + header + "'");
+    const Fields columns = split_csv_line(header);
+    if (!reader.next(line) || split_csv_line(line) != columns) {
+        throw InputError(source, 1, "expected the header '" + header + "'");
     }
-    while (std::getline(in, line)) {
-        ++number;
-        if (line.find_first_not_of(" \t\r") == std::string::npos) {
+    while (reader.next(line)) {
+        if (line.find_first_not_of(" \t") == std::string::npos) {
             continue;
         }
-        const Fields fields = detail::split_csv_line(line);
+        const Fields fields = split_csv_line(line);
         if (fields.size() != columns.size()) {
-            throw InputError(source, number,
-                             "expected " + std::to_string(columns.size()) +
-                                 " comma-separated fields, found " + std::to_string(fields.size()));
+            throw reader.error("expected " + std::to_string(columns.size()) +
+                               " comma-separated fields, found " + std::to_string(fields.size()));
         }
-        row(fields, number);
+        row(fields, reader.line_number());
     }
 }
 
 double number_field(const std::string& text, const char* what, const std::string& source,
                     std::size_t line) {
-    const auto value = detail::parse_csv_number<double>(text);
+    const auto value = parse_csv_number<double>(text);
     if (!value) {
         throw InputError(source, line, std::string(what) + " '" + text + "' is not a number");
     }
@@ -46,7 +45,7 @@ double number_field(const std::string& text, const char* what, const std::string
 }
 
 std::size_t count_field(const std::string& text, const std::string& source, std::size_t line) {
-    const auto value = detail::parse_csv_number<std::size_t>(text);
+    const auto value = parse_csv_number<std::size_t>(text);
     if (!value || *value == 0) {
         throw InputError(source, line, "count '" + text + "' must be a positive integer");
     }

@@ -7,9 +7,11 @@
 #include <boost/iostreams/filter/gzip.hpp>
 #include <boost/iostreams/filtering_stream.hpp>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <ios>
+#include <iterator>
 #include <stdexcept>
 #include <system_error>
 
@@ -213,6 +215,33 @@ void write_text_file(const fs::path& path, const std::string& text) {
     if (!out) {
         throw path_error(path, "cannot write");
     }
+}
+
+std::string read_text_file(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!in.good() && !in.eof()) {
+        throw path_error(path, "cannot read");
+    }
+    if (!in.is_open()) {
+        throw path_error(path, "cannot read");
+    }
+    return text;
+}
+
+ScratchDirectory::ScratchDirectory(const std::string& prefix) {
+    std::string pattern =
+        (fs::temp_directory_path() / (prefix + "-" + std::to_string(::getpid()) + "-XXXXXX"))
+            .string();
+    if (::mkdtemp(pattern.data()) == nullptr) {
+        throw path_error(fs::temp_directory_path(), "cannot create a scratch directory");
+    }
+    path_ = pattern;
+    guard_ = std::make_unique<TemporaryGuard>(path_);
+}
+
+ScratchDirectory::~ScratchDirectory() {
+    remove_temporary(path_);
 }
 
 }  // namespace sgmp

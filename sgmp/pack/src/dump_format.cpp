@@ -19,7 +19,7 @@ struct DumpColumns {
 };
 
 DumpColumns parse_atom_labels(const std::vector<std::string_view>& labels,
-                              const detail::LineReader& reader) {
+                              const LineReader& reader) {
     DumpColumns columns;
     columns.width = labels.size();
     const std::array<std::array<std::string_view, 2>, 3> position_labels{
@@ -59,7 +59,7 @@ DumpColumns parse_atom_labels(const std::vector<std::string_view>& labels,
     return columns;
 }
 
-std::string expect_item(detail::LineReader& reader, std::string_view item) {
+std::string expect_item(LineReader& reader, std::string_view item) {
     std::string line;
     if (!reader.next(line)) {
         throw reader.error("file ends where 'ITEM: " + std::string(item) + "' was expected");
@@ -71,7 +71,7 @@ std::string expect_item(detail::LineReader& reader, std::string_view item) {
     return line.substr(prefix.size());
 }
 
-std::string expect_line(detail::LineReader& reader, const char* what) {
+std::string expect_line(LineReader& reader, const char* what) {
     std::string line;
     if (!reader.next(line)) {
         throw reader.error(std::string("file ends where ") + what + " was expected");
@@ -79,7 +79,7 @@ std::string expect_line(detail::LineReader& reader, const char* what) {
     return line;
 }
 
-std::int64_t expect_integer(detail::LineReader& reader, const char* what) {
+std::int64_t expect_integer(LineReader& reader, const char* what) {
     const std::string line = expect_line(reader, what);
     const auto fields = detail::split_fields(line);
     const auto value = fields.size() == 1 ? detail::parse_integer(fields[0]) : std::nullopt;
@@ -90,7 +90,7 @@ std::int64_t expect_integer(detail::LineReader& reader, const char* what) {
     return *value;
 }
 
-double field_number(std::string_view field, const char* label, const detail::LineReader& reader) {
+double field_number(std::string_view field, const char* label, const LineReader& reader) {
     const auto value = detail::parse_double(field);
     if (!value) {
         throw reader.error(std::string("column '") + label + "' holds '" + std::string(field) +
@@ -100,7 +100,7 @@ double field_number(std::string_view field, const char* label, const detail::Lin
 }
 
 /// One snapshot, from the line after "ITEM: TIMESTEP".
-Pack read_snapshot(detail::LineReader& reader) {
+Pack read_snapshot(LineReader& reader) {
     Pack pack;
     const std::int64_t step = expect_integer(reader, "the timestep");
     expect_item(reader, "NUMBER OF ATOMS");
@@ -208,7 +208,7 @@ Pack read_dump_lines(LineReader& reader) {
 }  // namespace detail
 
 Pack read_dump_custom(std::istream& in, const std::string& source) {
-    detail::LineReader reader(in, source);
+    LineReader reader(in, source);
     return detail::read_dump_lines(reader);
 }
 

@@ -84,7 +84,7 @@ std::string_view before_comment(std::string_view line) {
     return line.substr(0, line.find('#'));
 }
 
-Particle parse_atom(const std::string& line, const detail::LineReader& reader) {
+Particle parse_atom(const std::string& line, const LineReader& reader) {
     const auto hash = line.find('#');
     const auto fields = detail::split_fields(before_comment(line));
     if (fields.size() != 7 && fields.size() != 10) {
@@ -126,7 +126,7 @@ Particle parse_atom(const std::string& line, const detail::LineReader& reader) {
 }  // namespace
 
 Pack read_lammps_data(std::istream& in, const std::string& source) {
-    detail::LineReader reader(in, source);
+    LineReader reader(in, source);
     std::string line;
     if (!reader.next(line)) {
         throw InputError(source, 0, "empty file: expected the title line of a data file");

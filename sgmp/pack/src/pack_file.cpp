@@ -46,7 +46,7 @@ PackRead single(Pack pack, const ReadOptions& options) {
 
 PackRead read_detected(std::istream& in, const std::string& source, bool data_name,
                        const ReadOptions& options) {
-    detail::LineReader reader(in, source);
+    LineReader reader(in, source);
     std::string line;
     std::size_t blanks = 0;
     while (reader.next(line) && detail::is_blank(line)) {

@@ -50,7 +50,7 @@ std::string lower(std::string_view text) {
 
 /// key=value pairs of the comment line; values may be double-quoted.
 std::vector<std::pair<std::string, std::string>> parse_comment(const std::string& line,
-                                                               const detail::LineReader& reader) {
+                                                               const LineReader& reader) {
     std::vector<std::pair<std::string, std::string>> pairs;
     std::size_t pos = 0;
     while (true) {
@@ -102,7 +102,7 @@ struct Columns {
 };
 
 Columns parse_properties(const std::string& descriptor, bool have_radius,
-                         const detail::LineReader& reader) {
+                         const LineReader& reader) {
     std::vector<std::string> parts;
     std::size_t pos = 0;
     while (pos <= descriptor.size()) {
@@ -162,7 +162,7 @@ Columns parse_properties(const std::string& descriptor, bool have_radius,
     return columns;
 }
 
-double number_field(std::string_view field, const char* what, const detail::LineReader& reader) {
+double number_field(std::string_view field, const char* what, const LineReader& reader) {
     const auto value = detail::parse_double(field);
     if (!value) {
         throw reader.error(std::string(what) + " '" + std::string(field) + "' is not a number");
@@ -171,7 +171,7 @@ double number_field(std::string_view field, const char* what, const detail::Line
 }
 
 std::int64_t integer_field(std::string_view field, const char* what,
-                           const detail::LineReader& reader) {
+                           const LineReader& reader) {
     const auto value = detail::parse_integer(field);
     if (!value) {
         throw reader.error(std::string(what) + " '" + std::string(field) + "' is not an integer");
@@ -182,7 +182,7 @@ std::int64_t integer_field(std::string_view field, const char* what,
 /// One particle line; `decimals` grows to the most decimals of its numbers.
 Particle parse_particle(const std::string& line, const Columns& columns, std::int64_t index,
                         const ReadOptions& options, int& decimals,
-                        const detail::LineReader& reader) {
+                        const LineReader& reader) {
     const auto fields = detail::split_fields(line);
     if (static_cast<int>(fields.size()) != columns.width) {
         throw reader.error("expected " + std::to_string(columns.width) + " columns, found " +
@@ -222,7 +222,7 @@ std::string lattice_text(const Container& c, double height) {
 
 /// Reads one frame whose count line is `count_line`; the reader stands on that line.
 PackRead read_frame(const std::string& count_line, std::size_t frame, const ReadOptions& options,
-                    detail::LineReader& reader) {
+                    LineReader& reader) {
     const auto fields = detail::split_fields(count_line);
     const auto count = fields.size() == 1 ? detail::parse_integer(fields[0]) : std::nullopt;
     if (!count || *count < 0) {
@@ -301,7 +301,7 @@ Pack read_xyz(std::istream& in, const std::string& source) {
 }
 
 PackRead read_xyz(std::istream& in, const std::string& source, const ReadOptions& options) {
-    detail::LineReader reader(in, source);
+    LineReader reader(in, source);
     return detail::read_xyz_lines(reader, options);
 }
 

@@ -4,6 +4,7 @@
 /// q6_*, region, plus more) and the curve CSVs (g_r, phi_y, p_z, voronoi_phi), each with its header
 /// row first, then '#' provenance lines (csv_text.hpp).
 
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
@@ -39,6 +40,12 @@ void write_voronoi_csv(std::ostream& out, const Measurement& m,
 
 /// The provenance as "# key: value" comment lines (one JSON value per line), written right
 /// after a CSV's header row (the layout of csv_text.hpp).
+/// Writes the per-pack outputs of `measure` into directory `dir` (one being written
+/// atomically): <stem>.metrics.json, .g_r.csv, .phi_y.csv, .p_z.csv, .voronoi_phi.csv.
+/// Throws std::runtime_error when a file cannot be written.
+void write_pack_metrics(const std::filesystem::path& dir, const std::string& stem,
+                        const Measurement& m, const nlohmann::ordered_json& provenance);
+
 void write_comment_header(std::ostream& out, const nlohmann::ordered_json& provenance);
 
 }  // namespace sgmp::compare

@@ -5,8 +5,11 @@
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <ostream>
 #include <string>
+
+#include "sgmp/pack/interrupt.hpp"
 
 namespace sgmp {
 
@@ -25,6 +28,25 @@ void write_file_atomically(const std::filesystem::path& target, bool overwrite,
 /// being built atomically (write_directory_atomically) or a scratch directory. Throws
 /// std::runtime_error "<path>: cannot write".
 void write_text_file(const std::filesystem::path& path, const std::string& text);
+
+/// The whole content of a file; throws std::runtime_error "<path>: cannot read".
+std::string read_text_file(const std::filesystem::path& path);
+
+/// A fresh directory under the system's temporary directory, named PREFIX-PID-XXXXXX,
+/// removed with everything in it when the object ends (and on interrupt, through
+/// interrupt.hpp's TemporaryGuard). For scratch work whose results are copied out.
+class ScratchDirectory {
+  public:
+    explicit ScratchDirectory(const std::string& prefix);
+    ~ScratchDirectory();
+    ScratchDirectory(const ScratchDirectory&) = delete;
+    ScratchDirectory& operator=(const ScratchDirectory&) = delete;
+    [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+
+  private:
+    std::filesystem::path path_;
+    std::unique_ptr<TemporaryGuard> guard_;
+};
 
 /// Replaces directory `target` atomically: `produce` fills a fresh temporary directory
 /// beside it, which then takes the target's place (an existing target is removed only

@@ -1,5 +1,7 @@
 #pragma once
-// Private helper: one line of CSV split at commas, with RFC 4180 quoting.
+/// @file csv_fields.hpp
+/// Fields of one CSV line (RFC 4180 quoting) and strict numbers in them: what the
+/// manifest, thesis-table and baseline readers share.
 
 #include <charconv>
 #include <cmath>
@@ -9,7 +11,7 @@
 #include <type_traits>
 #include <vector>
 
-namespace sgmp::compare::detail {
+namespace sgmp {
 
 /// Fields of one CSV line (RFC 4180): a field may be double-quoted, and then holds commas
 /// and doubled quotes ("" for "). nullopt for a line with an unterminated quote or text
@@ -83,4 +85,4 @@ std::optional<Number> parse_csv_number(const std::string& text) {
     return value;
 }
 
-}  // namespace sgmp::compare::detail
+}  // namespace sgmp

@@ -1,5 +1,6 @@
 #pragma once
-// Helpers shared by the pack tests: scratch directories and reading files back.
+// Helpers shared by the test suites: scratch directories under the build tree, reading
+// files back, and the message of an InputError.
 
 #include <filesystem>
 #include <fstream>
@@ -11,19 +12,19 @@
 namespace sgmp::testing {
 
 /// A fresh directory under the build tree, removed at the end of the test.
-class ScratchDirectory {
+class TestDirectory {
   public:
-    explicit ScratchDirectory(const std::string& name)
+    explicit TestDirectory(const std::string& name)
         : path_(std::filesystem::path(SGMP_BINARY_DIR) / "test-scratch" / name) {
         std::filesystem::remove_all(path_);
         std::filesystem::create_directories(path_);
     }
-    ~ScratchDirectory() {
+    ~TestDirectory() {
         std::error_code ignored;
         std::filesystem::remove_all(path_, ignored);
     }
-    ScratchDirectory(const ScratchDirectory&) = delete;
-    ScratchDirectory& operator=(const ScratchDirectory&) = delete;
+    TestDirectory(const TestDirectory&) = delete;
+    TestDirectory& operator=(const TestDirectory&) = delete;
     [[nodiscard]] const std::filesystem::path& path() const { return path_; }
 
   private:

@@ -1,0 +1,166 @@
+// sgmp-compare measure, report and header: metrics of single packs, the agreement report of
+// two groups of packs, and one pack's provenance keys for scripts.
+#include <chrono>
+#include <iostream>
+#include <map>
+#include <memory>
+
+#include "command_support.hpp"
+#include "sgmp/compare/agreement.hpp"
+#include "sgmp/compare/metrics_output.hpp"
+#include "sgmp/compare/report_files.hpp"
+#include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/input_error.hpp"
+#include "sgmp/pack/pack_file.hpp"
+
+namespace sgmp::compare::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct MeasureOptions {
+    std::vector<std::string> packs;
+    CommonOptions common;
+};
+
+struct ReportOptions {
+    std::vector<std::string> a;
+    std::vector<std::string> b;
+    std::string label_a = "A";
+    std::string label_b = "B";
+    CommonOptions common;
+};
+
+struct HeaderOptions {
+    std::string pack;
+    std::vector<std::string> keys;
+    bool allow_missing = false;
+};
+
+/// Every pack must write its own output names.
+void check_distinct_stems(const std::vector<std::string>& packs) {
+    std::map<std::string, std::string> stems;
+    for (const auto& path : packs) {
+        const auto [it, fresh] = stems.emplace(stem_of(path), path);
+        if (!fresh) {
+            throw UsageError("packs " + it->second + " and " + path +
+                             " would write the same output names '" + it->first + ".*'");
+        }
+    }
+}
+
+int run_measure(MeasureOptions& o, const std::string& cmd) {
+    apply(o.common);
+    check_distinct_stems(o.packs);
+    write_directory_atomically(o.common.out, o.common.force, [&](const fs::path& dir) {
+        for (const auto& path : o.packs) {
+            const auto read_start = std::chrono::steady_clock::now();
+            const Pack pack = read_pack(path);
+            if (o.common.timings) {
+                std::cerr << "timings " << path << ": read "
+                          << std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                                           read_start)
+                                 .count()
+                          << " s\n";
+            }
+            const Measurement m = measure_pack(path, pack, o.common);
+            auto prov = provenance(path, pack, o.common.measure);
+            prov["command"] = cmd;
+            write_pack_metrics(dir, stem_of(path), m, prov);
+        }
+    });
+    return 0;
+}
+
+void check_labels(const std::string& label_a, const std::string& label_b) {
+    if (label_a == label_b) {
+        throw UsageError("--label-a and --label-b must differ (both are '" + label_a + "')");
+    }
+    for (const auto& label : {label_a, label_b}) {
+        if (label.empty() || label.find_first_of(",\n\"") != std::string::npos) {
+            throw UsageError("labels must be non-empty without commas, quotes or line breaks: '" +
+                             label + "'");
+        }
+    }
+}
+
+int run_report(ReportOptions& o, const std::string& cmd) {
+    check_labels(o.label_a, o.label_b);
+    apply(o.common);
+    std::vector<Group> groups{measure_group(o.label_a, o.a, o.common),
+                              measure_group(o.label_b, o.b, o.common)};
+    ReportPlan plan;
+    plan.comparisons = {{0, 1}};
+    const Report report = build_report(std::move(groups), plan);
+    ReportContext context;
+    context.command = cmd;
+    context.parameters = measure_parameters(o.common);
+    const auto used = write_report(o.common.out, o.common.force, report, context);
+    if (!used.plots_made) {
+        std::cerr << "sgmp-compare: plots skipped: " << used.plots_note << "\n";
+    }
+    return 0;
+}
+
+/// Prints every key=value of the header, or the value of each asked key on its own line.
+int run_header(const HeaderOptions& o) {
+    const Pack pack = read_pack_file(o.pack);
+    if (o.keys.empty()) {
+        for (const auto& entry : pack.metadata.entries()) {
+            std::cout << entry.first << "=" << entry.second << "\n";
+        }
+        return 0;
+    }
+    for (const auto& key : o.keys) {
+        const auto value = pack.metadata.get(key);
+        if (!value && !o.allow_missing) {
+            throw InputError(o.pack, 2, "the header has no key '" + key + "'");
+        }
+        std::cout << value.value_or("") << '\n';
+    }
+    return 0;
+}
+
+}  // namespace
+
+CommandRunner register_measure(CLI::App& app) {
+    auto o = std::make_shared<MeasureOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "measure",
+        "measure packs: per pack <stem>.metrics.json, "
+        "<stem>.g_r.csv, <stem>.phi_y.csv, <stem>.p_z.csv, <stem>.voronoi_phi.csv");
+    cmd->add_option("packs", o->packs, "pack files (extended XYZ or LIGGGHTS dump, .gz ok)")
+        ->required();
+    add_common(cmd, o->common);
+    return [o, cmd](const std::string& command) { return *cmd ? run_measure(*o, command) : -1; };
+}
+
+CommandRunner register_report(CLI::App& app) {
+    auto o = std::make_shared<ReportOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "report",
+        "agreement report of packs A against reference packs B, per particle count: "
+        "report.md, report.csv, report.json, plots/*.svg, index.html");
+    cmd->add_option("--a", o->a, "candidate packs")->required();
+    cmd->add_option("--b", o->b, "reference packs (their seed-to-seed spread sets the tolerance)")
+        ->required();
+    cmd->add_option("--label-a", o->label_a, "name of the A side (default A)");
+    cmd->add_option("--label-b", o->label_b, "name of the B side (default B)");
+    add_common(cmd, o->common);
+    return [o, cmd](const std::string& command) { return *cmd ? run_report(*o, command) : -1; };
+}
+
+CommandRunner register_header(CLI::App& app) {
+    auto o = std::make_shared<HeaderOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "header",
+        "print a pack file's provenance keys: every key=value line, or the value of each KEY "
+        "given, one per line (for scripts; the file is read and checked in full)");
+    cmd->add_option("pack", o->pack, "pack file (extended XYZ or dump custom, .gz ok)")->required();
+    cmd->add_option("keys", o->keys, "keys to print");
+    cmd->add_flag("--allow-missing", o->allow_missing,
+                  "print an empty line for a key the header lacks instead of failing");
+    return [o, cmd](const std::string&) { return *cmd ? run_header(*o) : -1; };
+}
+
+}  // namespace sgmp::compare::cli

@@ -1,0 +1,182 @@
+#include "sgmp/compare/report_pictures.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "sgmp/pack/pack_file.hpp"
+#include "sgmp/pack/version.hpp"
+#include "sgmp/render/povray.hpp"
+#include "sgmp/render/scene.hpp"
+
+namespace sgmp::compare {
+namespace fs = std::filesystem;
+namespace {
+
+std::string slug(const std::string& text) {
+    std::string out;
+    for (const char c : text) {
+        const bool keep = std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '.';
+        if (keep) {
+            out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        } else if (!out.empty() && out.back() != '-') {
+            out += '-';
+        }
+    }
+    while (!out.empty() && out.back() == '-') {
+        out.pop_back();
+    }
+    return out;
+}
+
+std::size_t pictured_count(const std::vector<ManifestEntry>& manifest, std::size_t preferred) {
+    std::set<std::size_t> candidates;
+    std::set<std::size_t> references;
+    for (const auto& e : manifest) {
+        (e.role == Role::Candidate ? candidates : references).insert(e.count);
+    }
+    std::size_t best = 0;
+    for (const std::size_t n : candidates) {
+        if (references.contains(n)) {
+            if (n == preferred) {
+                return n;
+            }
+            best = std::max(best, n);
+        }
+    }
+    return best;
+}
+
+std::string read_bytes(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return bytes.str();
+}
+
+std::string caption(const PictureChoice& c) {
+    return (c.reference ? "" : "SGMP ") + c.group + ", seed " + std::to_string(c.seed);
+}
+
+}  // namespace
+
+std::vector<PictureChoice> choose_pictures(const std::vector<ManifestEntry>& manifest,
+                                           std::size_t preferred) {
+    const std::size_t count = pictured_count(manifest, preferred);
+    std::vector<PictureChoice> choices;
+    if (count == 0) {
+        return choices;
+    }
+    for (const bool reference : {false, true}) {
+        std::vector<std::string> order;
+        std::map<std::string, const ManifestEntry*> lowest;
+        for (const auto& e : manifest) {
+            const bool is_reference = e.role == Role::Reference;
+            if (e.count != count || e.role == Role::Variant || is_reference != reference) {
+                continue;
+            }
+            auto [it, fresh] = lowest.emplace(e.group, &e);
+            if (fresh) {
+                order.push_back(e.group);
+            } else if (e.seed < it->second->seed) {
+                it->second = &e;
+            }
+        }
+        for (const auto& group : order) {
+            const ManifestEntry& e = *lowest[group];
+            PictureChoice c{group, reference, count, e.seed, e.path, ""};
+            c.file = "pictures/n" + std::to_string(count) + "-" + (reference ? "r" : "c") +
+                     std::to_string(choices.size() + 1) + "-" + slug(group) + ".png";
+            choices.push_back(c);
+        }
+    }
+    return choices;
+}
+
+PictureSet render_pictures(const std::vector<PictureChoice>& choices, int size) {
+    PictureSet set;
+    const auto povray = render::find_povray();
+    if (!povray) {
+        set.note = render::povray_missing_note();
+        return set;
+    }
+    if (choices.empty()) {
+        set.note = "no particle count has both candidate and reference packs to picture";
+        return set;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    render::SceneOptions options;
+    options.width = size;
+    options.height = size;
+    options.view = render::View{35.0, 30.0};
+    options.cut = *render::parse_cut("half");
+    std::string scratch_name = (fs::temp_directory_path() / "sgmp-pictures-XXXXXX").string();
+    if (::mkdtemp(scratch_name.data()) == nullptr) {
+        set.note = "pictures skipped: cannot create a scratch directory";
+        return set;
+    }
+    const fs::path scratch(scratch_name);
+    try {
+        for (const auto& c : choices) {
+            const Pack pack = read_pack_file(c.path);
+            options.provenance = "pack: " + c.path;
+            render::RenderJob job;
+            job.scene = render::povray_scene(pack, options);
+            job.width = size;
+            job.height = size;
+            job.out = scratch / "picture.png";
+            job.overwrite = true;
+            job.texts = {{"Software", "sgmp-compare crossval " + std::string(sgmp::version())},
+                         {"Source", c.path},
+                         {"Comment", caption(c) + "; view 35,30; half cut away; colour bins"}};
+            render::render_png(*povray, job);
+            set.files.emplace_back(c.file, read_bytes(job.out));
+        }
+        set.made = true;
+    } catch (const std::exception& error) {
+        set.files.clear();
+        set.note = std::string("pictures skipped: ") + error.what();
+    }
+    std::error_code ignored;
+    fs::remove_all(scratch, ignored);
+    set.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return set;
+}
+
+std::string pictures_markdown(const std::vector<PictureChoice>& choices, const PictureSet& set) {
+    std::ostringstream md;
+    md << "\n## Pictures\n\n";  // a blank line ends whatever came before
+    if (!set.made) {
+        md << "No pictures: " << set.note << ".\n\n";
+        return md.str();
+    }
+    md << "One pack of each SGMP mode beside one DEM pour of each friction class at N = "
+       << choices.front().count
+       << ", seen from azimuth 35°, elevation 30°, with the half nearer the camera cut away "
+          "(spheres whose centre lies in front of the vertical plane through the container's "
+          "axis are not drawn), so the cut face shows the inside; spheres coloured by their "
+          "colour bin, the container outlined up to the pack's top. Rendered with POV-Ray.\n\n";
+    md << "|";
+    for (const auto& c : choices) {
+        md << " " << caption(c) << " |";
+    }
+    md << "\n|";
+    for (std::size_t i = 0; i < choices.size(); ++i) {
+        md << " --- |";
+    }
+    md << "\n|";
+    for (const auto& c : choices) {
+        md << " [![" << caption(c) << "](" << c.file << ")](" << c.file << ") |";
+    }
+    md << "\n\n";
+    return md.str();
+}
+
+}  // namespace sgmp::compare

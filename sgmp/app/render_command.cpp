@@ -1,0 +1,178 @@
+// sgmp render PACK --out pack.png [--size WxH] [--view AZ,EL|front|top|iso]
+//                  [--colour bin|height] [--cut none|half|slice|x>V...]
+//                  [--container outline|walls|none] [--force]
+// Reads a pack file, builds its POV-Ray scene (sgmp_render) and renders it to a PNG.
+#include "render_command.hpp"
+
+#include <charconv>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "sgmp/cli/run_main.hpp"
+#include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/input_error.hpp"
+#include "sgmp/pack/pack_file.hpp"
+#include "sgmp/pack/parameter_error.hpp"
+#include "sgmp/pack/version.hpp"
+#include "sgmp/render/povray.hpp"
+#include "sgmp/render/scene.hpp"
+
+namespace sgmp::app {
+namespace {
+
+/// Largest image side accepted, in pixels.
+constexpr int kMaxSide = 8192;
+
+struct RenderOptions {
+    std::string pack;
+    std::string out;
+    std::string size = "800x800";
+    std::string view = "iso";
+    std::string colour = "bin";
+    std::string cut = "none";
+    std::string container = "outline";
+    int threads = 0;
+    bool force = false;
+};
+
+using cli::UsageError;
+
+std::optional<std::pair<int, int>> parse_size(const std::string& text) {
+    const auto x = text.find('x');
+    if (x == std::string::npos) {
+        return std::nullopt;
+    }
+    int w = 0;
+    int h = 0;
+    const char* begin = text.data();
+    const char* end = begin + text.size();
+    const auto wr = std::from_chars(begin, begin + x, w);
+    const auto hr = std::from_chars(begin + x + 1, end, h);
+    if (wr.ec != std::errc() || wr.ptr != begin + x || hr.ec != std::errc() || hr.ptr != end ||
+        w < 16 || h < 16 || w > kMaxSide || h > kMaxSide) {
+        return std::nullopt;
+    }
+    return std::pair{w, h};
+}
+
+template <class T>
+T require(std::optional<T> parsed, const std::string& option, const std::string& value,
+          const std::string& rule) {
+    if (!parsed) {
+        throw ParameterError(option, value, rule);
+    }
+    return *parsed;
+}
+
+render::SceneOptions scene_options(const RenderOptions& o) {
+    render::SceneOptions s;
+    const auto [w, h] = require(parse_size(o.size), "size", o.size,
+                                "must be WIDTHxHEIGHT in pixels, each 16 to " +
+                                    std::to_string(kMaxSide) + ", e.g. 800x800");
+    s.width = w;
+    s.height = h;
+    s.view = require(render::parse_view(o.view), "view", o.view,
+                     "must be AZ,EL in degrees (EL in [-90, 90]) or front, top, iso");
+    s.colouring = require(render::parse_colouring(o.colour), "colour", o.colour,
+                          "must be one of bin, height");
+    s.cut = require(render::parse_cut(o.cut), "cut", o.cut,
+                    "must be none, half, slice or a plane such as z>0 (x|y|z, > or <, a number)");
+    s.container = require(render::parse_container_style(o.container), "container", o.container,
+                          "must be one of outline, walls, none");
+    s.provenance = "pack: " + o.pack + "\nsize=" + o.size + " view=" + o.view +
+                   " colour=" + o.colour + " cut=" + o.cut + " container=" + o.container;
+    return s;
+}
+
+std::vector<std::pair<std::string, std::string>> png_texts(const RenderOptions& o,
+                                                           const Pack& pack) {
+    std::string made_from;
+    for (const auto& key : {"generator", "version", "count", "arrangement", "friction", "seed"}) {
+        if (const auto value = pack.metadata.get(key)) {
+            made_from += (made_from.empty() ? "" : " ") + std::string(key) + "=" + *value;
+        }
+    }
+    return {{"Software", "sgmp render " + std::string(sgmp::version())},
+            {"Source", o.pack},
+            {"Comment", "size=" + o.size + " view=" + o.view + " colour=" + o.colour +
+                            " cut=" + o.cut + " container=" + o.container},
+            {"Pack", made_from}};
+}
+
+int run(const RenderOptions& o) {
+    const render::SceneOptions s = scene_options(o);
+    const auto povray = render::find_povray();
+    if (!povray) {
+        throw std::runtime_error(
+            "povray was not found on PATH (install the Debian package povray)");
+    }
+    try {
+        check_writable(o.out, o.force);
+    } catch (const std::runtime_error& e) {
+        throw UsageError(std::string("--out ") + e.what());
+    }
+    const Pack pack = read_pack_file(o.pack);
+    if (pack.particles.empty()) {
+        throw InputError(o.pack, 0, "the pack has no particles");
+    }
+    std::string scene;
+    try {
+        scene = render::povray_scene(pack, s);
+    } catch (const std::invalid_argument& e) {
+        throw InputError(o.pack, 2, e.what());  // the header line holds the container key
+    }
+    render::RenderJob job;
+    job.scene = scene;
+    job.width = s.width;
+    job.height = s.height;
+    job.out = o.out;
+    job.overwrite = o.force;
+    job.texts = png_texts(o, pack);
+    job.threads = o.threads;
+    render::render_png(*povray, job);
+    std::printf("sgmp: rendered %zu of %zu spheres, %dx%d -> %s\n",
+                render::scene_sphere_count(scene), pack.particles.size(), s.width, s.height,
+                o.out.c_str());
+    return 0;
+}
+
+}  // namespace
+
+RenderCommand register_render(CLI::App& app) {
+    auto o = std::make_shared<RenderOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "render",
+        "a picture of a pack (PNG) rendered with POV-Ray: shaded spheres coloured by "
+        "colour bin or height, the container, an optional cut-away");
+    cmd->add_option("pack", o->pack, "pack file (extended XYZ or LIGGGHTS dump, .gz ok)")
+        ->required();
+    cmd->add_option("--out", o->out, "output PNG")->required();
+    cmd->add_flag("--force", o->force, "overwrite an existing output file");
+    cmd->add_option("--size", o->size, "image size WIDTHxHEIGHT in pixels")->capture_default_str();
+    cmd->add_option("--view", o->view,
+                    "camera: AZ,EL in degrees (azimuth about Y from +Z toward +X, elevation "
+                    "above the horizontal) or front (0,10), top (0,90), iso (35,30)")
+        ->capture_default_str();
+    cmd->add_option("--colour", o->colour,
+                    "sphere colours: bin (the colour bins 0-9, Tableau 10) or height (viridis "
+                    "from the floor to the top)")
+        ->capture_default_str();
+    cmd->add_option("--cut", o->cut,
+                    "cut-away: none, half (drop the half nearer the camera), slice (keep a slab "
+                    "two diameters thick through the axis, face on), or a plane such as z>0 "
+                    "(drop the spheres whose centre has z > 0)")
+        ->capture_default_str();
+    cmd->add_option("--container", o->container,
+                    "container: outline (thin edges), walls (translucent floor and far walls), "
+                    "none")
+        ->capture_default_str();
+    cmd->add_option("--threads", o->threads, "POV-Ray render threads (0: all cores)")
+        ->check(CLI::Range(0, 256))
+        ->capture_default_str();
+    // Errors go to cli::run_main: usage errors exit 2, anything else 1, one line each.
+    auto run_command = [o]() -> int { return run(*o); };
+    return RenderCommand{cmd, run_command};
+}
+
+}  // namespace sgmp::app

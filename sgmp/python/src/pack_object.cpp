@@ -1,0 +1,128 @@
+// The Python `sgmp.Pack`: a pack's particles as numpy arrays (copies) and its header as a
+// dict of strings in header order.
+#include <pybind11/stl.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "bindings.hpp"
+
+namespace sgmp::python {
+namespace {
+
+py::array_t<double> positions(const Pack& pack) {
+    const auto n = static_cast<py::ssize_t>(pack.particles.size());
+    py::array_t<double> out({n, py::ssize_t{3}});
+    auto view = out.mutable_unchecked<2>();
+    for (py::ssize_t i = 0; i < n; ++i) {
+        const Vec3& c = pack.particles[static_cast<std::size_t>(i)].center;
+        for (py::ssize_t k = 0; k < 3; ++k) {
+            view(i, k) = c[k];
+        }
+    }
+    return out;
+}
+
+template <class T, class Get>
+py::array_t<T> column(const Pack& pack, Get get) {
+    py::array_t<T> out(static_cast<py::ssize_t>(pack.particles.size()));
+    auto view = out.template mutable_unchecked<1>();
+    for (std::size_t i = 0; i < pack.particles.size(); ++i) {
+        view(static_cast<py::ssize_t>(i)) = get(pack.particles[i]);
+    }
+    return out;
+}
+
+py::dict header(const Pack& pack) {
+    py::dict out;
+    for (const auto& [key, value] : pack.metadata.entries()) {
+        out[py::str(key)] = value;
+    }
+    return out;
+}
+
+using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using Longs = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
+
+Pack make(const Doubles& xyz, const Doubles& radii, const std::optional<Longs>& bins,
+          const std::optional<Longs>& ids, const std::optional<py::dict>& head) {
+    if (xyz.ndim() != 2 || xyz.shape(1) != 3) {
+        throw std::invalid_argument("positions: must be an array of shape (N, 3)");
+    }
+    const py::ssize_t n = xyz.shape(0);
+    auto same_length = [n](const auto& a, const char* name) {
+        if (a.ndim() != 1 || a.shape(0) != n) {
+            throw std::invalid_argument(
+                std::string(name) + ": must be an array of shape (N,), N = " + std::to_string(n) +
+                " as the positions");
+        }
+    };
+    same_length(radii, "radii");
+    if (bins) {
+        same_length(*bins, "bins");
+    }
+    if (ids) {
+        same_length(*ids, "ids");
+    }
+    Pack pack;
+    const auto p = xyz.unchecked<2>();
+    const auto r = radii.unchecked<1>();
+    for (py::ssize_t i = 0; i < n; ++i) {
+        Particle particle;
+        particle.id = ids ? ids->at(i) : static_cast<std::int64_t>(i + 1);
+        particle.center = Vec3(p(i, 0), p(i, 1), p(i, 2));
+        particle.radius = r(i);
+        particle.color = bins ? static_cast<int>(bins->at(i)) : 0;
+        pack.particles.push_back(particle);
+    }
+    if (head) {
+        for (const auto& [key, value] : *head) {
+            pack.metadata.set(py::str(key).cast<std::string>(), py::str(value).cast<std::string>());
+        }
+    }
+    return pack;
+}
+
+}  // namespace
+
+const Pack& pack_of(const py::handle& object) {
+    try {
+        return object.cast<const Pack&>();
+    } catch (const py::cast_error&) {
+        throw std::invalid_argument(
+            "pack: must be an sgmp.Pack (from sgmp.pack, sgmp.read or "
+            "sgmp.Pack(positions, radii, ...))");
+    }
+}
+
+void bind_pack(py::module_& m) {
+    py::class_<Pack>(m, "Pack",
+                     "A pack: positions (N, 3), radii (N,), bins (N,) colour labels 0-9, ids "
+                     "(N,) and the header (provenance) as a dict of strings. The arrays are "
+                     "copies.")
+        .def(py::init(&make), py::arg("positions"), py::arg("radii"), py::arg("bins") = py::none(),
+             py::arg("ids") = py::none(), py::arg("header") = py::none(),
+             "A pack from arrays; ids default to 1..N, bins to 0, the header to empty.")
+        .def_property_readonly("positions", &positions, "centres, shape (N, 3)")
+        .def_property_readonly(
+            "radii",
+            [](const Pack& p) { return column<double>(p, [](auto& q) { return q.radius; }); },
+            "radii, shape (N,)")
+        .def_property_readonly(
+            "bins",
+            [](const Pack& p) { return column<std::int64_t>(p, [](auto& q) { return q.color; }); },
+            "colour bins, shape (N,)")
+        .def_property_readonly(
+            "ids",
+            [](const Pack& p) { return column<std::int64_t>(p, [](auto& q) { return q.id; }); },
+            "particle ids, shape (N,)")
+        .def_property_readonly("header", &header, "the header's key=value pairs, in order")
+        .def("__len__", [](const Pack& p) { return p.particles.size(); })
+        .def("__repr__", [](const Pack& p) {
+            const auto generator = p.metadata.get("generator");
+            return "<sgmp.Pack of " + std::to_string(p.particles.size()) + " particles" +
+                   (generator ? ", generator=" + *generator : std::string()) + ">";
+        });
+}
+
+}  // namespace sgmp::python

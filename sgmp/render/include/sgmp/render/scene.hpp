@@ -1,0 +1,45 @@
+#pragma once
+/// @file scene.hpp
+/// A pack as a POV-Ray scene: shaded spheres coloured by colour bin or by height, the
+/// container as a thin outline or translucent walls, a camera from azimuth and elevation
+/// that fits the container up to the pack's top, and an optional cut-away (cut.hpp).
+/// Pure text: the same pack and options give the same bytes.
+///
+/// Axes are the testbed's (right-handed, Y up); the camera's `right` vector is mirrored so
+/// POV-Ray's left-handed frame shows the pack unmirrored.
+
+#include <string>
+
+#include "sgmp/pack/pack.hpp"
+#include "sgmp/render/cut.hpp"
+#include "sgmp/render/view.hpp"
+
+namespace sgmp::render {
+
+enum class Colouring { Bin, Height };
+enum class ContainerStyle { Outline, Walls, None };
+
+struct SceneOptions {
+    int width = 800;  ///< pixels (only the aspect ratio enters the scene)
+    int height = 800;
+    View view;
+    Colouring colouring = Colouring::Bin;
+    ContainerStyle container = ContainerStyle::Outline;
+    CutSpec cut;
+    /// Free text placed in the scene's first comment lines (what made it).
+    std::string provenance;
+};
+
+/// Parses "bin" | "height", and "outline" | "walls" | "none".
+std::optional<Colouring> parse_colouring(std::string_view text);
+std::optional<ContainerStyle> parse_container_style(std::string_view text);
+
+/// The scene text. The container is the pack's `container` header key (the thesis
+/// container when absent). Throws std::invalid_argument for a malformed container key or
+/// a pack without particles.
+std::string povray_scene(const Pack& pack, const SceneOptions& options);
+
+/// Number of spheres in a scene text (lines starting "sphere{"), for checks.
+std::size_t scene_sphere_count(const std::string& scene);
+
+}  // namespace sgmp::render

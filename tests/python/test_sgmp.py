@@ -1,0 +1,193 @@
+"""The Python module against the command line: the same pack bytes as `sgmp pack`, the
+same metrics as `sgmp-compare measure`, the same one-line errors, read/write round trips,
+and the README's example script."""
+
+import json
+import os
+import pathlib
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import sgmp
+
+# CTest sets these; run by hand (PYTHONPATH=build/sgmp/python /usr/bin/python3 -m pytest
+# tests/python) they default to the source tree holding this file and its build/.
+SOURCE = pathlib.Path(os.environ.get("SGMP_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
+SGMP = os.environ.get("SGMP_EXECUTABLE", SOURCE / "build" / "sgmp" / "sgmp")
+COMPARE = os.environ.get("SGMP_COMPARE_EXECUTABLE", SOURCE / "build" / "compare" / "sgmp-compare")
+
+
+def run(*args):
+    return subprocess.run([str(a) for a in args], capture_output=True, text=True, check=False)
+
+
+@pytest.mark.parametrize(
+    "options, cli",
+    [
+        (dict(count=300, arrangement="small-dense", seed=3), []),
+        (
+            dict(count=200, arrangement="large-dense", seed=5, gap="random", contact="roll",
+                 sweep_stages="8,120", circle_factor=40, size_modes="1:0.7,0.5:0.3"),
+            ["--gap", "random", "--contact", "roll", "--sweep-stages", "8,120",
+             "--circle-factor", "40", "--size-modes", "1:0.7,0.5:0.3"],
+        ),
+        (
+            dict(count=150, arrangement="loose-random", seed=2, relax="frictionless",
+                 relax_stages=3, fall="step", fall_step=0.002),
+            ["--relax", "frictionless", "--relax-stages", "3", "--fall", "step",
+             "--fall-step", "0.002"],
+        ),
+    ],
+)
+def test_pack_writes_the_same_bytes_as_sgmp_pack(tmp_path, options, cli):
+    ours = tmp_path / "python.xyz"
+    theirs = tmp_path / "cli.xyz"
+    sgmp.write(sgmp.pack(**options), ours)
+    r = run(SGMP, "pack", "--count", options["count"], "--arrangement", options["arrangement"],
+            "--seed", options["seed"], "--out", theirs, *cli)
+    assert r.returncode == 0, r.stderr
+    assert ours.read_bytes() == theirs.read_bytes()
+
+
+def test_arrays_and_header():
+    p = sgmp.pack(count=120, arrangement="loose-random", seed=4)
+    assert len(p) == 120
+    assert p.positions.shape == (120, 3) and p.positions.dtype == np.float64
+    assert p.radii.shape == (120,) and p.bins.shape == (120,)
+    assert set(np.unique(p.bins)) <= set(range(10))
+    assert list(p.ids) == list(range(1, 121))
+    h = p.header
+    assert h["generator"] == "sgmp" and h["seed"] == "4" and h["arrangement"] == "loose-random"
+    # Sizing rule: d = (18 phi* / (pi N))^(1/3) with phi* = 0.63.
+    d = (18 * 0.63 / (np.pi * 120)) ** (1 / 3)
+    assert np.allclose(2 * p.radii, d, rtol=1e-15, atol=0)
+    start = sgmp.arrange(count=120, arrangement="loose-random", seed=4)
+    assert start.header["generator"] == "sgmp" and len(start) == 120
+
+
+def test_measure_equals_sgmp_compare_measure(tmp_path):
+    path = tmp_path / "p.xyz"
+    sgmp.write(sgmp.pack(count=600, arrangement="large-dense", seed=1), path)
+    r = run(COMPARE, "measure", path, "--out", tmp_path / "m")
+    assert r.returncode == 0, r.stderr
+    expected = json.loads((tmp_path / "m" / "p.metrics.json").read_text())
+    m = sgmp.measure(sgmp.read(path))
+    for key in ["phi", "count", "overlaps", "z_mean_tol_1e-3", "z_mean_tol_1e-2", "split_ratio",
+                "q6_global", "q6_local_mean", "voronoi_phi_mean", "voronoi_phi_sd", "top"]:
+        assert m[key] == expected[key], key  # exactly: the same code on the same pack
+    g = np.genfromtxt(tmp_path / "m" / "p.g_r.csv", delimiter=",", comments="#", names=True)
+    # The CSV's numbers are written in shortest round-trip form, so they read back exactly.
+    assert np.array_equal(m["g_r"][:, 0], g["r_over_d"])
+    assert np.array_equal(m["g_r"][:, 1], g["g"])
+    phi_y = np.genfromtxt(tmp_path / "m" / "p.phi_y.csv", delimiter=",", comments="#",
+                          names=True)
+    assert np.array_equal(m["phi_y"][:, 1], phi_y["phi"])
+    p_z = np.genfromtxt(tmp_path / "m" / "p.p_z.csv", delimiter=",", comments="#", names=True)
+    assert np.array_equal(m["p_z"][:, 0], p_z["z"])
+    assert np.array_equal(m["p_z"][:, 1 + m["p_z_tolerances"].index("1e-3")], p_z["p_tol_1e3"])
+    # P(Z) sums to 1 at every tolerance (each origin has one Z).
+    assert np.allclose(m["p_z"][:, 1:].sum(axis=0), 1.0, rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize(
+    "options, cli, value",
+    [
+        (dict(gap="banana"), ["--gap", "banana"], "banana"),
+        (dict(circle_factor=0.5), ["--circle-factor", "0.5"], "0.5"),
+        (dict(relax="sideways"), ["--relax", "sideways"], "sideways"),
+        (dict(momentum=1.5), ["--momentum", "1.5"], "1.5"),
+    ],
+)
+def test_bad_options_raise_value_error_with_the_command_line_text(tmp_path, options, cli, value):
+    with pytest.raises(ValueError) as error:
+        sgmp.pack(count=100, arrangement="small-dense", seed=1, **options)
+    # "keyword = value: rule", the keyword as typed in Python.
+    keyword = next(iter(options))
+    assert str(error.value).startswith(f"{keyword} = {value}: ")
+    rule = str(error.value).split(": ", 1)[1]
+    r = run(SGMP, "pack", "--count", "100", "--arrangement", "small-dense", "--seed", "1",
+            "--out", tmp_path / "x.xyz", *cli)
+    assert r.returncode == 2
+    # The command line says the same, with the keyword spelt as its option.
+    assert r.stderr == f"sgmp: {cli[0]} {value}: {rule}\n"
+    assert not (tmp_path / "x.xyz").exists()
+
+
+def test_other_bad_input():
+    with pytest.raises(ValueError, match="^count = 0: must be between 1"):
+        sgmp.pack(count=0, arrangement="small-dense")
+    with pytest.raises(ValueError, match="^arrangement = heap: must be one of"):
+        sgmp.pack(count=10, arrangement="heap")
+    with pytest.raises(ValueError, match="^seed = -1: "):
+        sgmp.pack(count=10, arrangement="small-dense", seed=-1)
+    with pytest.raises(ValueError, match="^colour_factor: not an option"):
+        sgmp.pack(count=10, arrangement="small-dense", colour_factor=2)
+    with pytest.raises(ValueError, match="^circle_factor = fifty: must be a number"):
+        sgmp.pack(count=10, arrangement="small-dense", circle_factor="fifty")
+    with pytest.raises(ValueError, match="^slab = -1: must be a positive number"):
+        sgmp.measure(sgmp.pack(count=60, arrangement="small-dense"), slab=-1)
+
+
+def test_read_write_round_trip(tmp_path):
+    p = sgmp.pack(count=250, arrangement="loose-random", seed=7, relax="frictionless")
+    for name in ["p.xyz", "p.xyz.gz"]:
+        sgmp.write(p, tmp_path / name)
+        q = sgmp.read(tmp_path / name)
+        assert np.array_equal(q.positions, p.positions)  # full precision text
+        assert np.array_equal(q.radii, p.radii)
+        assert np.array_equal(q.bins, p.bins) and np.array_equal(q.ids, p.ids)
+        assert q.header == p.header
+    with pytest.raises(OSError, match="exists"):
+        sgmp.write(p, tmp_path / "p.xyz")
+    sgmp.write(p, tmp_path / "p.xyz", force=True)
+    # A pack made from arrays, written and read back.
+    made = sgmp.Pack(p.positions, p.radii, bins=p.bins, header={"generator": "numpy", "seed": 7})
+    sgmp.write(made, tmp_path / "made.xyz")
+    back = sgmp.read(tmp_path / "made.xyz")
+    assert np.array_equal(back.positions, p.positions) and back.header["generator"] == "numpy"
+    with pytest.raises(ValueError, match="radii"):
+        sgmp.Pack(p.positions, p.radii[:-1])
+    (tmp_path / "bad.xyz").write_text("2\nProperties=pos:R:3\n1 2\n")
+    with pytest.raises(ValueError, match="bad.xyz:"):
+        sgmp.read(tmp_path / "bad.xyz")
+
+
+def test_example_script_runs(tmp_path):
+    script = SOURCE / "sgmp" / "python" / "examples" / "pack_measure_plot.py"
+    r = subprocess.run([sys.executable, str(script), str(tmp_path), "300"], capture_output=True,
+                       text=True, check=False, env=dict(os.environ, MPLBACKEND="Agg"))
+    assert r.returncode == 0, r.stderr
+    assert "relaxed: N = 300" in r.stdout
+    png = (tmp_path / "g_r.png").read_bytes()
+    assert png[:8] == b"\x89PNG\r\n\x1a\n"
+    assert len(sgmp.read(tmp_path / "relaxed.xyz")) == 300
+
+
+def test_every_format_through_the_pack_library(tmp_path):
+    p = sgmp.pack(count=200, arrangement="loose-random", seed=3, size_modes="1:0.6,0.7:0.4")
+    for name in ["p.data", "p.dump"]:
+        sgmp.write(p, tmp_path / name)
+        q = sgmp.read(tmp_path / name)
+        order = np.argsort(q.ids)
+        assert np.array_equal(q.ids[order], p.ids)
+        assert np.array_equal(q.positions[order], p.positions), name  # %.17g: exact
+        assert np.array_equal(q.radii[order], p.radii), name
+    sgmp.write(p, tmp_path / "p.vtk")
+    assert (tmp_path / "p.vtk").read_text().startswith("# vtk DataFile")
+    assert (tmp_path / "p.container.vtk").exists()
+    sgmp.write(p, tmp_path / "named", format="dump")
+    assert len(sgmp.read(tmp_path / "named")) == 200
+    with pytest.raises(ValueError, match="^format = pdf: must be one of"):
+        sgmp.write(p, tmp_path / "x.pdf", format="pdf")
+    with pytest.raises(ValueError, match="^path = .*x.pdf: its ending names no format"):
+        sgmp.write(p, tmp_path / "x.pdf")
+    # Multi-frame extended XYZ: frame picks one, radius replaces every radius.
+    one = tmp_path / "p.xyz"
+    sgmp.write(p, one)
+    text = one.read_text()
+    (tmp_path / "two.xyz").write_text(text + text)
+    assert np.array_equal(sgmp.read(tmp_path / "two.xyz", frame=1).positions, p.positions)
+    assert np.all(sgmp.read(tmp_path / "two.xyz", radius=0.01).radii == 0.01)

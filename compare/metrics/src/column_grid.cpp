@@ -75,7 +75,6 @@ ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, const std::vector
     x.resize(n);
     y.resize(n);
     z.resize(n);
-    r.resize(n);
     index.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         const std::uint32_t k = next[cell_of[i]]++;
@@ -83,7 +82,6 @@ ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, const std::vector
         x[k] = p.center.x();
         y[k] = p.center.y();
         z[k] = p.center.z();
-        r[k] = p.radius;
         index[k] = members[i];
     }
 }

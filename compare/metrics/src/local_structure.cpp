@@ -17,7 +17,7 @@ namespace {
 // Origins per parallel work item. Fixed (never from the thread count), and with it the
 // order of every floating-point sum.
 constexpr std::size_t kOriginsPerChunk = 256;
-constexpr double kCellSideOverD = 0.5;  // of the column grid (measured fastest of 0.3 … 1)
+constexpr double kCellSideOverD = 0.3;  // of the column grids (0.3: 6 % less CPU than 0.5 or 0.7)
 constexpr std::size_t kMaxZ = 64;       // Z above this is recorded as kMaxZ (never seen in packs)
 
 struct Partial {

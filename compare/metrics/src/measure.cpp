@@ -157,11 +157,8 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     }
     const std::vector<Particle> particles = spatially_ordered(pack.particles, d);
 
-    std::vector<Vec3> centres;
-    centres.reserve(particles.size());
     std::vector<Index> origins;
     for (std::size_t i = 0; i < particles.size(); ++i) {
-        centres.push_back(particles[i].center);
         if (m.region.contains(particles[i].center)) {
             origins.push_back(static_cast<Index>(i));
         }
@@ -172,8 +169,7 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     }
     // The kd-tree only fixes the order in which Q6 sums each origin's bonds; it is freed
     // before the pair pass.
-    const std::vector<Index> report_rank = NeighbourIndex(centres).report_rank();
-    std::vector<Vec3>().swap(centres);
+    const std::vector<Index> report_rank = NeighbourIndex(particles).report_rank();
     stage_times.index = watch.lap();
 
     m.phi = packing_fraction(particles, m.region);

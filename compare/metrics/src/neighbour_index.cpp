@@ -74,8 +74,8 @@ struct NeighbourIndex::Impl {
     Traits traits;
     Tree tree;
 
-    explicit Impl(const std::vector<Vec3>& input)
-        : points(make_points(input)),
+    explicit Impl(std::vector<Point> input)
+        : points(std::move(input)),
           traits(PointOfIndex{&points}),
           tree(Splitter(kBucketSize), traits) {
         std::vector<Index> keys(points.size());
@@ -86,13 +86,16 @@ struct NeighbourIndex::Impl {
         tree.build();
     }
 
-    static std::vector<Point> make_points(const std::vector<Vec3>& input) {
+    /// The points of `input` (Vec3 or Particle, read by `centre`).
+    template <class T, class Centre>
+    static std::vector<Point> make_points(const std::vector<T>& input, Centre centre) {
         if (input.size() >= std::numeric_limits<Index>::max()) {
             throw std::length_error("too many points for the neighbour index");
         }
         std::vector<Point> result;
         result.reserve(input.size());
-        for (const Vec3& p : input) {
+        for (const T& item : input) {
+            const Vec3& p = centre(item);
             result.emplace_back(p.x(), p.y(), p.z());
         }
         return result;
@@ -100,7 +103,12 @@ struct NeighbourIndex::Impl {
 };
 
 NeighbourIndex::NeighbourIndex(const std::vector<Vec3>& points)
-    : impl_(std::make_unique<Impl>(points)) {}
+    : impl_(std::make_unique<Impl>(
+          Impl::make_points(points, [](const Vec3& p) -> const Vec3& { return p; }))) {}
+
+NeighbourIndex::NeighbourIndex(const std::vector<Particle>& particles)
+    : impl_(std::make_unique<Impl>(Impl::make_points(
+          particles, [](const Particle& p) -> const Vec3& { return p.center; }))) {}
 
 NeighbourIndex::~NeighbourIndex() = default;
 

@@ -33,8 +33,8 @@ class ColumnGrid {
     /// `after` of for_each_range: every position.
     static constexpr std::size_t kAll = static_cast<std::size_t>(-1);
 
-    /// Stored arrays, cell by cell: centre coordinates, radius and index into `particles`.
-    std::vector<double> x, y, z, r;
+    /// Stored arrays, cell by cell: centre coordinates and index into `particles`.
+    std::vector<double> x, y, z;
     std::vector<Index> index;
 
     /// Calls f(begin, end) for ranges of stored positions that together hold every centre

@@ -19,6 +19,8 @@ using Index = std::uint32_t;
 class NeighbourIndex {
   public:
     explicit NeighbourIndex(const std::vector<Vec3>& points);
+    /// The index of the particles' centres (no copy of them is kept besides the tree's).
+    explicit NeighbourIndex(const std::vector<Particle>& particles);
     ~NeighbourIndex();
     NeighbourIndex(const NeighbourIndex&) = delete;
     NeighbourIndex& operator=(const NeighbourIndex&) = delete;

@@ -2,10 +2,13 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include "sgmp/compare/metrics_output.hpp"
 #include "sgmp/compare/parallel.hpp"
+#include "sgmp/compare/precomputed.hpp"
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/option_rules.hpp"
@@ -14,6 +17,38 @@
 namespace fs = std::filesystem;
 
 namespace sgmp::compare::cli {
+
+namespace {
+
+std::string read_text(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        throw InputError(path, 0, "cannot open for reading");
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+PackSummary read_measured(const std::string& path, const CommonOptions& o) {
+    nlohmann::ordered_json metrics;
+    try {
+        metrics = nlohmann::ordered_json::parse(read_text(path));
+    } catch (const nlohmann::json::parse_error& error) {
+        throw InputError(path, 0, std::string("not valid JSON: ") + error.what());
+    }
+    return summary_from_measure(path, metrics, read_text(sibling_csv(path, "g_r")),
+                                read_text(sibling_csv(path, "phi_y")), measure_parameters(o));
+}
+
+}  // namespace
+
+void add_precomputed(CLI::App* command, CommonOptions& o) {
+    command->add_option("--metrics", o.metrics,
+                        "batch summaries (sgmp batch --measure) whose rows stand for the packs "
+                        "they name: those packs are not read again (scalar metrics only; "
+                        "curves and Q6 are then not judged)");
+}
 
 void add_common(CLI::App* command, CommonOptions& o) {
     command->add_option("--out", o.out, "output directory (created atomically)")->required();
@@ -46,7 +81,8 @@ void add_common(CLI::App* command, CommonOptions& o) {
                         "overlaps deeper than this x d are counted (default 1e-9)");
     command
         ->add_option("--threads", o.threads,
-                     "worker threads, at most 256 (default all cores; results do not depend on it)")
+                     "worker threads, at most 256 (default: the CPUs the process may use; results "
+                     "do not depend on it)")
         ->check([](const std::string& text) {
             return finite_range_rule(text, 0.0, 256.0, "[0, 256] (0: all cores)");
         });
@@ -65,6 +101,11 @@ void apply(CommonOptions& o) {
         check_writable(o.out, o.force);
     } catch (const std::runtime_error& error) {
         throw UsageError(std::string("--out ") + error.what());
+    }
+    for (const auto& path : o.metrics) {
+        for (auto& [pack, summary] : summaries_from_batch(read_text(path), path)) {
+            o.precomputed[fs::path(pack).lexically_normal().string()] = std::move(summary);
+        }
     }
 }
 
@@ -123,6 +164,15 @@ Group measure_group(const std::string& label, const std::vector<std::string>& pa
     Group group;
     group.label = label;
     for (const auto& path : packs) {
+        if (is_metrics_json(path)) {
+            group.packs.push_back(read_measured(path, o));
+            continue;
+        }
+        if (const auto found = o.precomputed.find(fs::path(path).lexically_normal().string());
+            found != o.precomputed.end()) {
+            group.packs.push_back(found->second);
+            continue;
+        }
         const Pack pack = read_pack(path);
         group.packs.push_back(summarise(path, pack, measure_pack(path, pack, o)));
     }

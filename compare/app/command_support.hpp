@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -29,11 +30,16 @@ struct CommonOptions {
     bool timings = false;
     bool force = false;
     std::string out;
+    std::vector<std::string> metrics;  // --metrics: batch summaries holding precomputed rows
+    std::map<std::string, PackSummary> precomputed;  // their rows by pack path (apply)
 };
 
 /// --out, --force and the measurement options.
 void add_common(CLI::App* command, CommonOptions& o);
-/// Validates the options (ParameterError) and checks that --out can be written (UsageError).
+/// --metrics (crossval, report): packs whose metrics are precomputed in batch summaries.
+void add_precomputed(CLI::App* command, CommonOptions& o);
+/// Validates the options (ParameterError), checks that --out can be written (UsageError)
+/// and reads the --metrics summaries.
 void apply(CommonOptions& o);
 /// "sgmp-compare <arguments>", recorded in outputs.
 std::string command_line(int argc, char** argv);
@@ -44,7 +50,9 @@ Measurement measure_pack(const std::string& path, const Pack& pack, const Common
 nlohmann::ordered_json measure_parameters(const CommonOptions& o);
 /// File name without .gz and the format extension.
 std::string stem_of(const std::string& path);
-/// Reads and measures `packs` as one labelled group.
+/// Reads and measures `packs` as one labelled group. A path ending in `.metrics.json`
+/// (a `measure` output) and a pack found in the --metrics summaries are not measured
+/// again: their precomputed metrics are used (sgmp/compare/precomputed.hpp).
 Group measure_group(const std::string& label, const std::vector<std::string>& packs,
                     const CommonOptions& o);
 

@@ -193,6 +193,7 @@ CommandRunner register_crossval(CLI::App& app) {
         ->check(CLI::Range(64, 2048))
         ->capture_default_str();
     add_common(cmd, options->common);
+    add_precomputed(cmd, options->common);
     return [options, cmd](const std::string& command) {
         return *cmd ? run_crossval(*options, command) : -1;
     };

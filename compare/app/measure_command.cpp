@@ -147,6 +147,7 @@ CommandRunner register_report(CLI::App& app) {
     cmd->add_option("--label-a", o->label_a, "name of the A side (default A)");
     cmd->add_option("--label-b", o->label_b, "name of the B side (default B)");
     add_common(cmd, o->common);
+    add_precomputed(cmd, o->common);
     return [o, cmd](const std::string& command) { return *cmd ? run_report(*o, command) : -1; };
 }
 

@@ -1,5 +1,7 @@
 #include "pour_command.hpp"
 
+#include "launcher_options.hpp"
+
 #include <cstdio>
 #include <iostream>
 
@@ -54,9 +56,10 @@ CLI::App* add_pour_command(CLI::App& app, PourOptions& o) {
         ->capture_default_str();
     cmd->add_option("--out", o.out, "Output pack file (extended XYZ; .gz compresses)")->required();
     cmd->add_option("--ranks", p.ranks,
-                    "MPI ranks; above 1 runs 'mpirun -np K' with a "
-                    "processor grid 'K 1 1' (split along x)")
+                    "MPI ranks; above 1 runs LIGGGHTS under --launcher with a processor grid "
+                    "chosen from the container (PY = 1: x and z split, never the fall)")
         ->capture_default_str();
+    add_launcher_options(*cmd, o.request);
     cmd->add_option("--timeout", o.timeout, "Wall-clock limit in seconds; 0 means none")
         ->capture_default_str()
         ->check([](const std::string& text) {

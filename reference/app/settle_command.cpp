@@ -1,4 +1,5 @@
 #include "settle_command.hpp"
+#include "launcher_options.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -62,8 +63,8 @@ CLI::App* add_settle_command(CLI::App& app, SettleOptions& o) {
                     "Viscous damping of the tangential contact spring, on or off")
         ->capture_default_str()
         ->check(CLI::IsMember({"on", "off"}));
-    cmd->add_option("--ranks", p.ranks, "MPI ranks (processor grid 'K 1 1')")
-        ->capture_default_str();
+    cmd->add_option("--ranks", p.ranks, "MPI ranks (under --launcher)")->capture_default_str();
+    add_launcher_options(*cmd, o.request);
     cmd->add_option("--timeout", o.timeout, "Wall-clock limit in seconds; 0 means none")
         ->capture_default_str()
         ->check(CLI::NonNegativeNumber);

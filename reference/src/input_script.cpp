@@ -2,8 +2,10 @@
 
 #include <stdexcept>
 
+#include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/metadata.hpp"
 #include "sgmp/pack/version.hpp"
+#include "sgmp/reference/launcher.hpp"
 
 namespace sgmp::reference {
 
@@ -46,8 +48,12 @@ double domain_top(double start_top, double diameter) {
     return start_top + 0.25 * (start_top + 0.625) + 4.0 * diameter;
 }
 
-std::string processor_grid(int ranks) {
-    return std::to_string(ranks) + " 1 1";
+std::string processor_grid(const PourParameters& p) {
+    const Container c;
+    const auto grid = p.processors.empty()
+                          ? choose_processor_grid(p.ranks, c.x_max - c.x_min, c.z_max - c.z_min)
+                          : parse_processor_grid(p.processors).value();
+    return std::to_string(grid[0]) + " " + std::to_string(grid[1]) + " " + std::to_string(grid[2]);
 }
 
 std::string pour_script(const PourParameters& p, double start_top) {
@@ -74,7 +80,7 @@ std::string pour_script(const PourParameters& p, double start_top) {
         {"cloud_fraction", format_number(p.cloud_fraction)},
         {"start_top", format_number(start_top)},
         {"domain_top", format_number(domain_top(start_top, d))},
-        {"processor_grid", processor_grid(p.ranks)},
+        {"processor_grid", processor_grid(p)},
         {"seed_template", std::to_string(seeds.particle_template)},
         {"seed_distribution", std::to_string(seeds.distribution)},
         {"seed_insert", std::to_string(seeds.insertion)},

@@ -21,6 +21,7 @@
 #include "sgmp/pack/sphere_box_volume.hpp"
 #include "sgmp/pack/version.hpp"
 #include "sgmp/reference/input_script.hpp"
+#include "sgmp/reference/launcher.hpp"
 #include "sgmp/reference/start_jitter.hpp"
 
 namespace sgmp::reference {
@@ -150,14 +151,14 @@ std::vector<std::string> command_line(const PourRequest& request) {
     }
     std::vector<std::string> argv;
     if (request.parameters.ranks > 1) {
-        const auto mpirun = find_executable(request.mpirun);
-        if (!mpirun) {
-            throw PourError("'" + request.mpirun + "' not found on PATH (needed for --ranks " +
-                            std::to_string(request.parameters.ranks) +
-                            "): install the Debian package 'openmpi-bin'");
+        try {
+            argv = launch_words(request.launcher, request.parameters.ranks,
+                                current_launch_environment());
+        } catch (const std::invalid_argument& error) {
+            throw PourError(
+                std::string(error.what()) +
+                (request.launcher == "mpirun" ? ": install the Debian package 'openmpi-bin'" : ""));
         }
-        argv = {mpirun->string(), "-np", std::to_string(request.parameters.ranks),
-                "--allow-run-as-root"};
     }
     // Line-buffered output: progress arrives as it happens and no message is lost when
     // LIGGGHTS aborts.
@@ -333,7 +334,7 @@ void record(Metadata& m, const PourRequest& request, const PourLog& log, const P
     m.set_number("max_wall_penetration_over_d", r.max_wall_penetration_over_d);
     m.set_number("phi_control_volume", r.phi_control_volume);
     m.set_integer("ranks", p.ranks);
-    m.set("processor_grid", processor_grid(p.ranks));
+    m.set("processor_grid", processor_grid(p));
     m.set("liggghts_seeds", std::to_string(seeds.particle_template) + " " +
                                 std::to_string(seeds.distribution) + " " +
                                 std::to_string(seeds.insertion));

@@ -1,5 +1,7 @@
 #include "sgmp/reference/pour_parameters.hpp"
 
+#include "sgmp/reference/launcher.hpp"
+
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -49,6 +51,14 @@ void PourParameters::validate() const {
     require(start_jitter >= 0.0 && start_jitter <= 0.5, "start_jitter", start_jitter,
             "in [0, 0.5]");
     require(ranks >= 1 && ranks <= 64, "ranks", ranks, "between 1 and 64");
+    if (!processors.empty()) {
+        const auto grid = parse_processor_grid(processors);
+        if (!grid || (*grid)[0] * (*grid)[1] * (*grid)[2] != ranks) {
+            throw ParameterError("processors", processors,
+                                 "must be PX,PY,PZ, whole numbers >= 1 with PX*PY*PZ = ranks " +
+                                     std::to_string(ranks));
+        }
+    }
 }
 
 double PourParameters::diameter() const {

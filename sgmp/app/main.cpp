@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "batch_command.hpp"
 #include "config_file.hpp"
 #include "convert_command.hpp"
 #include "render_command.hpp"
@@ -321,6 +322,7 @@ int main(int argc, char** argv) {
                         "given on the command line win");
     CLI::App* convert = sgmp::app::register_convert(app);
     const auto render = sgmp::app::register_render(app);
+    sgmp::app::BatchCommand batch(app);
     const auto parse = [&] {
         std::vector<std::string> args(argv + 1, argv + argc);
         args = expand_config(std::move(args));
@@ -334,6 +336,9 @@ int main(int argc, char** argv) {
         }
         if (render.command->parsed()) {
             return render.run();
+        }
+        if (batch.parsed()) {
+            return batch.run();
         }
         return pack->parsed() ? run_pack(pack_options) : run_arrange(arrange_options);
     });

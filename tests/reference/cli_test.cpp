@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -200,7 +201,7 @@ BOOST_AUTO_TEST_CASE(values_once_accepted_silently_are_refused_with_the_prefix) 
         {"--seed", "-1", "--seed: must be a whole number from 0 to 18446744073709551615"},
         {"--timeout", "nan", "--timeout: must be a number in [0, 2592000] s (30 days)"},
         {"--timeout", "-1", "--timeout: must be a number in [0, 2592000] s (30 days)"},
-        {"--friction", "x", "--friction"},
+        {"--friction", "x", "Could not convert: --friction = x"},
         {"--density", "inf", "--density inf: must be positive"},
         {"--check-time", "1e-300", "--max-time 30: must be at most 10^6 settling checks"},
     };
@@ -336,6 +337,86 @@ BOOST_AUTO_TEST_CASE(help_documents_the_options) {
     BOOST_TEST(run_program(kExe, options).exit_code == 0);
     options.args = {"--version"};
     BOOST_TEST(run_program(kExe, options).exit_code == 0);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+// --launcher: fake launchers (mpirun, Open MPI's mpirun, srun, a command line) that record
+// their arguments and run the rest, so every launcher is tested where the real one is
+// missing; --processors and the default grid in the input script.
+BOOST_AUTO_TEST_SUITE(launchers)
+
+namespace {
+
+/// A launcher that writes its arguments to `log`, drops its own options and runs the rest.
+std::string fake_launcher(const fs::path& log) {
+    return "echo \"$*\" > '" + log.string() +
+           "'\nwhile [ $# -gt 0 ]; do case \"$1\" in -np|-n|--ranks) shift 2 ;; "
+           "--allow-run-as-root|--) shift ;; *) break ;; esac; done\nexec \"$@\"\n";
+}
+
+std::string slurp_text(const fs::path& path) {
+    std::ifstream in(path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(every_launcher_runs_the_pour) {
+    FakeLiggghts fake("");
+    const fs::path dump = fake.dir / "result.dump";
+    std::ofstream(dump) << settled_dump();
+    write_script(fake.dir / "bin" / "liggghts", settled_fake(dump));
+    const fs::path log = fake.dir / "launch.log";
+    write_script(fake.dir / "bin" / "srun", fake_launcher(log));
+    write_script(fake.dir / "bin" / "mpirun", fake_launcher(log));  // not Open MPI's
+    write_script(fake.dir / "bin" / "mpirun.openmpi", fake_launcher(log));
+    fs::create_symlink(fake.dir / "bin" / "mpirun.openmpi", fake.dir / "bin" / "orterun");
+    write_script(fake.dir / "bin" / "launch-it", fake_launcher(log));
+    const std::string root = ::geteuid() == 0 ? " --allow-run-as-root" : "";
+    const struct {
+        std::vector<std::string> args;
+        std::string expected;  // the launcher's own arguments, before stdbuf/liggghts
+        std::string grid;
+    } cases[] = {
+        {{"--ranks", "4"}, "-np 4 ", "2 1 2"},
+        {{"--ranks", "2", "--launcher", "srun"}, "-n 2 ", "2 1 1"},
+        {{"--ranks", "4", "--launcher", (fake.dir / "bin" / "orterun").string()},
+         "-np 4" + root + " ",
+         "2 1 2"},
+        {{"--ranks", "3", "--launcher", "launch-it --ranks {np} --", "--processors", "1,1,3"},
+         "--ranks 3 -- ",
+         "1 1 3"},
+    };
+    for (const auto& c : cases) {
+        std::vector<std::string> args{"--quiet", "--force", "--keep-work",
+                                      (fake.dir / "work").string()};
+        args.insert(args.end(), c.args.begin(), c.args.end());
+        const ProgramRun run = fake.pour(args);
+        BOOST_TEST(run.exit_code == 0, run.stderr_text);
+        const std::string launched = slurp_text(log);
+        BOOST_TEST(launched.rfind(c.expected, 0) == 0u, launched);
+        BOOST_TEST(launched.find("liggghts -in in.pour") != std::string::npos, launched);
+        BOOST_TEST(slurp_text(fake.dir / "work" / "in.pour").find("processors      " + c.grid) !=
+                       std::string::npos,
+                   c.grid);
+        fs::remove(log);
+        fs::remove_all(fake.dir / "work");
+    }
+    // Bad launcher and grid: one line each, nothing written.
+    const ProgramRun no_np =
+        fake.pour({"--quiet", "--force", "--ranks", "2", "--launcher", "launch-it -n 2"});
+    BOOST_TEST(no_np.exit_code != 0);
+    BOOST_TEST(first_line(no_np.stderr_text).find("must hold {np}") != std::string::npos,
+               no_np.stderr_text);
+    const ProgramRun bad_grid =
+        fake.pour({"--quiet", "--force", "--ranks", "2", "--processors", "2,2,1"});
+    BOOST_TEST(bad_grid.exit_code == 2);
+    BOOST_TEST(first_line(bad_grid.stderr_text).find("--processors 2,2,1: must be PX,PY,PZ") !=
+                   std::string::npos,
+               bad_grid.stderr_text);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -147,8 +147,16 @@ BOOST_AUTO_TEST_CASE(parameters_outside_their_range_are_refused_by_name) {
 }
 
 BOOST_AUTO_TEST_CASE(the_processor_grid_splits_horizontally) {
-    BOOST_TEST(processor_grid(1) == "1 1 1");
-    BOOST_TEST(processor_grid(4) == "4 1 1");
+    const auto grid = [](int ranks, const std::string& processors = "") {
+        PourParameters p;
+        p.ranks = ranks;
+        p.processors = processors;
+        return processor_grid(p);
+    };
+    BOOST_TEST(grid(1) == "1 1 1");
+    BOOST_TEST(grid(2) == "2 1 1");
+    BOOST_TEST(grid(4) == "2 1 2");  // the square container: a square grid
+    BOOST_TEST(grid(4, "4,1,1") == "4 1 1");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -1,5 +1,7 @@
 #include "sgmp/compare/parallel.hpp"
 
+#include "sgmp/pack/cpu_budget.hpp"
+
 #include <atomic>
 #include <exception>
 #include <mutex>
@@ -19,7 +21,7 @@ unsigned thread_count() {
     if (requested > 0) {
         return requested;
     }
-    return std::max(1u, std::thread::hardware_concurrency());
+    return sgmp::usable_threads();
 }
 
 void parallel_for(std::size_t count, const std::function<void(std::size_t)>& task) {

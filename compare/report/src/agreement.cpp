@@ -31,12 +31,20 @@ std::set<std::size_t> counts_of(const Group& g) {
 }
 
 void check_same_bins(const std::vector<const PackSummary*>& packs) {
+    const PackSummary* first = nullptr;
     for (const auto* p : packs) {
-        if (p->gr.size() != packs.front()->gr.size() ||
-            p->gr_bin_width != packs.front()->gr_bin_width) {
+        if (p->has_curves()) {
+            first = first != nullptr ? first : p;
+        }
+    }
+    for (const auto* p : packs) {
+        if (!p->has_curves()) {
+            continue;
+        }
+        if (p->gr.size() != first->gr.size() || p->gr_bin_width != first->gr_bin_width) {
             throw std::invalid_argument("packs with " + std::to_string(p->count) +
                                         " particles use different g(r) bins (" + p->source +
-                                        " vs " + packs.front()->source + ")");
+                                        " vs " + first->source + ")");
         }
     }
 }
@@ -341,11 +349,24 @@ double curve_distance(const MetricRule& rule, const PackSummary& a, const PackSu
     return distance_between(rule, a, curve_values(rule, a), curve_values(rule, b));
 }
 
+/// Whether every pack of `packs` holds `rule`'s metric (precomputed packs may not).
+static bool all_measured(const MetricRule& rule, const std::vector<const PackSummary*>& packs) {
+    return std::all_of(packs.begin(), packs.end(), [&](const PackSummary* p) {
+        return rule.kind == MetricKind::Scalar ? !std::isnan(p->scalar(rule.name))
+                                               : p->has_curves();
+    });
+}
+
 MetricRow judge(const MetricRule& rule, const std::vector<const PackSummary*>& candidate,
                 const std::vector<const PackSummary*>& reference, double model_spread) {
-    MetricRow row = rule.kind == MetricKind::Scalar
-                        ? judge_scalar(rule, candidate, reference, model_spread)
-                        : judge_curve(rule, candidate, reference, model_spread);
+    MetricRow row;
+    if (!all_measured(rule, candidate) || !all_measured(rule, reference)) {
+        row.tolerance_rule = "not measured";  // no ratio: inconclusive
+    } else {
+        row = rule.kind == MetricKind::Scalar
+                  ? judge_scalar(rule, candidate, reference, model_spread)
+                  : judge_curve(rule, candidate, reference, model_spread);
+    }
     row.name = rule.name;
     row.label = rule.label;
     row.unit = rule.unit;

@@ -56,8 +56,21 @@ void phi_profile_of(const std::vector<const PackSummary*>& packs, GroupCurves& c
 
 }  // namespace
 
-GroupCurves curves_of(const std::vector<const PackSummary*>& packs) {
+GroupCurves curves_of(const std::vector<const PackSummary*>& all) {
     GroupCurves c;
+    // Packs known by their scalars only (precomputed.hpp) add no curves.
+    std::vector<const PackSummary*> packs;
+    std::copy_if(all.begin(), all.end(), std::back_inserter(packs),
+                 [](const PackSummary* p) { return p->has_curves(); });
+    if (packs.empty()) {
+        std::vector<std::vector<double>> z;
+        for (const auto* p : all) {
+            z.push_back(p->z_mean);
+        }
+        c.z_mean = mean_curve(z);
+        c.p_z.assign(all.front()->p_z.size(), {});
+        return c;
+    }
     std::vector<std::vector<double>> gr;
     std::vector<std::vector<double>> z;
     for (const auto* p : packs) {

@@ -26,7 +26,8 @@ double domain_top(double start_top, double diameter);
 /// top, or the highest sphere of an arrangement), which sets the box and the fall phase.
 std::string pour_script(const PourParameters& parameters, double start_top);
 
-/// The "processors" grid for `ranks` MPI ranks: split along x only ("K 1 1").
-std::string processor_grid(int ranks);
+/// The "processors" grid "PX PY PZ" of a pour: its `processors` when given, else chosen
+/// from the container's shape for its ranks (launcher.hpp).
+std::string processor_grid(const PourParameters& parameters);
 
 }  // namespace sgmp::reference

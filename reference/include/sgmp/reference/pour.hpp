@@ -3,8 +3,9 @@
 /// One LIGGGHTS pour, from parameters to a settled pack.
 ///
 /// Writes the input script (and, for an arrangement start, start.data) into a work
-/// directory, runs `liggghts -in in.pour` (or `mpirun -np K --allow-run-as-root liggghts`
-/// with a horizontal processor grid), follows its progress, and reads the final dump back
+/// directory, runs `liggghts -in in.pour` (or, on K ranks, `mpirun -np K liggghts`, `srun -n
+/// K liggghts` or any launcher, with a processor grid of the container's shape), follows
+/// its progress, and reads the final dump back
 /// into a Pack with provenance. Every failure throws PourError; nothing is printed.
 
 #include <chrono>
@@ -46,7 +47,8 @@ struct PourRequest {
     std::optional<StartPositions> start;   ///< empty: a loose random cloud
     std::filesystem::path work_directory;  ///< empty: a temporary, removed afterwards
     std::string liggghts = "liggghts";     ///< program name or path
-    std::string mpirun = "mpirun";
+    /// How ranks > 1 are started: mpirun, srun or a command line with {np} (launcher.hpp).
+    std::string launcher = "mpirun";
     std::optional<std::chrono::duration<double>> timeout;
     std::function<bool()> should_stop;  ///< e.g. set by SIGINT
 };

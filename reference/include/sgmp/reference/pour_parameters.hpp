@@ -37,6 +37,9 @@ struct PourParameters {
     double max_time = 30.0;           ///< simulated seconds allowed in all (the step cap)
     double cloud_fraction = 0.3;      ///< solid fraction of the starting cloud
     int ranks = 1;                    ///< MPI ranks (1: run liggghts directly)
+    /// LIGGGHTS processor grid "PX,PY,PZ" with PX·PY·PZ = ranks; empty: chosen from the
+    /// container's shape (launcher.hpp).
+    std::string processors;
     /// Name of an SGMP starting arrangement to start from instead of the cloud.
     std::optional<std::string> arrangement;
     /// Random horizontal offsets of an arrangement's spheres, as a fraction of d

@@ -12,7 +12,8 @@
 
 namespace sgmp::compare {
 
-/// Worker threads used by parallel loops; 0 (the default) means all hardware threads.
+/// Worker threads used by parallel loops; 0 (the default) means the CPUs the process may
+/// use (sgmp/pack/cpu_budget.hpp: affinity mask, OMP_NUM_THREADS, SLURM_CPUS_PER_TASK).
 void set_thread_count(unsigned count);
 unsigned thread_count();
 

@@ -96,6 +96,9 @@ struct PackSummary {
 
     /// The scalar metric `name` (throws std::logic_error for an unknown one).
     [[nodiscard]] double scalar(const std::string& name) const;
+    /// False for a pack known only by its scalar metrics (a batch summary row,
+    /// precomputed.hpp); a scalar it lacks is NaN. Metrics a pack lacks are not judged.
+    [[nodiscard]] bool has_curves() const { return !gr.empty(); }
 };
 PackSummary summarise(const std::string& source, const Pack& pack, const Measurement& m);
 

@@ -1,0 +1,211 @@
+#include "sgmp/compare/precomputed.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "sgmp/compare/metrics_output.hpp"
+#include "sgmp/pack/csv_fields.hpp"
+#include "sgmp/pack/input_error.hpp"
+
+namespace sgmp::compare {
+namespace {
+
+constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
+
+std::vector<std::string_view> lines_of(std::string_view text) {
+    std::vector<std::string_view> lines;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        lines.push_back(text.substr(start, end - start));
+        start = end + 1;
+    }
+    return lines;
+}
+
+/// Columns `wanted` of a CSV in the testbed layout (header, `#` lines, rows).
+std::vector<std::vector<double>> columns(std::string_view text, const std::string& source,
+                                         const std::vector<std::string>& wanted) {
+    const auto lines = lines_of(text);
+    if (lines.empty()) {
+        throw InputError(source, 0, "is empty");
+    }
+    const auto header = split_csv_line(lines.front());
+    std::vector<std::size_t> at;
+    for (const auto& name : wanted) {
+        const auto found = std::find(header.begin(), header.end(), name);
+        if (found == header.end()) {
+            throw InputError(source, 1, "has no column '" + name + "'");
+        }
+        at.push_back(static_cast<std::size_t>(found - header.begin()));
+    }
+    std::vector<std::vector<double>> out(wanted.size());
+    for (std::size_t n = 1; n < lines.size(); ++n) {
+        if (lines[n].empty() || lines[n].front() == '#') {
+            continue;
+        }
+        const auto fields = split_csv_line(lines[n]);
+        for (std::size_t c = 0; c < at.size(); ++c) {
+            double value = 0.0;
+            const std::string& f = at[c] < fields.size() ? fields[at[c]] : std::string();
+            const auto r = std::from_chars(f.data(), f.data() + f.size(), value);
+            if (f.empty() || r.ec != std::errc() || r.ptr != f.data() + f.size()) {
+                throw InputError(source, n + 1, "'" + wanted[c] + "' is not a number");
+            }
+            out[c].push_back(value);
+        }
+    }
+    return out;
+}
+
+double number_at(const nlohmann::ordered_json& j, const std::string& key,
+                 const std::string& source) {
+    if (!j.contains(key) || !j[key].is_number()) {
+        throw InputError(source, 0, "has no number '" + key + "'");
+    }
+    return j[key].get<double>();
+}
+
+}  // namespace
+
+bool is_metrics_json(std::string_view path) {
+    constexpr std::string_view suffix = ".metrics.json";
+    return path.size() > suffix.size() && path.substr(path.size() - suffix.size()) == suffix;
+}
+
+std::string sibling_csv(const std::string& metrics_path, const std::string& kind) {
+    return metrics_path.substr(0, metrics_path.size() - std::string_view(".metrics.json").size()) +
+           "." + kind + ".csv";
+}
+
+PackSummary summary_from_measure(const std::string& source, const nlohmann::ordered_json& j,
+                                 std::string_view g_r_csv, std::string_view phi_y_csv,
+                                 const nlohmann::ordered_json& parameters) {
+    if (!j.is_object() || j.value("schema_version", 0) != kSchemaVersion) {
+        throw InputError(source, 0,
+                         "is not a metrics file of schema_version " +
+                             std::to_string(kSchemaVersion) + " (sgmp-compare measure)");
+    }
+    const nlohmann::ordered_json prov = j.value("provenance", nlohmann::ordered_json::object());
+    if (parameters != prov.value("parameters", nlohmann::ordered_json())) {
+        throw InputError(source, 0,
+                         "was measured with other parameters (" +
+                             prov.value("parameters", nlohmann::ordered_json()).dump() +
+                             ") than this run's (" + parameters.dump() + ")");
+    }
+    PackSummary s;
+    s.source = prov.value("input", source);
+    const nlohmann::ordered_json metadata =
+        prov.value("input_metadata", nlohmann::ordered_json::object());
+    for (const auto& [key, value] : metadata.items()) {
+        s.provenance.emplace_back(key, value.is_string() ? value.get<std::string>() : value.dump());
+    }
+    s.count = static_cast<std::size_t>(number_at(j, "count", source));
+    s.diameter = number_at(j, "diameter", source);
+    for (const auto& rule : metric_rules()) {
+        if (rule.kind == MetricKind::Scalar) {
+            s.scalars.push_back(j.contains(rule.name) ? number_at(j, rule.name, source) : 0.0);
+        }
+    }
+    const auto& names = coordination_tolerance_names();
+    for (const auto& name : names) {
+        s.z_mean.push_back(number_at(j, "z_mean_tol_" + name, source));
+        s.p_z.push_back(j.at("p_z").at(name).get<std::vector<double>>());
+    }
+    s.gr_bin_width = number_at(j.at("g_r_detail"), "bin_width_over_d", source);
+    const std::string g_r_source = sibling_csv(source, "g_r");
+    auto gr = columns(g_r_csv, g_r_source, {"r_over_d", "g"});
+    s.gr_r = std::move(gr[0]);
+    s.gr = std::move(gr[1]);
+    auto phi = columns(phi_y_csv, sibling_csv(source, "phi_y"), {"y_mid", "phi"});
+    s.phi_y_mid = std::move(phi[0]);
+    s.phi_y = std::move(phi[1]);
+    return s;
+}
+
+std::vector<std::pair<std::string, PackSummary>> summaries_from_batch(std::string_view text,
+                                                                      const std::string& source) {
+    const auto lines = lines_of(text);
+    std::vector<std::string> header;
+    std::vector<std::pair<std::string, PackSummary>> out;
+    const auto& names = coordination_tolerance_names();
+    for (std::size_t n = 0; n < lines.size(); ++n) {
+        if (lines[n].empty() || lines[n].front() == '#') {
+            continue;
+        }
+        const auto fields = split_csv_line(lines[n]);
+        if (header.empty()) {
+            header = fields;
+            if (std::find(header.begin(), header.end(), "split_ratio") == header.end() ||
+                header.front() != "job") {
+                throw InputError(source, n + 1,
+                                 "is not an sgmp batch summary (no job, "
+                                 "split_ratio columns)");
+            }
+            continue;
+        }
+        if (fields.size() != header.size()) {
+            throw InputError(source, n + 1, "has another number of fields than the header");
+        }
+        const auto field = [&](const std::string& name) -> const std::string& {
+            const auto at = std::find(header.begin(), header.end(), name);
+            if (at == header.end()) {
+                throw InputError(source, 1, "has no column '" + name + "'");
+            }
+            return fields[static_cast<std::size_t>(at - header.begin())];
+        };
+        const auto number = [&](const std::string& name) {
+            const std::string& f = field(name);
+            double value = 0.0;
+            const auto r = std::from_chars(f.data(), f.data() + f.size(), value);
+            if (f.empty() || r.ec != std::errc() || r.ptr != f.data() + f.size()) {
+                throw InputError(source, n + 1,
+                                 "'" + name + "' is '" + f +
+                                     "', not a number (was the batch run with --measure?)");
+            }
+            return value;
+        };
+        PackSummary s;
+        s.source = field("path");
+        if (s.source.empty()) {
+            throw InputError(source, n + 1, "names no pack (a batch run with --no-packs)");
+        }
+        for (std::size_t c = 1; c < header.size(); ++c) {
+            if (header[c] == "seconds") {
+                break;  // the parameters and the seed come first
+            }
+            s.provenance.emplace_back(header[c], fields[c]);
+        }
+        s.count = static_cast<std::size_t>(number("count"));
+        s.diameter = kUnknown;
+        for (const auto& rule : metric_rules()) {
+            if (rule.kind != MetricKind::Scalar) {
+                continue;
+            }
+            double v = kUnknown;
+            if (rule.name == "phi" || rule.name == "split_ratio" || rule.name == "overlaps" ||
+                rule.name == "wall_overlaps") {
+                v = number(rule.name);
+            } else if (rule.name == "overlap_max_over_d") {
+                v = number("overlap_max");
+            } else if (rule.name.rfind("z_mean_tol_", 0) == 0) {
+                v = number("z_" + rule.name.substr(11));
+            } else if (rule.name == "voronoi_phi_mean" && !field("voronoi_phi_mean").empty()) {
+                v = number("voronoi_phi_mean");
+            }
+            s.scalars.push_back(v);
+        }
+        for (const auto& name : names) {
+            s.z_mean.push_back(number("z_" + name));
+        }
+        s.p_z.assign(names.size(), {});
+        out.emplace_back(s.source, std::move(s));
+    }
+    if (header.empty()) {
+        throw InputError(source, 0, "holds no header row");
+    }
+    return out;
+}
+
+}  // namespace sgmp::compare

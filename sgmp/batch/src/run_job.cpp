@@ -1,0 +1,89 @@
+#include "sgmp/batch/run_job.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+#include "sgmp/compare/measure.hpp"
+#include "sgmp/engine/make_pack.hpp"
+
+namespace sgmp::batch {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+SummaryRow base_row(const Plan& plan, std::size_t job, const std::string& path) {
+    SummaryRow row;
+    row.job = job;
+    row.values = plan.values(job);
+    row.seed = plan.seed(job);
+    row.path = path;
+    return row;
+}
+
+void add_metrics(SummaryRow& row, const Pack& pack, const JobOptions& options) {
+    if (!options.measure) {
+        return;
+    }
+    const auto start = Clock::now();
+    row.metrics = measure_pack(pack, options.voronoi);
+    row.measure_seconds = since(start);
+}
+
+}  // namespace
+
+PackMetrics measure_pack(const Pack& pack, bool voronoi) {
+    compare::MeasureOptions options;
+    options.voronoi = voronoi;
+    options.gr_range = kSummaryGrRange;
+    const compare::Measurement m = compare::measure(pack, options);
+    PackMetrics metrics;
+    metrics.phi = m.phi;
+    metrics.z_mean = m.local.coordination.z_mean;
+    metrics.overlaps = m.overlaps.pairs.count;
+    metrics.overlap_max = m.overlaps.pairs.max_over_d;
+    metrics.wall_overlaps = m.overlaps.walls.count;
+    metrics.split_ratio = m.local.rdf.split_ratio;
+    if (m.voronoi) {
+        metrics.voronoi_phi = m.voronoi->mean;
+    }
+    return metrics;
+}
+
+JobResult run_job(const Plan& plan, std::size_t job, const JobOptions& options,
+                  const std::string& path) {
+    const engine::PackRequest request = to_request(plan.values(job), plan.seed(job));
+    JobResult result;
+    const auto start = Clock::now();
+    result.pack = engine::make_pack(request);
+    result.row = base_row(plan, job, path);
+    result.row.seconds = since(start);
+    add_metrics(result.row, result.pack, options);
+    return result;
+}
+
+SummaryRow reused_row(const Plan& plan, std::size_t job, const Pack& pack,
+                      const JobOptions& options, const std::string& path) {
+    const ParameterValues& values = plan.values(job);
+    const auto expect = [&](const std::string& key, const std::string& value) {
+        const auto found = pack.metadata.get(key);
+        if (!found || *found != value) {
+            throw std::invalid_argument(path + ": exists but holds another pack (" + key + " " +
+                                        (found ? *found : std::string("missing")) + ", the job " +
+                                        value + "); pass --force to remake it");
+        }
+    };
+    expect("generator", "sgmp");
+    expect("count", values[parameter_index("count")]);
+    expect("arrangement", values[parameter_index("arrangement")]);
+    expect("seed", std::to_string(plan.seed(job)));
+    SummaryRow row = base_row(plan, job, path);
+    add_metrics(row, pack, options);
+    return row;
+}
+
+}  // namespace sgmp::batch

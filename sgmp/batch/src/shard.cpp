@@ -1,0 +1,54 @@
+#include "sgmp/batch/shard.hpp"
+
+#include <charconv>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "sgmp/pack/input_error.hpp"
+
+namespace sgmp::batch {
+namespace {
+
+std::optional<std::size_t> whole(std::string_view text) {
+    std::size_t value = 0;
+    const auto* end = text.data() + text.size();
+    const auto result = std::from_chars(text.data(), end, value);
+    if (text.empty() || result.ec != std::errc() || result.ptr != end) {
+        return std::nullopt;
+    }
+    return value;
+}
+
+}  // namespace
+
+Shard parse_shard(std::string_view text) {
+    const std::size_t slash = text.find('/');
+    const auto index = whole(text.substr(0, slash));
+    const auto count =
+        slash == std::string_view::npos ? std::nullopt : whole(text.substr(slash + 1));
+    if (!index || !count || *count == 0) {
+        throw std::invalid_argument("--shard " + printable(text) +
+                                    ": must be I/N with whole numbers N >= 1 and 1 <= I <= N, "
+                                    "e.g. 3/40");
+    }
+    if (*index < 1 || *index > *count) {
+        throw std::invalid_argument("--shard " + printable(text) + ": I must lie in 1.." +
+                                    std::to_string(*count));
+    }
+    return {*index, *count};
+}
+
+std::vector<std::size_t> assigned_jobs(std::size_t job_count, Shard shard, std::size_t rank,
+                                       std::size_t ranks) {
+    std::vector<std::size_t> jobs;
+    std::size_t position = 0;  // within the shard
+    for (std::size_t j = shard.index - 1; j < job_count; j += shard.count, ++position) {
+        if (position % ranks == rank) {
+            jobs.push_back(j);
+        }
+    }
+    return jobs;
+}
+
+}  // namespace sgmp::batch

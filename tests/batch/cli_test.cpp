@@ -1,0 +1,307 @@
+// `sgmp batch` end to end: bad input, refusal to overwrite, resuming, in-process packs equal
+// to `sgmp pack`'s, MPI ranks and shards equal to the serial run.
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <boost/test/unit_test.hpp>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+
+#include "sgmp/batch/summary.hpp"
+
+namespace fs = std::filesystem;
+using namespace sgmp::batch;
+
+namespace {
+
+std::string slurp(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+struct Run {
+    int status = -1;
+    std::string out;
+    std::string err;
+};
+
+struct Scratch {
+    fs::path dir;
+    Scratch() {
+        dir = fs::temp_directory_path() /
+              ("sgmp-batch-test-" + std::to_string(::getpid()) + "-" +
+               boost::unit_test::framework::current_test_case().p_name.get());
+        fs::remove_all(dir);
+        fs::create_directories(dir / "io");
+    }
+    ~Scratch() { fs::remove_all(dir); }
+    [[nodiscard]] fs::path path(const std::string& name) const { return dir / name; }
+
+    /// Runs `prefix sgmp batch ARGS` in `cwd` (relative to the scratch directory).
+    Run batch(const std::string& args, const std::string& cwd = "io",
+              const std::string& prefix = "") const {
+        fs::create_directories(dir / cwd);
+        const std::string command =
+            "cd '" + (dir / cwd).string() + "' && " + prefix + " '" + SGMP_EXECUTABLE + "' batch " +
+            args + " >'" + path("stdout").string() + "' 2>'" + path("stderr").string() + "'";
+        const int raw = std::system(command.c_str());
+        return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(path("stdout")),
+                slurp(path("stderr"))};
+    }
+
+    /// Every file under `cwd`, relative paths, sorted.
+    [[nodiscard]] std::vector<std::string> files(const std::string& cwd = "io") const {
+        std::vector<std::string> names;
+        for (const auto& entry : fs::recursive_directory_iterator(dir / cwd)) {
+            if (entry.is_regular_file()) {
+                names.push_back(fs::relative(entry.path(), dir / cwd).string());
+            }
+        }
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+};
+
+/// The summary without its timing columns (seconds, measure_seconds), one string per row.
+std::vector<std::string> untimed(const fs::path& summary) {
+    const SummaryTable table = parse_summary(slurp(summary), summary.string());
+    const auto header = summary_header();
+    std::vector<std::string> rows;
+    for (const auto& row : table.rows) {
+        std::string text;
+        for (std::size_t i = 0; i < header.size(); ++i) {
+            if (header[i] != "seconds" && header[i] != "measure_seconds") {
+                text += row.fields[i] + ",";
+            }
+        }
+        rows.push_back(text);
+    }
+    return rows;
+}
+
+const std::string kSweep =
+    "--seeds 1-3 --count 60,120 --arrangement loose-random,small-dense --gap largest,random "
+    "--out-pattern 'packs/{arrangement}/n{count}-{gap}-s{seed}.xyz.gz' --progress-seconds 0";
+
+void expect_same_packs(const Scratch& s, const std::string& a, const std::string& b) {
+    const auto names = s.files(a);
+    BOOST_TEST(names == s.files(b));
+    for (const std::string& name : names) {
+        if (name.rfind("packs/", 0) == 0) {
+            BOOST_TEST(slurp(s.path(a) / name) == slurp(s.path(b) / name), name);
+        }
+    }
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(bad_input_gets_one_line_and_writes_nothing) {
+    Scratch s;
+    std::ofstream(s.path("io/file")) << "x";
+    const std::string base = "--count 50 --arrangement small-dense --out-pattern 'p/{seed}.xyz' ";
+    const struct {
+        std::string args;
+        int status;
+        std::string message;
+    } cases[] = {
+        {base + "--seeds 5-1", 2, "sgmp: --seeds 5-1: range 5-1 runs backwards"},
+        {base + "--seeds x", 2, "sgmp: --seeds x: must be seeds S or ranges A-B"},
+        {"--seeds 1 --count 50 --out-pattern p.xyz", 2,
+         "sgmp: --arrangement: the grid is empty; give at least one value"},
+        {base + "--seeds 1-4 --shard 5/4", 2, "sgmp: --shard 5/4: I must lie in 1..4"},
+        {base + "--seeds 1-4 --shard 0/4", 2, "sgmp: --shard 0/4: I must lie in 1..4"},
+        {base + "--seeds 1 --count 0", 2, "sgmp: --count 0: must be between 1 and 10000000"},
+        {base + "--seeds 1 --summary file/summary.csv", 1,
+         "sgmp: --summary file/summary.csv: cannot create its directory file"},
+        {"--seeds 1 --count 50 --arrangement small-dense --out-pattern 'file/p/{seed}.xyz'", 1,
+         "sgmp: file/p/1.xyz: cannot be written (file is not a directory)"},
+        {"--seeds 1-2 --count 50 --arrangement small-dense --out-pattern p.xyz", 2,
+         "sgmp: --out-pattern p.xyz: must hold {seed}"},
+        {base + "--seeds 1", 2, "sgmp: --seeds: needed"},
+    };
+    for (const auto& c : cases) {
+        const std::string args = c.args == base + "--seeds 1"
+                                     ? "--count 50 --arrangement small-dense --out-pattern p.xyz"
+                                     : c.args;
+        const Run r = s.batch(args);
+        BOOST_TEST(r.status == c.status, args);
+        BOOST_TEST(r.err.rfind(c.message, 0) == 0u, args + " -> " + r.err);
+        BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1, r.err);
+        BOOST_TEST(s.files() == std::vector<std::string>{"file"}, args);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(batch_packs_equal_sgmp_pack_and_reruns_are_refused) {
+    Scratch s;
+    const std::string args =
+        "--seeds 4,2 --count 80 --arrangement large-dense --relax none,frictionless "
+        "--out-pattern 'p/{relax}-{seed}.xyz' --progress-seconds 0";
+    BOOST_REQUIRE(s.batch(args).status == 0);
+    const std::string pack = std::string("cd '") + s.path("io").string() + "' && '" +
+                             SGMP_EXECUTABLE +
+                             "' pack --count 80 --arrangement large-dense --relax frictionless "
+                             "--seed 2 --out single.xyz >/dev/null";
+    BOOST_REQUIRE(std::system(pack.c_str()) == 0);
+    BOOST_TEST(slurp(s.path("io/single.xyz")) == slurp(s.path("io/p/frictionless-2.xyz")));
+    // Row order: relax none before frictionless, seeds as listed.
+    const auto rows = parse_summary(slurp(s.path("io/summary.csv")), "summary").rows;
+    BOOST_REQUIRE(rows.size() == 4u);
+    BOOST_TEST(rows[1].fields.back() == "p/none-2.xyz");
+    BOOST_TEST(rows[2].fields.back() == "p/frictionless-4.xyz");
+    // A re-run: exit 1 naming the first existing file; nothing changes.
+    const auto before = slurp(s.path("io/summary.csv"));
+    const Run again = s.batch(args);
+    BOOST_TEST(again.status == 1);
+    BOOST_TEST(again.err ==
+               "sgmp: summary.csv: exists; pass --skip-existing to keep what is "
+               "there or --force to remake it\n");
+    fs::rename(s.path("io/summary.csv"), s.path("old.csv"));
+    const Run packs_exist = s.batch(args);
+    BOOST_TEST(packs_exist.status == 1);
+    BOOST_TEST(packs_exist.err.rfind("sgmp: p/none-4.xyz: exists;", 0) == 0u);
+    BOOST_TEST(!fs::exists(s.path("io/summary.csv")));
+    BOOST_TEST(s.batch(args + " --force").status == 0);
+    BOOST_TEST(slurp(s.path("io/single.xyz")) == slurp(s.path("io/p/frictionless-2.xyz")));
+    BOOST_TEST(untimed(s.path("io/summary.csv")) == untimed(s.path("old.csv")));
+    (void)before;
+}
+
+BOOST_AUTO_TEST_CASE(config_file_lists_equal_the_command_line) {
+    Scratch s;
+    std::ofstream(s.path("io/sweep.toml"))
+        << "seeds = \"1-2\"\ncount = [60, 90]\narrangement = \"small-dense\"\n"
+           "out-pattern = \"packs/n{count}-s{seed}.xyz\"\nprogress-seconds = 0\n";
+    BOOST_REQUIRE(s.batch("--config sweep.toml --no-packs --summary c.csv").status == 0);
+    BOOST_REQUIRE(s.batch("--seeds 1-2 --count 60 --count 90 --arrangement small-dense "
+                          "--no-packs --summary l.csv --progress-seconds 0")
+                      .status == 0);
+    BOOST_TEST(untimed(s.path("io/c.csv")) == untimed(s.path("io/l.csv")));
+    BOOST_TEST(untimed(s.path("io/c.csv")).size() == 4u);
+    BOOST_TEST(s.files() == (std::vector<std::string>{"c.csv", "l.csv", "sweep.toml"}));
+}
+
+BOOST_AUTO_TEST_CASE(measured_rows_and_progress_lines) {
+    Scratch s;
+    const Run r = s.batch(
+        "--seeds 1-2 --count 150 --arrangement loose-random --no-packs --measure "
+        "--progress-seconds 0.01");
+    BOOST_REQUIRE(r.status == 0);
+    // stderr is a file here, not a terminal: progress lines still come.
+    BOOST_TEST(r.err.find("sgmp batch: ") != std::string::npos, r.err);
+    BOOST_TEST(r.err.find(" / 2 packs") != std::string::npos);
+    const SummaryTable t = parse_summary(slurp(s.path("io/summary.csv")), "summary");
+    BOOST_REQUIRE(t.rows.size() == 2u);
+    const auto header = summary_header();
+    const auto at = [&](std::size_t row, const std::string& name) {
+        return t.rows[row].fields[std::find(header.begin(), header.end(), name) - header.begin()];
+    };
+    for (std::size_t i = 0; i < 2; ++i) {
+        // Loose-random packs of equal spheres: phi of the control volume well inside (0.5,
+        // 0.65) (thesis Table 6.1: about 0.58), Z at the widest tolerance at least that
+        // at contact, no overlaps (the protocol never overlaps by more than 1e-9 d).
+        BOOST_TEST(std::stod(at(i, "phi")) > 0.5);
+        BOOST_TEST(std::stod(at(i, "phi")) < 0.65);
+        BOOST_TEST(std::stod(at(i, "z_5e-2")) >= std::stod(at(i, "z_0")));
+        BOOST_TEST(at(i, "overlaps") == "0");
+        BOOST_TEST(!at(i, "split_ratio").empty());
+        BOOST_TEST(at(i, "voronoi_phi_mean").empty());
+        BOOST_TEST(at(i, "path").empty());
+    }
+}
+
+BOOST_AUTO_TEST_CASE(resumed_batches_end_with_the_uninterrupted_table) {
+    Scratch s;
+    BOOST_REQUIRE(s.batch(kSweep + " --measure", "whole").status == 0);
+    // A batch stopped half way (its first shard done), then resumed.
+    BOOST_REQUIRE(
+        s.batch(kSweep + " --measure --shard 1/2 --summary partial.csv", "resumed").status == 0);
+    fs::remove(s.path("resumed/partial.csv"));
+    const Run resumed = s.batch(kSweep + " --measure --skip-existing", "resumed");
+    BOOST_REQUIRE(resumed.status == 0);
+    BOOST_TEST(resumed.out.find("(12 reused)") != std::string::npos, resumed.out);
+    BOOST_TEST(untimed(s.path("resumed/summary.csv")) == untimed(s.path("whole/summary.csv")));
+    expect_same_packs(s, "whole", "resumed");
+
+    // A real interruption: SIGTERM during the batch, exit 130, no temporary left.
+    const std::string big =
+        "--seeds 1-400 --count 400 --arrangement loose-random "
+        "--out-pattern 'packs/s{seed}.xyz' --threads 1 --progress-seconds 0";
+    fs::create_directories(s.path("stopped"));
+    const pid_t child = ::fork();
+    if (child == 0) {
+        ::chdir(s.path("stopped").c_str());
+        ::execl(
+            "/bin/sh", "sh", "-c",
+            ("exec '" + std::string(SGMP_EXECUTABLE) + "' batch " + big + " 2>/dev/null").c_str(),
+            static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    for (int i = 0; i < 400 && !fs::exists(s.path("stopped/packs/s3.xyz")); ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(25));
+    }
+    ::kill(child, SIGTERM);
+    int raw = 0;
+    ::waitpid(child, &raw, 0);
+    BOOST_TEST((WIFEXITED(raw) ? WEXITSTATUS(raw) : -1) == 130);
+    for (const std::string& name : s.files("stopped")) {
+        BOOST_TEST(name.find(".tmp-") == std::string::npos, name);
+    }
+    BOOST_TEST(!fs::exists(s.path("stopped/summary.csv")));
+    const std::size_t made = s.files("stopped").size();
+    BOOST_TEST(made < 400u);
+    BOOST_REQUIRE(s.batch(big + " --skip-existing", "stopped").status == 0);
+    // The uninterrupted table of the first 40 seeds equals the resumed one's first rows.
+    BOOST_REQUIRE(s.batch("--seeds 1-400 --count 400 --arrangement loose-random --no-packs "
+                          "--progress-seconds 0",
+                          "straight")
+                      .status == 0);
+    auto resumed_rows = untimed(s.path("stopped/summary.csv"));
+    auto straight_rows = untimed(s.path("straight/summary.csv"));
+    BOOST_REQUIRE(resumed_rows.size() == straight_rows.size());
+    for (std::size_t i = 0; i < resumed_rows.size(); ++i) {
+        // The paths differ (--no-packs): compare everything before them.
+        BOOST_TEST(
+            resumed_rows[i].substr(0, resumed_rows[i].rfind(',', resumed_rows[i].size() - 2)) ==
+            straight_rows[i].substr(0, straight_rows[i].rfind(',', straight_rows[i].size() - 2)));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(shards_merged_equal_the_serial_run) {
+    Scratch s;
+    BOOST_REQUIRE(s.batch(kSweep, "serial").status == 0);
+    for (int i = 1; i <= 3; ++i) {
+        BOOST_REQUIRE(s.batch(kSweep + " --shard " + std::to_string(i) + "/3 --summary shard-" +
+                                  std::to_string(i) + ".csv",
+                              "sharded")
+                          .status == 0);
+    }
+    const Run merge =
+        s.batch("--merge shard-3.csv shard-1.csv shard-2.csv --summary summary.csv", "sharded");
+    BOOST_REQUIRE(merge.status == 0);
+    BOOST_TEST(untimed(s.path("sharded/summary.csv")) == untimed(s.path("serial/summary.csv")));
+    for (int i = 1; i <= 3; ++i) {
+        fs::remove(s.path("sharded/shard-" + std::to_string(i) + ".csv"));
+    }
+    expect_same_packs(s, "serial", "sharded");
+    BOOST_TEST(s.batch("--merge shard-1.csv --summary summary.csv", "sharded").status == 1);
+}
+
+BOOST_AUTO_TEST_CASE(mpi_ranks_equal_the_serial_run) {
+    Scratch s;
+    BOOST_REQUIRE(s.batch(kSweep + " --measure", "serial").status == 0);
+    const std::string mpirun = std::string("'") + MPIEXEC + "'" +
+                               (::geteuid() == 0 ? " --allow-run-as-root" : "") +
+                               " --oversubscribe -np 2";
+    const Run r = s.batch(kSweep + " --measure", "mpi", mpirun);
+    BOOST_REQUIRE_MESSAGE(r.status == 0, r.err);
+    BOOST_TEST(r.out.find("on 2 rank(s)") != std::string::npos, r.out);
+    expect_same_packs(s, "serial", "mpi");
+    BOOST_TEST(untimed(s.path("mpi/summary.csv")) == untimed(s.path("serial/summary.csv")));
+}

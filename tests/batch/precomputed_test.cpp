@@ -1,0 +1,141 @@
+// Measurement split from comparison: `sgmp-compare report` (and crossval, by the same
+// path) from measure's *.metrics.json gives the report of the packs themselves; from batch
+// summary rows (--metrics) it gives the same scalar verdicts and leaves what the rows lack
+// inconclusive.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "sgmp/compare/precomputed.hpp"
+#include "sgmp/pack/input_error.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string slurp(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+/// The lines of a report file without those recording the command line.
+std::string without_command(const fs::path& path) {
+    std::istringstream in(slurp(path));
+    std::string kept;
+    for (std::string line; std::getline(in, line);) {
+        if (line.find("command") == std::string::npos &&
+            line.find("sgmp-compare report --") == std::string::npos) {
+            kept += line + "\n";
+        }
+    }
+    return kept;
+}
+
+/// report.csv rows by metric name (fields joined as written).
+std::map<std::string, std::vector<std::string>> rows_by_metric(const fs::path& path) {
+    std::istringstream in(slurp(path));
+    std::map<std::string, std::vector<std::string>> rows;
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#' || line.rfind("count,", 0) == 0) {
+            continue;
+        }
+        std::vector<std::string> fields;
+        std::stringstream s(line);
+        for (std::string f; std::getline(s, f, ',');) {
+            fields.push_back(f);
+        }
+        rows[fields.at(3)] = fields;
+    }
+    return rows;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(reports_from_precomputed_metrics) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("sgmp-precomputed-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string in = "cd '" + dir.string() + "' && ";
+    const std::string sgmp = std::string("'") + SGMP_EXECUTABLE + "'";
+    const std::string compare = std::string("'") + SGMP_COMPARE_EXECUTABLE + "'";
+    const auto run = [&](const std::string& command) {
+        return std::system((in + command + " >/dev/null 2>>errors").c_str());
+    };
+    BOOST_REQUIRE(run(sgmp +
+                      " batch --seeds 1-3 --count 250 --arrangement loose-random,small-dense "
+                      "--out-pattern 'packs/{arrangement}-{seed}.xyz' --measure "
+                      "--progress-seconds 0") == 0);
+    BOOST_REQUIRE(run(compare + " measure packs/*.xyz --out m --no-voronoi") == 0);
+    const std::string a =
+        "packs/loose-random-1.xyz packs/loose-random-2.xyz packs/loose-random-3.xyz";
+    const std::string b = "packs/small-dense-1.xyz packs/small-dense-2.xyz packs/small-dense-3.xyz";
+    const std::string b_metrics =
+        "m/small-dense-1.metrics.json m/small-dense-2.metrics.json "
+        "m/small-dense-3.metrics.json";
+    BOOST_REQUIRE(run(compare + " report --no-voronoi --out packs-report --a " + a + " --b " + b) ==
+                  0);
+    BOOST_REQUIRE(run(compare +
+                      " report --no-voronoi --out json-report --a m/loose-random-1.metrics.json "
+                      "m/loose-random-2.metrics.json m/loose-random-3.metrics.json --b " +
+                      b_metrics) == 0);
+    // From measure's outputs: every file as from the packs, but for the command line.
+    for (const char* file : {"report.csv", "report.json", "report.md"}) {
+        BOOST_TEST(without_command(dir / "packs-report" / file) ==
+                       without_command(dir / "json-report" / file),
+                   file);
+    }
+    for (const auto& entry : fs::directory_iterator(dir / "packs-report" / "plots")) {
+        BOOST_TEST(
+            slurp(entry.path()) == slurp(dir / "json-report" / "plots" / entry.path().filename()),
+            entry.path().filename());
+    }
+    // From batch rows: the scalars they hold give the same means; the rest is not judged.
+    BOOST_REQUIRE(run(compare +
+                      " report --no-voronoi --out rows-report --metrics summary.csv --a " + a +
+                      " --b " + b_metrics) == 0);
+    const auto packs = rows_by_metric(dir / "packs-report/report.csv");
+    const auto rows = rows_by_metric(dir / "rows-report/report.csv");
+    for (const char* metric : {"phi", "z_mean_tol_0", "z_mean_tol_1e-2", "overlaps"}) {
+        BOOST_TEST(rows.at(metric) == packs.at(metric), metric);
+    }
+    // The batch's g(r) reaches 2.1 d, measure's 5 d: the density cancels in the split ratio,
+    // which agrees to rounding (relative 1e-12 is far above the 1e-15 seen).
+    BOOST_TEST(std::stod(rows.at("split_ratio").at(7)) == std::stod(packs.at("split_ratio").at(7)),
+               boost::test_tools::tolerance(1e-12));
+    for (const char* metric : {"q6_global", "g_r", "p_z_tol_1e-2", "voronoi_phi_mean"}) {
+        BOOST_TEST(rows.at(metric).back() == "inconclusive", metric);
+        BOOST_TEST(rows.at(metric).at(16) == "not measured", metric);
+    }
+    BOOST_TEST(slurp(dir / "errors").empty(), slurp(dir / "errors"));
+    fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_CASE(batch_rows_without_metrics_or_packs_are_refused) {
+    const std::string header =
+        "job,count,seed,seconds,measure_seconds,phi,z_0,z_1e-6,z_1e-3,z_1e-2,z_2e-2,z_5e-2,"
+        "overlaps,overlap_max,wall_overlaps,split_ratio,voronoi_phi_mean,path\n";
+    const auto rows = sgmp::compare::summaries_from_batch(
+        header + "0,10,1,0.1,0.1,0.5,1,2,3,4,5,6,0,0,0,0.7,,p.xyz\n", "s.csv");
+    BOOST_REQUIRE(rows.size() == 1u);
+    BOOST_TEST(rows[0].first == "p.xyz");
+    BOOST_TEST(rows[0].second.scalar("z_mean_tol_1e-2") == 4.0);
+    BOOST_TEST(std::isnan(rows[0].second.scalar("q6_global")));
+    BOOST_TEST(!rows[0].second.has_curves());
+    BOOST_CHECK_THROW(
+        sgmp::compare::summaries_from_batch(header + "0,10,1,0.1,,,,,,,,,,,,,,p.xyz\n", "s.csv"),
+        sgmp::InputError);  // made without --measure
+    BOOST_CHECK_THROW(sgmp::compare::summaries_from_batch(
+                          header + "0,10,1,0.1,0.1,0.5,1,2,3,4,5,6,0,0,0,0.7,,\n", "s.csv"),
+                      sgmp::InputError);  // made with --no-packs
+    BOOST_CHECK_THROW(sgmp::compare::summaries_from_batch("a,b\n1,2\n", "s.csv"), sgmp::InputError);
+}

@@ -154,30 +154,36 @@ int run_pour(PourOptions& o, const PourObserver& observer, const std::function<b
         }
         write_pack_file(o.out, result.pack, o.force);
         if (!o.quiet) {
-            char summary[256];
-            std::snprintf(summary, sizeof summary,
-                          "poured %zu spheres in %.1f s, %lld steps; settling measure %.3g; max "
-                          "overlap %.3g d; phi(control volume) %.4f; wrote ",
-                          p.count, result.wall_seconds, static_cast<long long>(result.steps),
-                          result.ke_ratio, result.max_overlap_over_d, result.phi_control_volume);
-            std::cerr << summary << o.out << '\n';
+            print_run_summary("poured", result, p.count, o.out);
         }
         return 0;
-    } catch (const PourError& e) {
-        finish();
-        std::cerr << "sgmp-reference: " << printable(e.what()) << '\n';
-        if (!e.log_tail().empty()) {
-            std::cerr << "--- last lines of LIGGGHTS output ---\n";
-            for (const auto& line : e.log_tail()) {
-                std::cerr << "  " << printable(line) << '\n';
-            }
-        }
-        return interrupted() ? kInterruptedStatus : 1;
     } catch (const std::exception& e) {
         finish();
-        std::cerr << "sgmp-reference: " << printable(e.what()) << '\n';
-        return interrupted() ? kInterruptedStatus : 1;
+        return report_run_failure(e, interrupted());
     }
+}
+
+void print_run_summary(const char* verb, const PourResult& result, std::size_t count,
+                       const std::string& out) {
+    char summary[256];
+    std::snprintf(summary, sizeof summary,
+                  "%s %zu spheres in %.1f s, %lld steps; settling measure %.3g; max overlap %.3g "
+                  "d; phi(control volume) %.4f; wrote ",
+                  verb, count, result.wall_seconds, static_cast<long long>(result.steps),
+                  result.ke_ratio, result.max_overlap_over_d, result.phi_control_volume);
+    std::cerr << summary << printable(out) << '\n';
+}
+
+int report_run_failure(const std::exception& error, bool interrupted) {
+    std::cerr << "sgmp-reference: " << printable(error.what()) << '\n';
+    if (const auto* pour_error = dynamic_cast<const PourError*>(&error);
+        pour_error != nullptr && !pour_error->log_tail().empty()) {
+        std::cerr << "--- last lines of LIGGGHTS output ---\n";
+        for (const auto& line : pour_error->log_tail()) {
+            std::cerr << "  " << printable(line) << '\n';
+        }
+    }
+    return interrupted ? kInterruptedStatus : 1;
 }
 
 }  // namespace sgmp::reference

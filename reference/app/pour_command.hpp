@@ -31,4 +31,13 @@ CLI::App* add_pour_command(CLI::App& app, PourOptions& options);
 int run_pour(PourOptions& options, const PourObserver& observer,
              const std::function<bool()>& interrupted, const std::function<void()>& finish);
 
+/// The one-line summary of a finished run on stderr: "VERB N spheres in … s, … steps;
+/// settling measure …; max overlap … d; phi(control volume) …; wrote OUT".
+void print_run_summary(const char* verb, const PourResult& result, std::size_t count,
+                       const std::string& out);
+
+/// Reports a failed pour or settle on stderr — its one-line message, then the tail of the
+/// LIGGGHTS log when there is one — and returns the exit status (130 when interrupted).
+int report_run_failure(const std::exception& error, bool interrupted);
+
 }  // namespace sgmp::reference

@@ -1,5 +1,7 @@
 #include "settle_command.hpp"
+
 #include "launcher_options.hpp"
+#include "pour_command.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -110,26 +112,12 @@ int run_settle(SettleOptions& o, const PourObserver& observer,
         m.set("start_generator", input.metadata.get("generator").value_or("unknown"));
         write_pack_file(o.out, result.pack, o.force);
         if (!o.quiet) {
-            char summary[256];
-            std::snprintf(summary, sizeof summary,
-                          "settled %zu spheres in %.1f s, %lld steps; settling measure %.3g; "
-                          "max overlap %.3g d; phi(control volume) %.4f; wrote ",
-                          p.count, result.wall_seconds, static_cast<long long>(result.steps),
-                          result.ke_ratio, result.max_overlap_over_d, result.phi_control_volume);
-            std::cerr << summary << o.out << '\n';
+            print_run_summary("settled", result, p.count, o.out);
         }
         return 0;
-    } catch (const PourError& e) {
-        finish();
-        std::cerr << "sgmp-reference: " << e.what() << '\n';
-        for (const auto& line : e.log_tail()) {
-            std::cerr << "  " << line << '\n';
-        }
-        return should_stop && should_stop() ? 130 : 1;
     } catch (const std::exception& e) {
         finish();
-        std::cerr << "sgmp-reference: " << e.what() << '\n';
-        return 1;
+        return report_run_failure(e, should_stop && should_stop());
     }
 }
 

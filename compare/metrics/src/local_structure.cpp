@@ -4,17 +4,21 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "sgmp/compare/ball_cut.hpp"
+#include "sgmp/compare/column_grid.hpp"
 #include "sgmp/compare/parallel.hpp"
 #include "sgmp/compare/spatial_order.hpp"
 
 namespace sgmp::compare {
 namespace {
 
-constexpr std::size_t kGroupSize = 32;      // origins per kd-tree query (radius 5·d)
-constexpr std::size_t kGroupsPerChunk = 8;  // groups per parallel work item
-constexpr std::size_t kMaxZ = 64;  // Z above this is recorded as kMaxZ (never seen in packs)
+// Origins per parallel work item. Fixed (never from the thread count), and with it the
+// order of every floating-point sum.
+constexpr std::size_t kOriginsPerChunk = 256;
+constexpr double kCellSideOverD = 0.3;  // of the column grids (0.3: 6 % less CPU than 0.5 or 0.7)
+constexpr std::size_t kMaxZ = 64;       // Z above this is recorded as kMaxZ (never seen in packs)
 
 struct Partial {
     std::vector<std::int64_t> z_sum;
@@ -101,133 +105,218 @@ struct SplitWindows {
     }
 };
 
-}  // namespace
+/// Everything one measurement derives from its options, fixed before the pass.
+struct Setup {
+    std::size_t tolerances;
+    std::size_t bins;
+    double width;
+    double per_width;
+    double outer;  // of the last g(r) bin
+    SplitWindows split;
+    std::size_t split_first_bin;  // bins that can hold a split-window distance: a cheap
+    std::size_t split_bins;       // test before the exact one
+    std::vector<double> thresholds;
+    double max_threshold;
+    double q6_cutoff;
+    double reach;          // of the pass: g(r), Z and Q6 all lie within it
+    double reach_squared;  //
+    double close_squared;  // a pair farther than this is neither a contact nor a bond
 
-LocalStructure measure_local_structure(const std::vector<Particle>& particles,
-                                       const NeighbourIndex& index,
-                                       const std::vector<Index>& origins,
-                                       const LocalStructureOptions& options) {
-    const std::size_t tolerances = options.tolerances.size();
-    const double d = options.mean_diameter;
-    const double width = options.bin_width_over_d * d;
-    const double outer = bin_outer(options.bins - 1, width);
-    const SplitWindows split(d, outer);
-    // Bins that can hold a distance of the split windows (a cheap test before the exact one).
-    const std::size_t split_first_bin = bin_of(split.lo[0], 1.0 / width) - 1;
-    const std::size_t split_bins = bin_of(split.hi[1], 1.0 / width) + 1 - split_first_bin;
-    double max_radius = 0.0;
-    for (const Particle& p : particles) {
-        max_radius = std::max(max_radius, p.radius);
+    Setup(const std::vector<Particle>& particles, const LocalStructureOptions& options)
+        : tolerances(options.tolerances.size()),
+          bins(options.bins),
+          width(options.bin_width_over_d * options.mean_diameter),
+          per_width(1.0 / width),
+          outer(bin_outer(options.bins - 1, width)),
+          split(options.mean_diameter, outer),
+          split_first_bin(bin_of(split.lo[0], 1.0 / width) - 1),
+          split_bins(bin_of(split.hi[1], 1.0 / width) + 1 - split_first_bin),
+          q6_cutoff(options.q6_cutoff) {
+        const double d = options.mean_diameter;
+        double max_radius = 0.0;
+        for (const Particle& p : particles) {
+            max_radius = std::max(max_radius, p.radius);
+        }
+        const double max_tolerance = tolerances == 0 ? 0.0
+                                                     : *std::max_element(options.tolerances.begin(),
+                                                                         options.tolerances.end());
+        for (const double t : options.tolerances) {
+            thresholds.push_back(t * d);
+        }
+        max_threshold = max_tolerance * d;
+        reach = std::max(
+            {outer, 2.0 * max_radius + max_tolerance * d, options.q6_cutoff * 2.0 * max_radius});
+        reach_squared = reach * reach;
+        // Widened far beyond rounding: the exact tests below decide.
+        const double close =
+            std::max(2.0 * max_radius + max_threshold, q6_cutoff * 2.0 * max_radius) * (1.0 + 1e-9);
+        close_squared = close * close;
     }
-    const double max_tolerance =
-        tolerances == 0 ? 0.0
-                        : *std::max_element(options.tolerances.begin(), options.tolerances.end());
-    std::vector<double> thresholds(tolerances);
-    for (std::size_t t = 0; t < tolerances; ++t) {
-        thresholds[t] = options.tolerances[t] * d;
-    }
-    const double max_threshold = max_tolerance * d;
+};
 
-    const double reach = std::max(
-        {outer, 2.0 * max_radius + max_tolerance * d, options.q6_cutoff * 2.0 * max_radius});
-    const double reach_squared = reach * reach;
-    const double per_width = 1.0 / width;
-    const std::vector<Index> ordered = spatial_order(particles, origins, d);
-    const std::vector<QueryGroup> groups = query_groups(particles, ordered, kGroupSize);
+/// A neighbour close enough to be a contact or a bond, with its kd-tree report rank.
+struct Close {
+    Index rank;
+    Index index;  // into the particles
+    double distance;
+};
 
-    const Partial total = chunked_reduce(
-        groups.size(), kGroupsPerChunk, Partial(tolerances, options.bins),
-        [&](Partial& part, std::size_t begin, std::size_t end) {
-            Candidates candidates;
-            std::vector<double> squared;
-            std::vector<Index> near;
-            std::vector<int> z(tolerances);
-            for (std::size_t g = begin; g < end; ++g) {
-                candidates.gather(index, particles, groups[g], reach);
-                const std::size_t n = candidates.index.size();
-                squared.resize(n);
-                near.resize(n);
-                for (std::size_t o = groups[g].begin; o < groups[g].end; ++o) {
-                    const Index i = ordered[o];
-                    const Particle& a = particles[i];
-                    const double ax = a.center.x();
-                    const double ay = a.center.y();
-                    const double az = a.center.z();
-                    // Distances to every candidate, then a branch-free list of those
-                    // within reach (about a third: a branch here would mispredict often).
-                    std::size_t m = 0;
-                    for (std::size_t k = 0; k < n; ++k) {
-                        const double dx = candidates.x[k] - ax;
-                        const double dy = candidates.y[k] - ay;
-                        const double dz = candidates.z[k] - az;
-                        squared[k] = dx * dx + dy * dy + dz * dz;
-                    }
-                    for (std::size_t k = 0; k < n; ++k) {
-                        near[m] = static_cast<Index>(k);
-                        const bool within = squared[k] <= reach_squared;
-                        const bool other = candidates.index[k] != i;
-                        m += static_cast<std::size_t>(within & other);
-                    }
-                    std::fill(z.begin(), z.end(), 0);
-                    BondSums bonds;
-                    for (std::size_t q = 0; q < m; ++q) {
-                        const std::size_t k = near[q];
-                        const double distance = std::sqrt(squared[k]);
-                        const auto bin = bin_of(distance, per_width);
-                        if (bin < options.bins) {
-                            ++part.pairs[bin];
-                        }
-                        if (bin - split_first_bin <= split_bins) {  // unsigned: one compare
-                            split.count(distance, part.split_pairs);
-                        }
-                        const double rb = candidates.r[k];
-                        const double gap = distance - a.radius - rb;
-                        if (gap <= max_threshold) {
-                            for (std::size_t t = 0; t < tolerances; ++t) {
-                                z[t] += gap <= thresholds[t] ? 1 : 0;
-                            }
-                        }
-                        if (distance <= options.q6_cutoff * (a.radius + rb) && distance > 0.0) {
-                            const Vec3 bond(candidates.x[k] - ax, candidates.y[k] - ay,
-                                            candidates.z[k] - az);
-                            bonds.add(bond / distance);
-                        }
-                    }
-                    const auto walls = wall_gaps(a, options.container);
-                    for (std::size_t t = 0; t < tolerances; ++t) {
-                        part.z_sum[t] += z[t];
-                        ++part.z_histogram[t][std::min<std::size_t>(z[t], kMaxZ)];
-                        for (const double gap : walls) {
-                            part.wall_contacts[t] += gap <= thresholds[t] ? 1 : 0;
-                        }
-                    }
-                    if (shells_inside(a.center, outer, options.space)) {
-                        ++part.full_shell_origins;
-                    } else {
-                        ++part.corrected_origins;
-                        add_shell_volumes(a.center, width, options.bins, options.space,
-                                          part.shell_volume);
-                        if (split.inside_range) {
-                            split.add_volumes(a.center, options.space, part.split_volume);
-                        }
-                    }
-                    if (bonds.bonds > 0) {
-                        part.global.add(bonds);
-                        part.q6_local_sum += bonds.q6();
-                        ++part.origins_with_bonds;
-                    }
-                }
+/// Buffers of one work item, reused for each of its origins.
+struct Scratch {
+    std::vector<double> squared;  // of the candidates within reach
+    std::vector<double> distance;
+    std::vector<std::int32_t> bin;
+    std::vector<Close> close;
+    std::vector<int> z;
+};
+
+/// Fills scratch.squared with the squared distances from c of the grid's centres within
+/// reach (all, or only those after position `after`, see ColumnGrid::for_each_range), by
+/// branch-free compaction (about half the candidates pass: a branch would mispredict).
+std::size_t gather_near(const ColumnGrid& grid, const Vec3& c, const Setup& s, std::size_t after,
+                        Scratch& scratch) {
+    std::size_t m = 0;
+    const double ax = c.x();
+    const double ay = c.y();
+    const double az = c.z();
+    const double reach_squared = s.reach_squared;
+    const double* const xs = grid.x.data();
+    const double* const ys = grid.y.data();
+    const double* const zs = grid.z.data();
+    grid.for_each_range(
+        c, s.reach,
+        [&](std::size_t begin, std::size_t end) {
+            if (scratch.squared.size() < m + (end - begin)) {
+                scratch.squared.resize(2 * (m + end - begin));
             }
+            double* __restrict const squared = scratch.squared.data();
+            std::size_t count = m;  // a local: the compiler keeps it in a register
+            for (std::size_t k = begin; k < end; ++k) {
+                const double dx = xs[k] - ax;
+                const double dy = ys[k] - ay;
+                const double dz = zs[k] - az;
+                const double q = dx * dx + dy * dy + dz * dz;
+                squared[count] = q;
+                count += static_cast<std::size_t>(q <= reach_squared);
+            }
+            m = count;
         },
-        [](Partial& sum, const Partial& part) { sum.add(part); });
+        after);
+    return m;
+}
 
-    LocalStructure result;
-    const auto n = static_cast<std::int64_t>(origins.size());
-    Coordination& c = result.coordination;
+/// Adds `weight` × the g(r) and split-window counts of the m gathered pairs. Distances and
+/// bins first, in a loop the compiler vectorises (bin_of's arithmetic, truncated by a
+/// 32-bit conversion: the same value for bins below 2³¹), then the counts.
+void count_pairs(const Setup& s, std::size_t m, std::int64_t weight, Scratch& scratch,
+                 Partial& part) {
+    if (scratch.distance.size() < m) {
+        scratch.distance.resize(scratch.squared.size());
+        scratch.bin.resize(scratch.squared.size());
+    }
+    const double* __restrict const squared = scratch.squared.data();
+    double* __restrict const distance = scratch.distance.data();
+    std::int32_t* __restrict const bin = scratch.bin.data();
+    const double per_width = s.per_width;
+    for (std::size_t q = 0; q < m; ++q) {
+        distance[q] = std::sqrt(squared[q]);
+        bin[q] = static_cast<std::int32_t>(distance[q] * per_width + 0.5);
+    }
+    const auto bins = static_cast<std::uint32_t>(s.bins);
+    const auto split_first = static_cast<std::uint32_t>(s.split_first_bin);
+    const auto split_bins = static_cast<std::uint32_t>(s.split_bins);
+    std::int64_t* const pairs = part.pairs.data();
+    std::int64_t split_pairs[2] = {0, 0};
+    for (std::size_t q = 0; q < m; ++q) {
+        const auto b = static_cast<std::uint32_t>(bin[q]);
+        if (b < bins) {
+            pairs[b] += weight;
+        }
+        if (b - split_first <= split_bins) {  // unsigned: one compare
+            s.split.count(distance[q], split_pairs);
+        }
+    }
+    part.split_pairs[0] += weight * split_pairs[0];
+    part.split_pairs[1] += weight * split_pairs[1];
+}
+
+/// Appends to scratch.close the centres of `grid` other than particle i close enough to
+/// it to be a contact or a bond.
+void gather_close(const ColumnGrid& grid, const std::vector<Index>& rank, Index i, const Vec3& c,
+                  const Setup& s, Scratch& scratch) {
+    grid.for_each_range(c, std::sqrt(s.close_squared), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) {
+            const double dx = grid.x[k] - c.x();
+            const double dy = grid.y[k] - c.y();
+            const double dz = grid.z[k] - c.z();
+            const double q = dx * dx + dy * dy + dz * dz;
+            if (q <= s.close_squared && grid.index[k] != i) {
+                scratch.close.push_back({rank[grid.index[k]], grid.index[k], std::sqrt(q)});
+            }
+        }
+    });
+}
+
+/// Z at every tolerance and the Q6 bond sums of one origin, bonds summed in kd-tree report
+/// order (which fixes their rounding).
+BondSums contacts_and_bonds(const std::vector<Particle>& particles, const Particle& a,
+                            const Setup& s, Scratch& scratch) {
+    std::sort(scratch.close.begin(), scratch.close.end(),
+              [](const Close& u, const Close& v) { return u.rank < v.rank; });
+    std::fill(scratch.z.begin(), scratch.z.end(), 0);
+    BondSums bonds;
+    for (const Close& c : scratch.close) {
+        const Particle& b = particles[c.index];
+        const double rb = b.radius;
+        const double gap = c.distance - a.radius - rb;
+        if (gap <= s.max_threshold) {
+            for (std::size_t t = 0; t < s.tolerances; ++t) {
+                scratch.z[t] += gap <= s.thresholds[t] ? 1 : 0;
+            }
+        }
+        if (c.distance <= s.q6_cutoff * (a.radius + rb) && c.distance > 0.0) {
+            const Vec3 bond(b.center.x() - a.center.x(), b.center.y() - a.center.y(),
+                            b.center.z() - a.center.z());
+            bonds.add(bond / c.distance);
+        }
+    }
+    return bonds;
+}
+
+/// Adds one origin's Z, wall contacts, shell volumes and bonds to the work item's sums.
+void add_origin(const Particle& a, const BondSums& bonds, const Setup& s,
+                const LocalStructureOptions& options, const std::vector<int>& z, Partial& part) {
+    const auto walls = wall_gaps(a, options.container);
+    for (std::size_t t = 0; t < s.tolerances; ++t) {
+        part.z_sum[t] += z[t];
+        ++part.z_histogram[t][std::min<std::size_t>(z[t], kMaxZ)];
+        for (const double gap : walls) {
+            part.wall_contacts[t] += gap <= s.thresholds[t] ? 1 : 0;
+        }
+    }
+    if (shells_inside(a.center, s.outer, options.space)) {
+        ++part.full_shell_origins;
+    } else {
+        ++part.corrected_origins;
+        add_shell_volumes(a.center, s.width, options.bins, options.space, part.shell_volume);
+        if (s.split.inside_range) {
+            s.split.add_volumes(a.center, options.space, part.split_volume);
+        }
+    }
+    if (bonds.bonds > 0) {
+        part.global.add(bonds);
+        part.q6_local_sum += bonds.q6();
+        ++part.origins_with_bonds;
+    }
+}
+
+Coordination finish_coordination(const Partial& total, const LocalStructureOptions& options,
+                                 std::int64_t n) {
+    Coordination c;
     c.tolerances = options.tolerances;
     c.origins = n;
     c.wall_contacts = total.wall_contacts;
-    for (std::size_t t = 0; t < tolerances; ++t) {
+    for (std::size_t t = 0; t < options.tolerances.size(); ++t) {
         c.z_mean.push_back(n > 0 ? static_cast<double>(total.z_sum[t]) / static_cast<double>(n)
                                  : 0.0);
         std::size_t top = 0;
@@ -243,15 +332,19 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
         }
         c.p_z.push_back(std::move(p));
     }
+    return c;
+}
 
-    Rdf& rdf = result.rdf;
+Rdf finish_rdf(const Partial& total, const Setup& s, const LocalStructureOptions& options,
+               std::size_t particles, std::int64_t n) {
+    Rdf rdf;
     rdf.bin_width_over_d = options.bin_width_over_d;
     rdf.pairs = total.pairs;
     rdf.shell_volume = total.shell_volume;
     const auto full = static_cast<double>(total.full_shell_origins);
     for (std::size_t k = 0; k < options.bins; ++k) {
-        const double r0 = bin_inner(k, width);
-        const double r1 = bin_outer(k, width);
+        const double r0 = bin_inner(k, s.width);
+        const double r1 = bin_outer(k, s.width);
         rdf.shell_volume[k] +=
             full * (4.0 * std::numbers::pi / 3.0) * (r1 * r1 * r1 - r0 * r0 * r0);
     }
@@ -259,22 +352,89 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
     rdf.corrected_origins = total.corrected_origins;
     rdf.space = options.space;
     rdf.density_rule = options.density_rule;
-    rdf.space_density = static_cast<double>(particles.size()) / options.space.volume();
-    if (split.inside_range) {
+    rdf.space_density = static_cast<double>(particles) / options.space.volume();
+    if (s.split.inside_range) {
         for (int w = 0; w < 2; ++w) {
             rdf.split_pairs[w] = total.split_pairs[w];
-            rdf.split_volume[w] = total.split_volume[w] + full * split.full_volume(w);
+            rdf.split_volume[w] = total.split_volume[w] + full * s.split.full_volume(w);
         }
     }
     normalise(rdf);
+    return rdf;
+}
 
-    BondOrder& q = result.bond_order;
+BondOrder finish_bond_order(const Partial& total, const LocalStructureOptions& options) {
+    BondOrder q;
     q.cutoff = options.q6_cutoff;
     q.q6_global = total.global.q6();
     q.origins_with_bonds = total.origins_with_bonds;
     q.q6_local_mean = total.origins_with_bonds > 0
                           ? total.q6_local_sum / static_cast<double>(total.origins_with_bonds)
                           : 0.0;
+    return q;
+}
+
+/// The indices of [0, n) not in `subset` (sorted), increasing.
+std::vector<Index> others(std::size_t n, const std::vector<Index>& subset) {
+    std::vector<char> in(n, 0);
+    for (const Index i : subset) {
+        in[i] = 1;
+    }
+    std::vector<Index> rest;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (in[i] == 0) {
+            rest.push_back(static_cast<Index>(i));
+        }
+    }
+    return rest;
+}
+
+}  // namespace
+
+LocalStructure measure_local_structure(const std::vector<Particle>& particles,
+                                       const std::vector<Index>& report_rank,
+                                       const std::vector<Index>& origins,
+                                       const LocalStructureOptions& options) {
+    if (report_rank.size() != particles.size()) {
+        throw std::invalid_argument("measure_local_structure: one report rank per particle");
+    }
+    const Setup s(particles, options);
+    const std::vector<Index> ordered = spatial_order(particles, origins, options.mean_diameter);
+    // g(r) counts each pair once: origin–origin pairs from their earlier member in the
+    // origins' grid (weight 2, both are origins), origin–other pairs from the origin.
+    const double side = kCellSideOverD * options.mean_diameter;
+    const ColumnGrid origin_grid(particles, origins, side);
+    const ColumnGrid other_grid(particles, others(particles.size(), origins), side);
+    std::vector<Index> position(particles.size(), 0);  // in origin_grid
+    for (std::size_t k = 0; k < origin_grid.index.size(); ++k) {
+        position[origin_grid.index[k]] = static_cast<Index>(k);
+    }
+    const Partial total = chunked_reduce(
+        ordered.size(), kOriginsPerChunk, Partial(s.tolerances, options.bins),
+        [&](Partial& part, std::size_t begin, std::size_t end) {
+            Scratch scratch;
+            scratch.z.resize(s.tolerances);
+            for (std::size_t o = begin; o < end; ++o) {
+                const Index i = ordered[o];
+                const Particle& a = particles[i];
+                count_pairs(s, gather_near(origin_grid, a.center, s, position[i], scratch), 2,
+                            scratch, part);
+                count_pairs(s, gather_near(other_grid, a.center, s, ColumnGrid::kAll, scratch), 1,
+                            scratch, part);
+                scratch.close.clear();
+                gather_close(origin_grid, report_rank, i, a.center, s, scratch);
+                gather_close(other_grid, report_rank, i, a.center, s, scratch);
+                const BondSums bonds = contacts_and_bonds(particles, a, s, scratch);
+                add_origin(a, bonds, s, options, scratch.z, part);
+            }
+        },
+        [](Partial& sum, const Partial& part) { sum.add(part); });
+
+    LocalStructure result;
+    const auto n = static_cast<std::int64_t>(origins.size());
+    result.coordination = finish_coordination(total, options, n);
+    result.rdf = finish_rdf(total, s, options, particles.size(), n);
+    result.bond_order = finish_bond_order(total, options);
     return result;
 }
 

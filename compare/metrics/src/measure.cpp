@@ -157,11 +157,8 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     }
     const std::vector<Particle> particles = spatially_ordered(pack.particles, d);
 
-    std::vector<Vec3> centres;
-    centres.reserve(particles.size());
     std::vector<Index> origins;
     for (std::size_t i = 0; i < particles.size(); ++i) {
-        centres.push_back(particles[i].center);
         if (m.region.contains(particles[i].center)) {
             origins.push_back(static_cast<Index>(i));
         }
@@ -170,8 +167,9 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
         throw std::invalid_argument("--region '" + describe(m.region) +
                                     "' holds no particle centre");
     }
-    const NeighbourIndex index(centres);
-    std::vector<Vec3>().swap(centres);
+    // The kd-tree only fixes the order in which Q6 sums each origin's bonds; it is freed
+    // before the pair pass.
+    const std::vector<Index> report_rank = NeighbourIndex(particles).report_rank();
     stage_times.index = watch.lap();
 
     m.phi = packing_fraction(particles, m.region);
@@ -194,7 +192,7 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     local.space = options.gr_container_space ? container_space(particles, m.container)
                                              : centre_space(particles, m.container, 0.5 * d);
     local.container = m.container;
-    m.local = measure_local_structure(particles, index, origins, local);
+    m.local = measure_local_structure(particles, report_rank, origins, local);
     if (options.gr_thesis) {
         m.thesis_rdf = thesis_rdf(particles, m.region, m.phi, options.gr_bin_width * d, local.bins);
     }

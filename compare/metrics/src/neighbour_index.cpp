@@ -74,8 +74,8 @@ struct NeighbourIndex::Impl {
     Traits traits;
     Tree tree;
 
-    explicit Impl(const std::vector<Vec3>& input)
-        : points(make_points(input)),
+    explicit Impl(std::vector<Point> input)
+        : points(std::move(input)),
           traits(PointOfIndex{&points}),
           tree(Splitter(kBucketSize), traits) {
         std::vector<Index> keys(points.size());
@@ -86,13 +86,16 @@ struct NeighbourIndex::Impl {
         tree.build();
     }
 
-    static std::vector<Point> make_points(const std::vector<Vec3>& input) {
+    /// The points of `input` (Vec3 or Particle, read by `centre`).
+    template <class T, class Centre>
+    static std::vector<Point> make_points(const std::vector<T>& input, Centre centre) {
         if (input.size() >= std::numeric_limits<Index>::max()) {
             throw std::length_error("too many points for the neighbour index");
         }
         std::vector<Point> result;
         result.reserve(input.size());
-        for (const Vec3& p : input) {
+        for (const T& item : input) {
+            const Vec3& p = centre(item);
             result.emplace_back(p.x(), p.y(), p.z());
         }
         return result;
@@ -100,7 +103,12 @@ struct NeighbourIndex::Impl {
 };
 
 NeighbourIndex::NeighbourIndex(const std::vector<Vec3>& points)
-    : impl_(std::make_unique<Impl>(points)) {}
+    : impl_(std::make_unique<Impl>(
+          Impl::make_points(points, [](const Vec3& p) -> const Vec3& { return p; }))) {}
+
+NeighbourIndex::NeighbourIndex(const std::vector<Particle>& particles)
+    : impl_(std::make_unique<Impl>(Impl::make_points(
+          particles, [](const Particle& p) -> const Vec3& { return p.center; }))) {}
 
 NeighbourIndex::~NeighbourIndex() = default;
 
@@ -117,6 +125,36 @@ void NeighbourIndex::within(const Vec3& q, double radius, std::vector<Index>& ou
     const Sphere sphere(Point(q.x(), q.y(), q.z()), wide, 0.0, impl_->traits);
     impl_->tree.search(ExactFilter{&impl_->points, q.x(), q.y(), q.z(), radius * radius, &out},
                        sphere);
+}
+
+std::vector<Index> NeighbourIndex::report_rank() const {
+    const std::vector<Point>& points = impl_->points;
+    std::vector<Index> order;
+    order.reserve(points.size());
+    if (!points.empty()) {
+        double lo[3] = {points[0].x(), points[0].y(), points[0].z()};
+        double hi[3] = {lo[0], lo[1], lo[2]};
+        for (const Point& p : points) {
+            for (int a = 0; a < 3; ++a) {
+                lo[a] = std::min(lo[a], p[a]);
+                hi[a] = std::max(hi[a], p[a]);
+            }
+        }
+        const Point centre(0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2]));
+        double radius = 1.0;  // more than the whole box: the root reports every point
+        for (int a = 0; a < 3; ++a) {
+            radius += hi[a] - lo[a];
+        }
+        impl_->tree.search(std::back_inserter(order), Sphere(centre, radius, 0.0, impl_->traits));
+    }
+    if (order.size() != points.size()) {
+        throw std::logic_error("the kd-tree did not report every point once");
+    }
+    std::vector<Index> rank(points.size());
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        rank[order[k]] = static_cast<Index>(k);
+    }
+    return rank;
 }
 
 std::vector<std::pair<Index, Index>> pairs_within(const std::vector<Vec3>& points, double cutoff) {

@@ -47,45 +47,4 @@ std::vector<Index> spatial_order(const std::vector<Particle>& points, std::vecto
     return subset;
 }
 
-std::vector<QueryGroup> query_groups(const std::vector<Particle>& points,
-                                     const std::vector<Index>& ordered, std::size_t size) {
-    std::vector<QueryGroup> groups;
-    for (std::size_t begin = 0; begin < ordered.size(); begin += size) {
-        QueryGroup g;
-        g.begin = begin;
-        g.end = std::min(ordered.size(), begin + size);
-        Vec3 lo = points[ordered[begin]].center;
-        Vec3 hi = lo;
-        for (std::size_t k = begin; k < g.end; ++k) {
-            lo = lo.cwiseMin(points[ordered[k]].center);
-            hi = hi.cwiseMax(points[ordered[k]].center);
-        }
-        g.center = 0.5 * (lo + hi);
-        g.half_diagonal = 0.5 * (hi - lo).norm();
-        groups.push_back(g);
-    }
-    return groups;
-}
-
-void Candidates::gather(const NeighbourIndex& tree, const std::vector<Particle>& points,
-                        const QueryGroup& group, double radius) {
-    // Every member lies within half_diagonal of the centre; a small widening covers the
-    // rounding of that bound.
-    tree.within(group.center, (radius + group.half_diagonal) * (1.0 + 1e-12), index);
-    // The tree reports in a fixed order for a given query, so no sort is needed for
-    // determinism.
-    const std::size_t n = index.size();
-    x.resize(n);
-    y.resize(n);
-    z.resize(n);
-    r.resize(n);
-    for (std::size_t k = 0; k < n; ++k) {
-        const Particle& p = points[index[k]];
-        x[k] = p.center.x();
-        y[k] = p.center.y();
-        z[k] = p.center.z();
-        r[k] = p.radius;
-    }
-}
-
 }  // namespace sgmp::compare

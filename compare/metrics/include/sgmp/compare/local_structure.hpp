@@ -49,8 +49,14 @@ struct LocalStructureOptions {
     Container container;  // for wall contacts
 };
 
+/// One pass over the origins on a ColumnGrid: for each origin its neighbours within
+/// reach = max(g(r) range, contact and bond distances), one fused loop for the g(r) bins,
+/// Z(δ) and the Q6 bonds. `report_rank` (NeighbourIndex::report_rank of the particles'
+/// centres) orders each origin's bonds before they are summed, so Q6 rounds the same as a
+/// kd-tree query would. Work items of a fixed 256 origins are folded in order: results are
+/// bit-identical for any thread count.
 LocalStructure measure_local_structure(const std::vector<Particle>& particles,
-                                       const NeighbourIndex& index,
+                                       const std::vector<Index>& report_rank,
                                        const std::vector<Index>& origins,
                                        const LocalStructureOptions& options);
 

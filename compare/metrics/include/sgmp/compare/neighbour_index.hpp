@@ -19,6 +19,8 @@ using Index = std::uint32_t;
 class NeighbourIndex {
   public:
     explicit NeighbourIndex(const std::vector<Vec3>& points);
+    /// The index of the particles' centres (no copy of them is kept besides the tree's).
+    explicit NeighbourIndex(const std::vector<Particle>& particles);
     ~NeighbourIndex();
     NeighbourIndex(const NeighbourIndex&) = delete;
     NeighbourIndex& operator=(const NeighbourIndex&) = delete;
@@ -28,6 +30,11 @@ class NeighbourIndex {
     /// Replaces `out` with the indices of the points p with |p − q| ≤ radius, in no
     /// particular order. `out` is a buffer the caller may reuse between queries.
     void within(const Vec3& q, double radius, std::vector<Index>& out) const;
+
+    /// The rank of each point in the tree's report order: every query reports the points
+    /// it finds in increasing rank (the tree is walked lower child first, leaves in their
+    /// stored order). Sorting by rank reproduces a query's order without the tree.
+    [[nodiscard]] std::vector<Index> report_rank() const;
 
   private:
     struct Impl;

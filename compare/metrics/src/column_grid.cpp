@@ -1,0 +1,89 @@
+#include "sgmp/compare/column_grid.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+namespace sgmp::compare {
+
+namespace {
+
+std::vector<Index> every_index(std::size_t n) {
+    if (n >= std::numeric_limits<std::uint32_t>::max()) {
+        throw std::length_error("too many particles for the column grid");
+    }
+    std::vector<Index> all(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        all[i] = static_cast<Index>(i);
+    }
+    return all;
+}
+
+}  // namespace
+
+ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, double side)
+    : ColumnGrid(particles, every_index(particles.size()), side) {}
+
+ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, const std::vector<Index>& members,
+                       double side)
+    : side_(side) {
+    if (!(side > 0.0) || !std::isfinite(side)) {
+        throw std::invalid_argument("the cell side of a column grid must be positive");
+    }
+    const std::size_t n = members.size();
+    Vec3 lo = n > 0 ? particles[members.front()].center : Vec3::Zero();
+    Vec3 hi = lo;
+    for (const Index m : members) {
+        const Particle& p = particles[m];
+        if (!p.center.allFinite()) {
+            throw std::invalid_argument("a centre of the column grid is not finite");
+        }
+        lo = lo.cwiseMin(p.center);
+        hi = hi.cwiseMax(p.center);
+    }
+    const double limit = 2.0 * static_cast<double>(n) + 64.0;
+    for (;;) {
+        double cells = 1.0;
+        for (int a = 0; a < 3; ++a) {
+            cells *= std::floor((hi[a] - lo[a]) / side_) + 1.0;
+        }
+        if (cells <= limit) {
+            break;
+        }
+        side_ *= 1.25;
+    }
+    std::size_t cells = 1;
+    for (int a = 0; a < 3; ++a) {
+        origin_[a] = lo[a];
+        dims_[a] = static_cast<std::int64_t>(std::floor((hi[a] - lo[a]) / side_)) + 1;
+        cells *= static_cast<std::size_t>(dims_[a]);
+    }
+    std::vector<std::uint32_t> cell_of(n);
+    start_.assign(cells + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec3& c = particles[members[i]].center;
+        const auto cell = static_cast<std::size_t>(
+            (axis_cell(0, c.x()) * dims_[1] + axis_cell(1, c.y())) * dims_[2] +
+            axis_cell(2, c.z()));
+        cell_of[i] = static_cast<std::uint32_t>(cell);
+        ++start_[cell + 1];
+    }
+    for (std::size_t c = 0; c < cells; ++c) {
+        start_[c + 1] += start_[c];
+    }
+    std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
+    x.resize(n);
+    y.resize(n);
+    z.resize(n);
+    index.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t k = next[cell_of[i]]++;
+        const Particle& p = particles[members[i]];
+        x[k] = p.center.x();
+        y[k] = p.center.y();
+        z[k] = p.center.z();
+        index[k] = members[i];
+    }
+}
+
+}  // namespace sgmp::compare

@@ -1,0 +1,193 @@
+// The fused pair pass of measure_local_structure (column grid, one loop for g(r), Z(δ) and
+// Q6) against a brute-force O(N²) loop over every pair, on a few hundred spheres.
+// Pair, contact and wall counts are integers and must agree exactly; Q6 sums the same
+// bonds in another order, so it agrees to rounding: 1e-12 (the sums hold ~10³ terms of
+// size ≤ 1, each rounded to 1e-16).
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+
+#include "sgmp/compare/bond_order.hpp"
+#include "sgmp/compare/column_grid.hpp"
+#include "sgmp/compare/local_structure.hpp"
+#include "sgmp/compare/parallel.hpp"
+#include "sgmp/pack/random.hpp"
+
+using namespace sgmp;
+using namespace sgmp::compare;
+
+namespace {
+
+struct Case {
+    std::vector<Particle> particles;
+    std::vector<Index> origins;
+    LocalStructureOptions options;
+};
+
+/// `count` spheres at random in the container (overlaps allowed: they only add contacts),
+/// radii from r to r·(1 + spread); origins are the centres in the box |x|, |z| ≤ 0.3.
+Case random_case(std::uint64_t seed, std::size_t count, double r, double spread) {
+    Case c;
+    Random random(seed);
+    double diameter_sum = 0.0;
+    for (std::size_t i = 0; i < count; ++i) {
+        Particle p;
+        p.id = static_cast<std::int64_t>(i);
+        p.radius = r * (1.0 + spread * random.uniform(0.0, 1.0));
+        p.center =
+            Vec3(random.uniform(-0.6, 0.6), random.uniform(-0.6, 0.4), random.uniform(-0.6, 0.6));
+        diameter_sum += 2.0 * p.radius;
+        c.particles.push_back(p);
+    }
+    for (Index i = 0; i < count; ++i) {
+        const Vec3& x = c.particles[i].center;
+        if (std::abs(x.x()) <= 0.3 && std::abs(x.z()) <= 0.3) {
+            c.origins.push_back(i);
+        }
+    }
+    LocalStructureOptions& o = c.options;
+    o.tolerances = {0.0, 1e-3, 2e-2, 5e-2, 0.2};
+    o.mean_diameter = diameter_sum / static_cast<double>(count);
+    o.bin_width_over_d = 0.02;
+    o.bins = bins_for(5.0 / 0.02);
+    o.q6_cutoff = 1.2;
+    o.space = Box{Vec3(-0.6, -0.6, -0.6), Vec3(0.6, 0.4, 0.6)};
+    return c;
+}
+
+struct Counts {
+    std::vector<std::int64_t> pairs;
+    std::vector<double> z_sum;
+    std::int64_t split_pairs[2] = {0, 0};
+    double q6_global = 0.0;
+    double q6_local_mean = 0.0;
+};
+
+Counts brute_force(const Case& c) {
+    const LocalStructureOptions& o = c.options;
+    const double d = o.mean_diameter;
+    const double per_width = 1.0 / (o.bin_width_over_d * d);
+    Counts n;
+    n.pairs.assign(o.bins, 0);
+    n.z_sum.assign(o.tolerances.size(), 0.0);
+    BondSums global;
+    double local = 0.0;
+    std::int64_t with_bonds = 0;
+    for (const Index i : c.origins) {
+        const Particle& a = c.particles[i];
+        BondSums bonds;
+        for (Index j = 0; j < c.particles.size(); ++j) {
+            if (j == i) {
+                continue;
+            }
+            const Particle& b = c.particles[j];
+            const Vec3 v = b.center - a.center;
+            const double distance = std::sqrt(v.x() * v.x() + v.y() * v.y() + v.z() * v.z());
+            const auto bin = bin_of(distance, per_width);
+            if (bin < o.bins) {
+                ++n.pairs[bin];
+            }
+            const double centres[2] = {kSplitLow, kSplitHigh};
+            for (int w = 0; w < 2; ++w) {
+                n.split_pairs[w] +=
+                    std::abs(distance - centres[w] * d) <= kSplitWindowHalfWidth * d;
+            }
+            for (std::size_t t = 0; t < o.tolerances.size(); ++t) {
+                n.z_sum[t] += distance - a.radius - b.radius <= o.tolerances[t] * d ? 1 : 0;
+            }
+            if (distance <= o.q6_cutoff * (a.radius + b.radius)) {
+                bonds.add(v / distance);
+            }
+        }
+        if (bonds.bonds > 0) {
+            global.add(bonds);
+            local += bonds.q6();
+            ++with_bonds;
+        }
+    }
+    n.q6_global = global.q6();
+    n.q6_local_mean = local / static_cast<double>(with_bonds);
+    return n;
+}
+
+LocalStructure fast(const Case& c) {
+    std::vector<Vec3> centres;
+    for (const Particle& p : c.particles) {
+        centres.push_back(p.center);
+    }
+    return measure_local_structure(c.particles, NeighbourIndex(centres).report_rank(), c.origins,
+                                   c.options);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(local_structure)
+
+BOOST_AUTO_TEST_CASE(fused_pass_matches_brute_force) {
+    // Mono- and polydisperse; radii large enough that 5·d spans much of the box (edge
+    // correction exercised) and many spheres touch.
+    for (const auto& [seed, count, r, spread] :
+         {std::tuple{1ULL, 300UL, 0.04, 0.0}, std::tuple{2ULL, 500UL, 0.03, 0.5},
+          std::tuple{3ULL, 400UL, 0.05, 1.0}}) {
+        const Case c = random_case(seed, count, r, spread);
+        BOOST_REQUIRE_GT(c.origins.size(), 20U);
+        const Counts expected = brute_force(c);
+        const LocalStructure got = fast(c);
+        BOOST_TEST(got.rdf.pairs == expected.pairs, boost::test_tools::per_element());
+        BOOST_TEST(got.rdf.split_pairs[0] == expected.split_pairs[0]);
+        BOOST_TEST(got.rdf.split_pairs[1] == expected.split_pairs[1]);
+        std::int64_t contacts = 0;
+        for (std::size_t t = 0; t < c.options.tolerances.size(); ++t) {
+            const double z_sum = got.coordination.z_mean[t] * static_cast<double>(c.origins.size());
+            BOOST_TEST(std::llround(z_sum) == std::llround(expected.z_sum[t]));
+            contacts += std::llround(expected.z_sum[t]);
+        }
+        BOOST_TEST(contacts > 0);  // the case has contacts to count
+        BOOST_TEST(std::abs(got.bond_order.q6_global - expected.q6_global) <= 1e-12);
+        BOOST_TEST(std::abs(got.bond_order.q6_local_mean - expected.q6_local_mean) <= 1e-12);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(results_are_bit_identical_for_any_thread_count) {
+    const Case c = random_case(4, 2000, 0.02, 0.3);
+    set_thread_count(1);
+    const LocalStructure one = fast(c);
+    set_thread_count(2);
+    const LocalStructure two = fast(c);
+    set_thread_count(0);
+    BOOST_TEST(one.rdf.pairs == two.rdf.pairs, boost::test_tools::per_element());
+    BOOST_TEST(one.rdf.shell_volume == two.rdf.shell_volume, boost::test_tools::per_element());
+    BOOST_TEST(one.coordination.z_mean == two.coordination.z_mean,
+               boost::test_tools::per_element());
+    BOOST_TEST(one.bond_order.q6_global == two.bond_order.q6_global);  // exact, not close
+    BOOST_TEST(one.bond_order.q6_local_mean == two.bond_order.q6_local_mean);
+}
+
+BOOST_AUTO_TEST_CASE(column_grid_ranges_hold_every_centre_of_the_ball) {
+    Random random(5);
+    std::vector<Particle> particles(700);
+    for (auto& p : particles) {
+        p.center = Vec3(random.uniform(-1, 1), random.uniform(0, 0.5), random.uniform(-2, 1));
+    }
+    for (const double side : {0.05, 0.13, 1.0}) {
+        const ColumnGrid grid(particles, side);
+        for (int q = 0; q < 50; ++q) {
+            const Vec3 p(random.uniform(-1.2, 1.2), random.uniform(-0.2, 0.7),
+                         random.uniform(-2.2, 1.2));
+            const double radius = random.uniform(0.0, 0.6);
+            std::vector<int> seen(particles.size(), 0);
+            grid.for_each_range(p, radius, [&](std::size_t begin, std::size_t end) {
+                for (std::size_t k = begin; k < end; ++k) {
+                    ++seen[grid.index[k]];
+                }
+            });
+            for (std::size_t i = 0; i < particles.size(); ++i) {
+                BOOST_TEST(seen[i] <= 1);  // ranges are disjoint
+                if ((particles[i].center - p).norm() <= radius) {
+                    BOOST_TEST(seen[i] == 1);
+                }
+            }
+        }
+    }
+}
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -211,18 +211,18 @@ PackRequest to_request(const Options& o) {
         p.sweep_stages = *stages;
     }
     p.lower_neighbours = o.lower_neighbours;
-    p.gap = parse_choice(parse_gap_rule(o.gap), "gap", o.gap, "largest, random");
-    p.fall = parse_choice(parse_fall_mode(o.fall), "fall", o.fall, "exact, step");
+    p.gap = parse_choice(parse_gap_rule(o.gap), "gap", o.gap, gap_rules().choices());
+    p.fall = parse_choice(parse_fall_mode(o.fall), "fall", o.fall, fall_modes().choices());
     p.fall_step = o.fall_step;
-    p.contact =
-        parse_choice(parse_contact_model(o.contact), "contact", o.contact, "none, settle, roll");
+    p.contact = parse_choice(parse_contact_model(o.contact), "contact", o.contact,
+                             contact_models().choices());
     p.momentum = o.momentum;
-    p.walls = parse_choice(parse_wall_rule(o.walls), "walls", o.walls, "fix, block");
+    p.walls = parse_choice(parse_wall_rule(o.walls), "walls", o.walls, wall_rules().choices());
     p.stall_moves = o.stall_moves;
     p.max_moves = o.max_moves;
     request.relax = o.relax_params;
     request.relax.mode =
-        parse_choice(parse_relax_mode(o.relax), "relax", o.relax, "none, frictionless, frictional");
+        parse_choice(parse_relax_mode(o.relax), "relax", o.relax, relax_modes().choices());
     validate(request);
     return request;
 }

@@ -73,23 +73,24 @@ void apply(PackRequest& r, const std::string& name, const std::string& v) {
     } else if (name == "lower_neighbours") {
         p.lower_neighbours = number<int>(name, v);
     } else if (name == "gap") {
-        p.gap = choice(engine::parse_gap_rule(v), name, v, "largest, random");
+        p.gap = choice(engine::parse_gap_rule(v), name, v, engine::gap_rules().choices());
     } else if (name == "fall") {
-        p.fall = choice(engine::parse_fall_mode(v), name, v, "exact, step");
+        p.fall = choice(engine::parse_fall_mode(v), name, v, engine::fall_modes().choices());
     } else if (name == "fall_step") {
         p.fall_step = number<double>(name, v);
     } else if (name == "contact") {
-        p.contact = choice(engine::parse_contact_model(v), name, v, "none, settle, roll");
+        p.contact =
+            choice(engine::parse_contact_model(v), name, v, engine::contact_models().choices());
     } else if (name == "momentum") {
         p.momentum = number<double>(name, v);
     } else if (name == "walls") {
-        p.walls = choice(engine::parse_wall_rule(v), name, v, "fix, block");
+        p.walls = choice(engine::parse_wall_rule(v), name, v, engine::wall_rules().choices());
     } else if (name == "stall_moves") {
         p.stall_moves = number<long>(name, v);
     } else if (name == "max_moves") {
         p.max_moves = number<long>(name, v);
     } else if (name == "relax") {
-        x.mode = choice(engine::parse_relax_mode(v), name, v, "none, frictionless");
+        x.mode = choice(engine::parse_relax_mode(v), name, v, engine::relax_modes().choices());
     } else if (name == "relax_stiffness") {
         x.stiffness = number<double>(name, v);
     } else if (name == "relax_stiffness_factor") {

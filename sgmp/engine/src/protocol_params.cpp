@@ -47,56 +47,51 @@ void validate(const ProtocolParams& p, double diameter) {
     }
 }
 
-std::string_view to_string(FallMode mode) {
-    return mode == FallMode::Exact ? "exact" : "step";
+const NameTable<FallMode, 2>& fall_modes() {
+    static constexpr NameTable<FallMode, 2> table{
+        {{{FallMode::Exact, "exact"}, {FallMode::Step, "step"}}}};
+    return table;
 }
-std::string_view to_string(GapRule rule) {
-    return rule == GapRule::Largest ? "largest" : "random";
+const NameTable<GapRule, 2>& gap_rules() {
+    static constexpr NameTable<GapRule, 2> table{
+        {{{GapRule::Largest, "largest"}, {GapRule::Random, "random"}}}};
+    return table;
 }
-std::string_view to_string(ContactModel model) {
-    switch (model) {
-        case ContactModel::None:
-            return "none";
-        case ContactModel::Settle:
-            return "settle";
-        case ContactModel::Roll:
-            return "roll";
-    }
-    return "none";
+const NameTable<ContactModel, 3>& contact_models() {
+    static constexpr NameTable<ContactModel, 3> table{{{{ContactModel::None, "none"},
+                                                        {ContactModel::Settle, "settle"},
+                                                        {ContactModel::Roll, "roll"}}}};
+    return table;
 }
-std::string_view to_string(WallRule rule) {
-    return rule == WallRule::Fix ? "fix" : "block";
+const NameTable<WallRule, 2>& wall_rules() {
+    static constexpr NameTable<WallRule, 2> table{
+        {{{WallRule::Fix, "fix"}, {WallRule::Block, "block"}}}};
+    return table;
 }
 
+std::string_view to_string(FallMode mode) {
+    return fall_modes().name(mode);
+}
+std::string_view to_string(GapRule rule) {
+    return gap_rules().name(rule);
+}
+std::string_view to_string(ContactModel model) {
+    return contact_models().name(model);
+}
+std::string_view to_string(WallRule rule) {
+    return wall_rules().name(rule);
+}
 std::optional<FallMode> parse_fall_mode(std::string_view text) {
-    if (text == "exact")
-        return FallMode::Exact;
-    if (text == "step")
-        return FallMode::Step;
-    return std::nullopt;
+    return fall_modes().parse(text);
 }
 std::optional<GapRule> parse_gap_rule(std::string_view text) {
-    if (text == "largest")
-        return GapRule::Largest;
-    if (text == "random")
-        return GapRule::Random;
-    return std::nullopt;
+    return gap_rules().parse(text);
 }
 std::optional<ContactModel> parse_contact_model(std::string_view text) {
-    if (text == "none")
-        return ContactModel::None;
-    if (text == "settle")
-        return ContactModel::Settle;
-    if (text == "roll")
-        return ContactModel::Roll;
-    return std::nullopt;
+    return contact_models().parse(text);
 }
 std::optional<WallRule> parse_wall_rule(std::string_view text) {
-    if (text == "fix")
-        return WallRule::Fix;
-    if (text == "block")
-        return WallRule::Block;
-    return std::nullopt;
+    return wall_rules().parse(text);
 }
 
 std::string stages_to_string(const std::vector<int>& stages) {

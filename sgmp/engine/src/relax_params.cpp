@@ -45,26 +45,19 @@ void validate(const RelaxParams& p) {
     }
 }
 
+const NameTable<RelaxMode, 3>& relax_modes() {
+    static constexpr NameTable<RelaxMode, 3> table{{{{RelaxMode::None, "none"},
+                                                     {RelaxMode::Frictionless, "frictionless"},
+                                                     {RelaxMode::Frictional, "frictional"}}}};
+    return table;
+}
+
 std::string_view to_string(RelaxMode mode) {
-    switch (mode) {
-        case RelaxMode::None:
-            return "none";
-        case RelaxMode::Frictionless:
-            return "frictionless";
-        case RelaxMode::Frictional:
-            return "frictional";
-    }
-    return "none";
+    return relax_modes().name(mode);
 }
 
 std::optional<RelaxMode> parse_relax_mode(std::string_view text) {
-    if (text == "none")
-        return RelaxMode::None;
-    if (text == "frictionless")
-        return RelaxMode::Frictionless;
-    if (text == "frictional")
-        return RelaxMode::Frictional;
-    return std::nullopt;
+    return relax_modes().parse(text);
 }
 
 void record(const RelaxParams& p, Metadata& m) {

@@ -114,26 +114,26 @@ const std::map<std::string, Setter>& setters() {
          }},
         {"gap",
          [](PackRequest& r, auto v) {
-             r.protocol.gap =
-                 choice(engine::parse_gap_rule(text(v, "gap")), "gap", v, "largest, random");
+             r.protocol.gap = choice(engine::parse_gap_rule(text(v, "gap")), "gap", v,
+                                     engine::gap_rules().choices());
          }},
         {"fall",
          [](PackRequest& r, auto v) {
-             r.protocol.fall =
-                 choice(engine::parse_fall_mode(text(v, "fall")), "fall", v, "exact, step");
+             r.protocol.fall = choice(engine::parse_fall_mode(text(v, "fall")), "fall", v,
+                                      engine::fall_modes().choices());
          }},
         {"fall_step",
          [](PackRequest& r, auto v) { r.protocol.fall_step = number(v, "fall-step"); }},
         {"contact",
          [](PackRequest& r, auto v) {
              r.protocol.contact = choice(parse_contact_model(text(v, "contact")), "contact", v,
-                                         "none, settle, roll");
+                                         engine::contact_models().choices());
          }},
         {"momentum", [](PackRequest& r, auto v) { r.protocol.momentum = number(v, "momentum"); }},
         {"walls",
          [](PackRequest& r, auto v) {
-             r.protocol.walls =
-                 choice(engine::parse_wall_rule(text(v, "walls")), "walls", v, "fix, block");
+             r.protocol.walls = choice(engine::parse_wall_rule(text(v, "walls")), "walls", v,
+                                       engine::wall_rules().choices());
          }},
         {"stall_moves",
          [](PackRequest& r, auto v) {
@@ -146,7 +146,7 @@ const std::map<std::string, Setter>& setters() {
         {"relax",
          [](PackRequest& r, auto v) {
              r.relax.mode = choice(engine::parse_relax_mode(text(v, "relax")), "relax", v,
-                                   "none, frictionless");
+                                   engine::relax_modes().choices());
          }},
         {"relax_stiffness",
          [](PackRequest& r, auto v) { r.relax.stiffness = number(v, "relax-stiffness"); }},

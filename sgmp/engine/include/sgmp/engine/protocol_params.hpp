@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "sgmp/engine/name_table.hpp"
 #include "sgmp/pack/metadata.hpp"
 
 namespace sgmp::engine {
@@ -90,6 +91,12 @@ inline constexpr int kMaxSweepPositions = 1000000;
 /// Checks the parameters for particles of diameter `diameter`; throws ParameterError
 /// (the parameter's header name, its value, the rule) for the first that breaks its rule.
 void validate(const ProtocolParams& params, double diameter);
+
+/// The name tables of the protocol's choices (name_table.hpp).
+const NameTable<FallMode, 2>& fall_modes();
+const NameTable<GapRule, 2>& gap_rules();
+const NameTable<ContactModel, 3>& contact_models();
+const NameTable<WallRule, 2>& wall_rules();
 
 std::string_view to_string(FallMode mode);
 std::string_view to_string(GapRule rule);

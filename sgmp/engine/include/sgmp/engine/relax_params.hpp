@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "sgmp/engine/name_table.hpp"
 #include "sgmp/pack/metadata.hpp"
 
 namespace sgmp::engine {
@@ -61,6 +62,8 @@ struct RelaxParams {
 /// first parameter that breaks its rule.
 void validate(const RelaxParams& params);
 
+/// The name table of the relaxation modes (name_table.hpp).
+const NameTable<RelaxMode, 3>& relax_modes();
 std::string_view to_string(RelaxMode mode);
 std::optional<RelaxMode> parse_relax_mode(std::string_view text);
 

@@ -4,6 +4,7 @@
 
 #include "sgmp/batch/plan.hpp"
 #include "sgmp/batch/summary.hpp"
+#include "sgmp/pack/csv_fields.hpp"
 #include "sgmp/pack/input_error.hpp"
 
 using namespace sgmp::batch;
@@ -32,7 +33,7 @@ SummaryRow row_for(std::size_t job, const std::string& path) {
 
 BOOST_AUTO_TEST_CASE(rows_round_trip_through_the_csv_layout) {
     const std::string line = summary_line(row_for(4, "a \"b\",c.xyz"));
-    const auto fields = split_csv_fields(line.substr(0, line.size() - 1));
+    const auto fields = sgmp::split_quoted_csv_line(line.substr(0, line.size() - 1));
     BOOST_REQUIRE(fields);
     BOOST_TEST(fields->size() == summary_header().size());
     BOOST_TEST(fields->front() == "4");
@@ -49,7 +50,8 @@ BOOST_AUTO_TEST_CASE(rows_round_trip_through_the_csv_layout) {
     SummaryRow unmeasured = row_for(1, "p");
     unmeasured.metrics.reset();
     const std::string bare = summary_line(unmeasured);
-    BOOST_TEST(split_csv_fields(bare.substr(0, bare.size() - 1))->size() == header.size());
+    BOOST_TEST(sgmp::split_quoted_csv_line(bare.substr(0, bare.size() - 1))->size() ==
+               header.size());
 }
 
 BOOST_AUTO_TEST_CASE(merge_restores_job_order_and_refuses_duplicates) {

@@ -1,4 +1,5 @@
 #include "sgmp/batch/summary.hpp"
+#include "sgmp/pack/csv_fields.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -78,46 +79,6 @@ std::string summary_text(const std::vector<std::string>& lines) {
     return text;
 }
 
-std::optional<std::vector<std::string>> split_csv_fields(std::string_view line) {
-    if (!line.empty() && line.back() == '\r') {
-        line.remove_suffix(1);
-    }
-    std::vector<std::string> fields;
-    std::size_t pos = 0;
-    while (true) {
-        std::string field;
-        if (pos < line.size() && line[pos] == '"') {
-            ++pos;
-            while (true) {
-                const std::size_t quote = line.find('"', pos);
-                if (quote == std::string_view::npos) {
-                    return std::nullopt;
-                }
-                field.append(line.substr(pos, quote - pos));
-                pos = quote + 1;
-                if (pos < line.size() && line[pos] == '"') {
-                    field.push_back('"');
-                    ++pos;
-                    continue;
-                }
-                break;
-            }
-            if (pos < line.size() && line[pos] != ',') {
-                return std::nullopt;
-            }
-        } else {
-            const std::size_t end = std::min(line.find(',', pos), line.size());
-            field.assign(line.substr(pos, end - pos));
-            pos = end;
-        }
-        fields.push_back(std::move(field));
-        if (pos >= line.size()) {
-            return fields;
-        }
-        ++pos;
-    }
-}
-
 SummaryTable parse_summary(std::string_view text, const std::string& source) {
     SummaryTable table;
     const auto expected = summary_header();
@@ -131,7 +92,7 @@ SummaryTable parse_summary(std::string_view text, const std::string& source) {
         if (line.empty() || line.front() == '#') {
             continue;
         }
-        const auto fields = split_csv_fields(line);
+        const auto fields = split_quoted_csv_line(line);
         if (!fields) {
             throw InputError(source, number, "a quoted field is not closed");
         }

@@ -61,9 +61,6 @@ struct SummaryTable {
     std::vector<Row> rows;
 };
 
-/// Fields of one CSV line (RFC 4180 quoting); nullopt for a malformed quote.
-std::optional<std::vector<std::string>> split_csv_fields(std::string_view line);
-
 /// Parses a summary's text. Throws InputError ("source:line: reason") for a header that is
 /// not summary_header(), a row with another field count or job number that is not a whole
 /// number.

@@ -369,7 +369,7 @@ const char* kStyle =
     "span.mark{font-family:monospace;font-size:15px}"
     "figure{display:inline-block;margin:4px}figcaption{font-size:12px;color:#555}"
     "figure svg{width:640px;height:auto}summary{cursor:pointer;margin:4px 0}"
-    "td img{width:160px;height:auto;display:block}"
+    "td img{width:128px;height:auto;display:block}"
     "nav{background:#f7f7f7;padding:4px 10px;border:1px solid #ddd}</style>";
 
 /// Verdict words and marks in table cells get their colour class.

@@ -1,23 +1,18 @@
 #include "sgmp/batch/shard.hpp"
 
-#include <charconv>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "sgmp/pack/csv_fields.hpp"
 #include "sgmp/pack/input_error.hpp"
 
 namespace sgmp::batch {
 namespace {
 
+/// A whole number written in decimal digits, nothing else (the pack library's strict parse).
 std::optional<std::size_t> whole(std::string_view text) {
-    std::size_t value = 0;
-    const auto* end = text.data() + text.size();
-    const auto result = std::from_chars(text.data(), end, value);
-    if (text.empty() || result.ec != std::errc() || result.ptr != end) {
-        return std::nullopt;
-    }
-    return value;
+    return parse_csv_number<std::size_t>(std::string(text));
 }
 
 }  // namespace

@@ -13,18 +13,12 @@
 #include <thread>
 
 #include "sgmp/batch/summary.hpp"
+#include "test_support.hpp"
 
 namespace fs = std::filesystem;
 using namespace sgmp::batch;
 
 namespace {
-
-std::string slurp(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 struct Run {
     int status = -1;
@@ -52,8 +46,8 @@ struct Scratch {
             "cd '" + (dir / cwd).string() + "' && " + prefix + " '" + SGMP_EXECUTABLE + "' batch " +
             args + " >'" + path("stdout").string() + "' 2>'" + path("stderr").string() + "'";
         const int raw = std::system(command.c_str());
-        return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(path("stdout")),
-                slurp(path("stderr"))};
+        return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, sgmp::testing::read_bytes(path("stdout")),
+                sgmp::testing::read_bytes(path("stderr"))};
     }
 
     /// Every file under `cwd`, relative paths, sorted.
@@ -71,7 +65,7 @@ struct Scratch {
 
 /// The summary without its timing columns (seconds, measure_seconds), one string per row.
 std::vector<std::string> untimed(const fs::path& summary) {
-    const SummaryTable table = parse_summary(slurp(summary), summary.string());
+    const SummaryTable table = parse_summary(sgmp::testing::read_bytes(summary), summary.string());
     const auto header = summary_header();
     std::vector<std::string> rows;
     for (const auto& row : table.rows) {
@@ -95,7 +89,9 @@ void expect_same_packs(const Scratch& s, const std::string& a, const std::string
     BOOST_TEST(names == s.files(b));
     for (const std::string& name : names) {
         if (name.rfind("packs/", 0) == 0) {
-            BOOST_TEST(slurp(s.path(a) / name) == slurp(s.path(b) / name), name);
+            BOOST_TEST(sgmp::testing::read_bytes(s.path(a) / name) ==
+                           sgmp::testing::read_bytes(s.path(b) / name),
+                       name);
         }
     }
 }
@@ -149,14 +145,16 @@ BOOST_AUTO_TEST_CASE(batch_packs_equal_sgmp_pack_and_reruns_are_refused) {
                              "' pack --count 80 --arrangement large-dense --relax frictionless "
                              "--seed 2 --out single.xyz >/dev/null";
     BOOST_REQUIRE(std::system(pack.c_str()) == 0);
-    BOOST_TEST(slurp(s.path("io/single.xyz")) == slurp(s.path("io/p/frictionless-2.xyz")));
+    BOOST_TEST(sgmp::testing::read_bytes(s.path("io/single.xyz")) ==
+               sgmp::testing::read_bytes(s.path("io/p/frictionless-2.xyz")));
     // Row order: relax none before frictionless, seeds as listed.
-    const auto rows = parse_summary(slurp(s.path("io/summary.csv")), "summary").rows;
+    const auto rows =
+        parse_summary(sgmp::testing::read_bytes(s.path("io/summary.csv")), "summary").rows;
     BOOST_REQUIRE(rows.size() == 4u);
     BOOST_TEST(rows[1].fields.back() == "p/none-2.xyz");
     BOOST_TEST(rows[2].fields.back() == "p/frictionless-4.xyz");
     // A re-run: exit 1 naming the first existing file; nothing changes.
-    const auto before = slurp(s.path("io/summary.csv"));
+    const auto before = sgmp::testing::read_bytes(s.path("io/summary.csv"));
     const Run again = s.batch(args);
     BOOST_TEST(again.status == 1);
     BOOST_TEST(again.err ==
@@ -168,7 +166,8 @@ BOOST_AUTO_TEST_CASE(batch_packs_equal_sgmp_pack_and_reruns_are_refused) {
     BOOST_TEST(packs_exist.err.rfind("sgmp: p/none-4.xyz: exists;", 0) == 0u);
     BOOST_TEST(!fs::exists(s.path("io/summary.csv")));
     BOOST_TEST(s.batch(args + " --force").status == 0);
-    BOOST_TEST(slurp(s.path("io/single.xyz")) == slurp(s.path("io/p/frictionless-2.xyz")));
+    BOOST_TEST(sgmp::testing::read_bytes(s.path("io/single.xyz")) ==
+               sgmp::testing::read_bytes(s.path("io/p/frictionless-2.xyz")));
     BOOST_TEST(untimed(s.path("io/summary.csv")) == untimed(s.path("old.csv")));
     (void)before;
 }
@@ -196,7 +195,8 @@ BOOST_AUTO_TEST_CASE(measured_rows_and_progress_lines) {
     // stderr is a file here, not a terminal: progress lines still come.
     BOOST_TEST(r.err.find("sgmp batch: ") != std::string::npos, r.err);
     BOOST_TEST(r.err.find(" / 2 packs") != std::string::npos);
-    const SummaryTable t = parse_summary(slurp(s.path("io/summary.csv")), "summary");
+    const SummaryTable t =
+        parse_summary(sgmp::testing::read_bytes(s.path("io/summary.csv")), "summary");
     BOOST_REQUIRE(t.rows.size() == 2u);
     const auto header = summary_header();
     const auto at = [&](std::size_t row, const std::string& name) {

@@ -12,6 +12,7 @@
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/pack_file.hpp"
 #include "synthetic_packs.hpp"
+#include "test_support.hpp"
 
 namespace fs = std::filesystem;
 
@@ -44,11 +45,6 @@ Result run(const std::string& arguments) {
     std::ifstream in(err);
     result.err.assign(std::istreambuf_iterator<char>(in), {});
     return result;
-}
-
-std::string slurp(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
 }
 
 void write(const std::string& name, const std::string& text) {
@@ -109,9 +105,9 @@ BOOST_AUTO_TEST_CASE(header_prints_the_provenance_keys_scripts_read) {
         return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
     };
     BOOST_TEST(header("keys.xyz seed label") == 0);
-    BOOST_TEST(slurp(out) == "7\na b\n");
+    BOOST_TEST(sgmp::testing::read_bytes(out) == "7\na b\n");
     BOOST_TEST(header("keys.xyz seed absent --allow-missing") == 0);
-    BOOST_TEST(slurp(out) == "7\n\n");
+    BOOST_TEST(sgmp::testing::read_bytes(out) == "7\n\n");
     BOOST_TEST(header("keys.xyz absent") == 1);              // a missing key is an input error
     write("cut.xyz", "2\n" + kHeader + "1 0 0 0 0.05 0\n");  // truncated: not reusable
     BOOST_TEST(header("cut.xyz generator") == 1);
@@ -195,8 +191,8 @@ BOOST_AUTO_TEST_CASE(sigint_removes_the_temporary_directory_and_exits_130) {
         "for i in $(seq 1000); do [ -d .big.tmp-$pid ] && break; sleep 0.01; done; "
         "kill -INT $pid; wait $pid; echo $? >status.txt; }";
     BOOST_TEST(std::system(command.c_str()) == 0);
-    BOOST_TEST(slurp(scratch() / "status.txt") == "130\n");
-    BOOST_TEST(slurp(scratch() / "stderr.txt") ==
+    BOOST_TEST(sgmp::testing::read_bytes(scratch() / "status.txt") == "130\n");
+    BOOST_TEST(sgmp::testing::read_bytes(scratch() / "stderr.txt") ==
                "sgmp-compare: interrupted by SIGINT; its temporary files are removed\n");
     BOOST_TEST(!fs::exists(scratch() / "big"));
     for (const auto& entry : fs::directory_iterator(scratch())) {
@@ -262,12 +258,12 @@ BOOST_AUTO_TEST_CASE(measure_and_report_write_complete_directories) {
     BOOST_TEST(run("measure a.xyz --out m --force").status == 0);
     BOOST_TEST(!fs::exists(scratch() / "m" / "b.metrics.json"));
     // The same command gives the same bytes, whatever the thread count.
-    const std::string first = slurp(scratch() / "m" / "a.metrics.json");
-    const std::string curve = slurp(scratch() / "m" / "a.g_r.csv");
+    const std::string first = sgmp::testing::read_bytes(scratch() / "m" / "a.metrics.json");
+    const std::string curve = sgmp::testing::read_bytes(scratch() / "m" / "a.g_r.csv");
     BOOST_TEST(run("measure a.xyz --out m --force --threads 1").status == 0);
     BOOST_TEST(run("measure a.xyz --out m --force").status == 0);
-    BOOST_TEST(slurp(scratch() / "m" / "a.metrics.json") == first);
-    BOOST_TEST(slurp(scratch() / "m" / "a.g_r.csv") == curve);
+    BOOST_TEST(sgmp::testing::read_bytes(scratch() / "m" / "a.metrics.json") == first);
+    BOOST_TEST(sgmp::testing::read_bytes(scratch() / "m" / "a.g_r.csv") == curve);
 
     // A failing report leaves nothing behind.
     write("bad.xyz", "1\n" + kHeader + "1 0 nan 0 0.05 0\n");
@@ -282,12 +278,12 @@ BOOST_AUTO_TEST_CASE(measure_and_report_write_complete_directories) {
     std::vector<std::string> contents;
     for (const auto& file : files) {
         BOOST_TEST(fs::exists(scratch() / "r" / file), file);
-        contents.push_back(slurp(scratch() / "r" / file));
+        contents.push_back(sgmp::testing::read_bytes(scratch() / "r" / file));
     }
     // The same command gives the same bytes.
     BOOST_TEST(run(report_command).status == 0);
     for (std::size_t i = 0; i < files.size(); ++i) {
-        BOOST_TEST(slurp(scratch() / "r" / files[i]) == contents[i], files[i]);
+        BOOST_TEST(sgmp::testing::read_bytes(scratch() / "r" / files[i]) == contents[i], files[i]);
     }
 }
 
@@ -307,7 +303,7 @@ BOOST_AUTO_TEST_CASE(crossval_and_regress_end_to_end) {
                              "baseline.json", "report.json"}) {
         BOOST_TEST(fs::exists(scratch() / "cv" / file), file);
     }
-    const std::string md = slurp(scratch() / "cv" / "report.md");
+    const std::string md = sgmp::testing::read_bytes(scratch() / "cv" / "report.md");
     BOOST_TEST(md.find("## Which SGMP mode stands in for which DEM class") <
                md.find("## Verdict matrix"));
     BOOST_TEST(md.find("## Verdict matrix") < md.find("## Every comparison"));
@@ -316,7 +312,7 @@ BOOST_AUTO_TEST_CASE(crossval_and_regress_end_to_end) {
 
     // A run compared with itself passes; a baseline whose phi moved fails with status 3.
     BOOST_TEST(run("regress --baseline cv/baseline.json --current cv/baseline.json").status == 0);
-    std::string moved = slurp(scratch() / "cv" / "baseline.json");
+    std::string moved = sgmp::testing::read_bytes(scratch() / "cv" / "baseline.json");
     const auto at = moved.find("\"value\": ");
     BOOST_TEST_REQUIRE(at != std::string::npos);
     moved.insert(at + 9, "1");  // the first value (phi, about 0.6) becomes about 10.6

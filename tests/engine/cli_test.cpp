@@ -11,6 +11,7 @@
 
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/pack/version.hpp"
+#include "test_support.hpp"
 
 namespace fs = std::filesystem;
 
@@ -21,13 +22,6 @@ struct Run {
     std::string out;
     std::string err;
 };
-
-std::string slurp(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 /// A fresh scratch directory per test case.
 struct Scratch {
@@ -48,8 +42,8 @@ struct Scratch {
         const int raw = std::system(command.c_str());
         Run result;
         result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-        result.out = slurp(path("stdout"));
-        result.err = slurp(path("stderr"));
+        result.out = sgmp::testing::read_bytes(path("stdout"));
+        result.err = sgmp::testing::read_bytes(path("stderr"));
         return result;
     }
 };
@@ -118,13 +112,16 @@ BOOST_AUTO_TEST_CASE(relax_none_writes_the_bytes_of_no_relaxation_and_relaxed_pa
     const std::string common = "pack --count 300 --arrangement loose-random --seed 3 --out ";
     BOOST_TEST(s.run(common + "'" + s.path("plain.xyz") + "'").status == 0);
     BOOST_TEST(s.run(common + "'" + s.path("none.xyz") + "' --relax none").status == 0);
-    BOOST_TEST(slurp(s.path("plain.xyz")) == slurp(s.path("none.xyz")));
+    BOOST_TEST(sgmp::testing::read_bytes(s.path("plain.xyz")) ==
+               sgmp::testing::read_bytes(s.path("none.xyz")));
     const Run a = s.run(common + "'" + s.path("a.xyz") + "' --relax frictionless");
     const Run b = s.run(common + "'" + s.path("b.xyz") + "' --relax frictionless");
     BOOST_TEST(a.status == 0);
     BOOST_TEST(b.status == 0);
-    BOOST_TEST(slurp(s.path("a.xyz")) == slurp(s.path("b.xyz")));
-    BOOST_TEST(slurp(s.path("a.xyz")) != slurp(s.path("plain.xyz")));
+    BOOST_TEST(sgmp::testing::read_bytes(s.path("a.xyz")) ==
+               sgmp::testing::read_bytes(s.path("b.xyz")));
+    BOOST_TEST(sgmp::testing::read_bytes(s.path("a.xyz")) !=
+               sgmp::testing::read_bytes(s.path("plain.xyz")));
     BOOST_TEST(a.out.find("overlaps=0") != std::string::npos);
     const auto pack = sgmp::read_pack_file(s.path("a.xyz"));
     BOOST_TEST(pack.metadata.get("relax").value_or("") == "frictionless");
@@ -148,7 +145,7 @@ BOOST_AUTO_TEST_CASE(an_existing_output_is_kept_unless_forced) {
         "pack --count 100 --arrangement large-dense --out '" + s.path("p.xyz") + "'";
     const Run refused = s.run(args);
     BOOST_TEST(refused.status == 2);
-    BOOST_TEST(slurp(s.path("p.xyz")) == "keep me");
+    BOOST_TEST(sgmp::testing::read_bytes(s.path("p.xyz")) == "keep me");
     const Run forced = s.run(args + " --force");
     BOOST_TEST(forced.status == 0);
     BOOST_TEST(sgmp::read_pack_file(s.path("p.xyz")).particles.size() == 100u);
@@ -163,8 +160,9 @@ BOOST_AUTO_TEST_CASE(same_arguments_write_the_same_bytes_and_a_summary_line) {
     const Run b = s.run(common + "'" + s.path("b.xyz") + "'");
     BOOST_TEST(a.status == 0);
     BOOST_TEST(b.status == 0);
-    BOOST_TEST(slurp(s.path("a.xyz")) == slurp(s.path("b.xyz")));
-    BOOST_TEST(slurp(s.path("a.xyz")).size() > 1000u);
+    BOOST_TEST(sgmp::testing::read_bytes(s.path("a.xyz")) ==
+               sgmp::testing::read_bytes(s.path("b.xyz")));
+    BOOST_TEST(sgmp::testing::read_bytes(s.path("a.xyz")).size() > 1000u);
     BOOST_TEST(a.out.find("sgmp: packed 400 particles, loose-random, d=") == 0u);
     BOOST_TEST(a.out.find("phi(control volume)=0.") != std::string::npos);
     BOOST_TEST(a.out.find("overlaps=0") != std::string::npos);
@@ -238,7 +236,7 @@ BOOST_AUTO_TEST_CASE(a_full_disk_exits_1_not_the_usage_code) {
     BOOST_TEST(WIFEXITED(raw));
     BOOST_TEST(WEXITSTATUS(raw) == 1);
     // The error is the last line (a slow machine may print a progress line before it).
-    const std::string err = slurp(s.path("stderr"));
+    const std::string err = sgmp::testing::read_bytes(s.path("stderr"));
     const std::string expected = "sgmp: " + s.path("p.xyz.gz") + ": write failed: File too large\n";
     BOOST_TEST((err.size() >= expected.size() &&
                 err.compare(err.size() - expected.size(), expected.size(), expected) == 0 &&
@@ -257,8 +255,8 @@ BOOST_AUTO_TEST_CASE(sigint_exits_130_with_one_line_and_no_file) {
                                 "' & pid=$!; sleep 0.5; kill -INT $pid; wait $pid; echo $? >'" +
                                 s.path("status") + "'";
     BOOST_TEST(std::system(command.c_str()) == 0);
-    BOOST_TEST(slurp(s.path("status")) == "130\n");
-    BOOST_TEST(slurp(s.path("stderr")) ==
+    BOOST_TEST(sgmp::testing::read_bytes(s.path("status")) == "130\n");
+    BOOST_TEST(sgmp::testing::read_bytes(s.path("stderr")) ==
                "sgmp: interrupted by SIGINT; its temporary files are removed\n");
     BOOST_TEST(std::distance(fs::directory_iterator(s.dir), fs::directory_iterator()) == 2);
 }

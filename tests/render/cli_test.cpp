@@ -11,17 +11,11 @@
 #include <string>
 
 #include "sgmp/render/png_info.hpp"
+#include "test_support.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string slurp(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 struct Run {
     int status = -1;
@@ -47,7 +41,8 @@ struct Scratch {
         const std::string command = env + " '" + std::string(SGMP_EXECUTABLE) + "' " + args +
                                     " >/dev/null 2>'" + path("stderr") + "'";
         const int raw = std::system(command.c_str());
-        return Run{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(path("stderr"))};
+        return Run{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1,
+                   sgmp::testing::read_bytes(path("stderr"))};
     }
 };
 
@@ -62,7 +57,7 @@ BOOST_AUTO_TEST_CASE(renders_a_png_of_the_requested_size) {
     const Run r = s.run("render '" + s.path("p.xyz") + "' --out '" + s.path("p.png") +
                         "' --size 96x64 --view 20,25 --cut half --colour height --threads 1");
     BOOST_TEST_REQUIRE(r.status == 0, r.err);
-    const std::string png = slurp(s.path("p.png"));
+    const std::string png = sgmp::testing::read_bytes(s.path("p.png"));
     const auto size = sgmp::render::png_size(png);
     BOOST_TEST_REQUIRE(size.has_value());
     BOOST_TEST(size->width == 96U);
@@ -78,7 +73,7 @@ BOOST_AUTO_TEST_CASE(renders_a_png_of_the_requested_size) {
     // An existing output is kept without --force (exit 2), replaced with it.
     BOOST_TEST(s.run("render '" + s.path("p.xyz") + "' --out '" + s.path("p.png") + "'").status ==
                2);
-    BOOST_TEST(slurp(s.path("p.png")) == png);
+    BOOST_TEST(sgmp::testing::read_bytes(s.path("p.png")) == png);
 }
 
 BOOST_AUTO_TEST_CASE(a_missing_renderer_is_exit_1_and_no_file) {

@@ -10,19 +10,14 @@
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/engine/pack_checks.hpp"
 #include "sgmp/engine/relax.hpp"
+#include "test_support.hpp"
 
 using namespace sgmp;
 using namespace sgmp::engine;
 
 namespace {
 
-Particle ball(std::int64_t id, double x, double y, double z, double r) {
-    Particle p;
-    p.id = id;
-    p.center = Vec3(x, y, z);
-    p.radius = r;
-    return p;
-}
+using sgmp::testing::sphere;
 
 RelaxParams frictional(double mu) {
     RelaxParams params;
@@ -42,10 +37,10 @@ std::vector<Particle> tripod(double r, double& top) {
     std::vector<Particle> ps;
     for (int k = 0; k < 3; ++k) {
         const double a = 2.0 * M_PI * k / 3.0;
-        ps.push_back(ball(k + 1, R * std::cos(a), y0, R * std::sin(a), r));
+        ps.push_back(sphere(k + 1, R * std::cos(a), y0, R * std::sin(a), r));
     }
     top = y0 + std::sqrt(d * d - R * R);
-    ps.push_back(ball(4, 0.0, top, 0.0, r));
+    ps.push_back(sphere(4, 0.0, top, 0.0, r));
     return ps;
 }
 
@@ -94,8 +89,8 @@ BOOST_AUTO_TEST_CASE(friction_holds_a_spread_tripod_above_its_threshold_and_not_
             // (it ends on the floor, d/2 above its bottom neighbours' centres at most).
             BOOST_TEST(ps[3].center.y() <= top - 0.3 * d);
         }
-        BOOST_TEST(testing::worst_pair_gap(ps) >= -1e-9 * d);
-        BOOST_TEST(testing::worst_penetration(ps, box) <= 1e-9 * d);
+        BOOST_TEST(engine::testing::worst_pair_gap(ps) >= -1e-9 * d);
+        BOOST_TEST(engine::testing::worst_penetration(ps, box) <= 1e-9 * d);
     }
 }
 
@@ -163,8 +158,9 @@ BOOST_AUTO_TEST_CASE(frictional_packs_keep_the_invariants_over_seeds_and_arrange
                 BOOST_TEST_REQUIRE(pack.particles.size() == count);
                 // 1e-9·d: the invariant of every SGMP pack (the finish leaves 1e-10·d).
                 const double tolerance = 1e-9 * d;
-                BOOST_TEST(testing::worst_pair_gap(pack.particles) >= -tolerance);
-                BOOST_TEST(testing::worst_penetration(pack.particles, Container{}) <= tolerance);
+                BOOST_TEST(engine::testing::worst_pair_gap(pack.particles) >= -tolerance);
+                BOOST_TEST(engine::testing::worst_penetration(pack.particles, Container{}) <=
+                           tolerance);
                 const PackCheck check =
                     check_pack(pack.particles, Container{}, tolerance, INFINITY);
                 BOOST_TEST(check.overlaps == 0u);

@@ -11,19 +11,14 @@
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/engine/pack_checks.hpp"
 #include "sgmp/engine/relax.hpp"
+#include "test_support.hpp"
 
 using namespace sgmp;
 using namespace sgmp::engine;
 
 namespace {
 
-Particle sphere(std::int64_t id, double x, double y, double z, double r) {
-    Particle p;
-    p.id = id;
-    p.center = Vec3(x, y, z);
-    p.radius = r;
-    return p;
-}
+using sgmp::testing::sphere;
 
 RelaxParams frictionless(double shell) {
     RelaxParams params;
@@ -151,7 +146,7 @@ BOOST_AUTO_TEST_CASE(the_finish_pushes_a_sunk_sphere_out_onto_three_touching_sph
         BOOST_TEST(ps[k].center.y() == y0);  // already apart: not moved
     }
     // No overlap deeper than the finish's 1e-10·d (plus rounding).
-    BOOST_TEST(testing::worst_pair_gap(ps) >= -1e-10 * d - 1e-15);
+    BOOST_TEST(engine::testing::worst_pair_gap(ps) >= -1e-10 * d - 1e-15);
     // Free of the three, it cannot sit lower than the apex (1e-9·d: the overlap allowed
     // plus rounding). The pushes go along the contact normals until no overlap is left, so
     // it may end on one of the three slightly above the apex: by at most the overlap it
@@ -191,8 +186,8 @@ BOOST_AUTO_TEST_CASE(relaxed_packs_keep_the_invariants_over_seeds_arrangements_a
                     BOOST_TEST_REQUIRE(pack.particles.size() == count);
                     // 1e-9·d: the invariant of every SGMP pack (the finish leaves 1e-10·d).
                     const double tolerance = 1e-9 * d;
-                    BOOST_TEST(testing::worst_pair_gap(pack.particles) >= -tolerance);
-                    BOOST_TEST(testing::worst_penetration(pack.particles, Container{}) <=
+                    BOOST_TEST(engine::testing::worst_pair_gap(pack.particles) >= -tolerance);
+                    BOOST_TEST(engine::testing::worst_penetration(pack.particles, Container{}) <=
                                tolerance);
                     const PackCheck check =
                         check_pack(pack.particles, Container{}, tolerance, INFINITY);

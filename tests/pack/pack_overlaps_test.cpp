@@ -13,14 +13,13 @@
 #include "sgmp/pack/pack_overlaps.hpp"
 #include "sgmp/pack/random.hpp"
 #include "sgmp/pack/sphere_box_volume.hpp"
+#include "test_support.hpp"
 
 using namespace sgmp;
 
 namespace {
 
-Particle sphere(std::int64_t id, double x, double y, double z, double r) {
-    return Particle{id, Vec3(x, y, z), r, 0};
-}
+using sgmp::testing::sphere;
 
 std::vector<Particle> random_spheres(std::size_t n, double spread, std::uint64_t seed) {
     Random random(seed);

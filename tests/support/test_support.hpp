@@ -8,6 +8,7 @@
 #include <string>
 
 #include "sgmp/pack/input_error.hpp"
+#include "sgmp/pack/particle.hpp"
 
 namespace sgmp::testing {
 
@@ -40,6 +41,11 @@ inline std::string read_bytes(const std::filesystem::path& path) {
 
 inline void write_text(const std::filesystem::path& path, const std::string& text) {
     std::ofstream(path, std::ios::binary) << text;
+}
+
+/// A sphere of radius r centred at (x, y, z), colour bin 0.
+inline Particle sphere(std::int64_t id, double x, double y, double z, double r) {
+    return Particle{id, Vec3(x, y, z), r, 0};
 }
 
 /// The message of the InputError that `read` throws; empty if it throws none.

@@ -105,9 +105,8 @@ int main(int argc, char** argv) {
         options.bins = bins;
         options.space = centre_space(particles, container_of(pack), 0.5 * d);
         options.container = container_of(pack);
-        const std::vector<Index> rank = NeighbourIndex(centres).report_rank();
         start = cpu_seconds();
-        const LocalStructure local = measure_local_structure(particles, rank, origins, options);
+        const LocalStructure local = measure_local_structure(particles, origins, options);
         const double pass = cpu_seconds() - start;
         std::int64_t counted = 0;
         for (const std::int64_t n : local.rdf.pairs) {

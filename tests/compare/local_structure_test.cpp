@@ -110,12 +110,7 @@ Counts brute_force(const Case& c) {
 }
 
 LocalStructure fast(const Case& c) {
-    std::vector<Vec3> centres;
-    for (const Particle& p : c.particles) {
-        centres.push_back(p.center);
-    }
-    return measure_local_structure(c.particles, NeighbourIndex(centres).report_rank(), c.origins,
-                                   c.options);
+    return measure_local_structure(c.particles, c.origins, c.options);
 }
 
 }  // namespace

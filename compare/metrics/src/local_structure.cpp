@@ -9,7 +9,6 @@
 #include "sgmp/compare/ball_cut.hpp"
 #include "sgmp/compare/column_grid.hpp"
 #include "sgmp/compare/parallel.hpp"
-#include "sgmp/compare/spatial_order.hpp"
 
 namespace sgmp::compare {
 namespace {
@@ -154,12 +153,16 @@ struct Setup {
     }
 };
 
-/// A neighbour close enough to be a contact or a bond, with its kd-tree report rank.
+/// A neighbour close enough to be a contact or a bond.
 struct Close {
-    Index rank;
     Index index;  // into the particles
     double distance;
 };
+
+/// Copies of the g(r) histogram that consecutive pairs add to in turn: neighbours met in
+/// a column lie at similar distances, and increments of one counter would wait on each
+/// other's store. Integer counts, so how they are split never changes the total.
+constexpr std::size_t kHistogramLanes = 4;
 
 /// Buffers of one work item, reused for each of its origins.
 struct Scratch {
@@ -168,6 +171,7 @@ struct Scratch {
     std::vector<std::int32_t> bin;
     std::vector<Close> close;
     std::vector<int> z;
+    std::vector<std::int64_t> lanes;  // kHistogramLanes × bins, lane-major
 };
 
 /// Fills scratch.squared with the squared distances from c of the grid's centres within
@@ -225,12 +229,12 @@ void count_pairs(const Setup& s, std::size_t m, std::int64_t weight, Scratch& sc
     const auto bins = static_cast<std::uint32_t>(s.bins);
     const auto split_first = static_cast<std::uint32_t>(s.split_first_bin);
     const auto split_bins = static_cast<std::uint32_t>(s.split_bins);
-    std::int64_t* const pairs = part.pairs.data();
+    std::int64_t* const lanes = scratch.lanes.data();
     std::int64_t split_pairs[2] = {0, 0};
     for (std::size_t q = 0; q < m; ++q) {
         const auto b = static_cast<std::uint32_t>(bin[q]);
         if (b < bins) {
-            pairs[b] += weight;
+            lanes[(q % kHistogramLanes) * bins + b] += weight;
         }
         if (b - split_first <= split_bins) {  // unsigned: one compare
             s.split.count(distance[q], split_pairs);
@@ -242,8 +246,8 @@ void count_pairs(const Setup& s, std::size_t m, std::int64_t weight, Scratch& sc
 
 /// Appends to scratch.close the centres of `grid` other than particle i close enough to
 /// it to be a contact or a bond.
-void gather_close(const ColumnGrid& grid, const std::vector<Index>& rank, Index i, const Vec3& c,
-                  const Setup& s, Scratch& scratch) {
+void gather_close(const ColumnGrid& grid, Index i, const Vec3& c, const Setup& s,
+                  Scratch& scratch) {
     grid.for_each_range(c, std::sqrt(s.close_squared), [&](std::size_t begin, std::size_t end) {
         for (std::size_t k = begin; k < end; ++k) {
             const double dx = grid.x[k] - c.x();
@@ -251,18 +255,18 @@ void gather_close(const ColumnGrid& grid, const std::vector<Index>& rank, Index 
             const double dz = grid.z[k] - c.z();
             const double q = dx * dx + dy * dy + dz * dz;
             if (q <= s.close_squared && grid.index[k] != i) {
-                scratch.close.push_back({rank[grid.index[k]], grid.index[k], std::sqrt(q)});
+                scratch.close.push_back({grid.index[k], std::sqrt(q)});
             }
         }
     });
 }
 
-/// Z at every tolerance and the Q6 bond sums of one origin, bonds summed in kd-tree report
-/// order (which fixes their rounding).
+/// Z at every tolerance and the Q6 bond sums of one origin, bonds summed in increasing
+/// particle index (which fixes their rounding whatever the grid or the thread count).
 BondSums contacts_and_bonds(const std::vector<Particle>& particles, const Particle& a,
                             const Setup& s, Scratch& scratch) {
     std::sort(scratch.close.begin(), scratch.close.end(),
-              [](const Close& u, const Close& v) { return u.rank < v.rank; });
+              [](const Close& u, const Close& v) { return u.index < v.index; });
     std::fill(scratch.z.begin(), scratch.z.end(), 0);
     BondSums bonds;
     for (const Close& c : scratch.close) {
@@ -392,40 +396,37 @@ std::vector<Index> others(std::size_t n, const std::vector<Index>& subset) {
 }  // namespace
 
 LocalStructure measure_local_structure(const std::vector<Particle>& particles,
-                                       const std::vector<Index>& report_rank,
                                        const std::vector<Index>& origins,
                                        const LocalStructureOptions& options) {
-    if (report_rank.size() != particles.size()) {
-        throw std::invalid_argument("measure_local_structure: one report rank per particle");
-    }
     const Setup s(particles, options);
-    const std::vector<Index> ordered = spatial_order(particles, origins, options.mean_diameter);
     // g(r) counts each pair once: origin–origin pairs from their earlier member in the
     // origins' grid (weight 2, both are origins), origin–other pairs from the origin.
+    // Origins are visited in the grid's stored order (column by column: near in space).
     const double side = kCellSideOverD * options.mean_diameter;
     const ColumnGrid origin_grid(particles, origins, side);
     const ColumnGrid other_grid(particles, others(particles.size(), origins), side);
-    std::vector<Index> position(particles.size(), 0);  // in origin_grid
-    for (std::size_t k = 0; k < origin_grid.index.size(); ++k) {
-        position[origin_grid.index[k]] = static_cast<Index>(k);
-    }
     const Partial total = chunked_reduce(
-        ordered.size(), kOriginsPerChunk, Partial(s.tolerances, options.bins),
+        origin_grid.index.size(), kOriginsPerChunk, Partial(s.tolerances, options.bins),
         [&](Partial& part, std::size_t begin, std::size_t end) {
             Scratch scratch;
             scratch.z.resize(s.tolerances);
+            scratch.lanes.assign(kHistogramLanes * s.bins, 0);
             for (std::size_t o = begin; o < end; ++o) {
-                const Index i = ordered[o];
+                const Index i = origin_grid.index[o];
                 const Particle& a = particles[i];
-                count_pairs(s, gather_near(origin_grid, a.center, s, position[i], scratch), 2,
-                            scratch, part);
+                count_pairs(s, gather_near(origin_grid, a.center, s, o, scratch), 2, scratch, part);
                 count_pairs(s, gather_near(other_grid, a.center, s, ColumnGrid::kAll, scratch), 1,
                             scratch, part);
                 scratch.close.clear();
-                gather_close(origin_grid, report_rank, i, a.center, s, scratch);
-                gather_close(other_grid, report_rank, i, a.center, s, scratch);
+                gather_close(origin_grid, i, a.center, s, scratch);
+                gather_close(other_grid, i, a.center, s, scratch);
                 const BondSums bonds = contacts_and_bonds(particles, a, s, scratch);
                 add_origin(a, bonds, s, options, scratch.z, part);
+            }
+            for (std::size_t l = 0; l < kHistogramLanes; ++l) {
+                for (std::size_t k = 0; k < s.bins; ++k) {
+                    part.pairs[k] += scratch.lanes[l * s.bins + k];
+                }
             }
         },
         [](Partial& sum, const Partial& part) { sum.add(part); });

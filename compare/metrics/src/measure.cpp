@@ -106,7 +106,7 @@ Container container_of(const Pack& pack, std::string* source) {
 }
 
 /// The particles sorted along a Morton curve of cells of side d, so that particles near in
-/// space are near in memory (every pass then walks the kd-tree and the arrays in cache).
+/// space are near in memory (every pass then walks its grids and the arrays in cache).
 std::vector<Particle> spatially_ordered(const std::vector<Particle>& particles, double d) {
     std::vector<Index> all(particles.size());
     for (std::size_t i = 0; i < all.size(); ++i) {
@@ -167,9 +167,6 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
         throw std::invalid_argument("--region '" + describe(m.region) +
                                     "' holds no particle centre");
     }
-    // The kd-tree only fixes the order in which Q6 sums each origin's bonds; it is freed
-    // before the pair pass.
-    const std::vector<Index> report_rank = NeighbourIndex(particles).report_rank();
     stage_times.index = watch.lap();
 
     m.phi = packing_fraction(particles, m.region);
@@ -192,7 +189,7 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     local.space = options.gr_container_space ? container_space(particles, m.container)
                                              : centre_space(particles, m.container, 0.5 * d);
     local.container = m.container;
-    m.local = measure_local_structure(particles, report_rank, origins, local);
+    m.local = measure_local_structure(particles, origins, local);
     if (options.gr_thesis) {
         m.thesis_rdf = thesis_rdf(particles, m.region, m.phi, options.gr_bin_width * d, local.bins);
     }

@@ -51,12 +51,10 @@ struct LocalStructureOptions {
 
 /// One pass over the origins on a ColumnGrid: for each origin its neighbours within
 /// reach = max(g(r) range, contact and bond distances), one fused loop for the g(r) bins,
-/// Z(δ) and the Q6 bonds. `report_rank` (NeighbourIndex::report_rank of the particles'
-/// centres) orders each origin's bonds before they are summed, so Q6 rounds the same as a
-/// kd-tree query would. Work items of a fixed 256 origins are folded in order: results are
-/// bit-identical for any thread count.
+/// Z(δ) and the Q6 bonds. Each origin's bonds are summed in increasing particle index, and
+/// work items of a fixed 256 origins (in the grid's order) are folded in order: results
+/// are bit-identical for any thread count.
 LocalStructure measure_local_structure(const std::vector<Particle>& particles,
-                                       const std::vector<Index>& report_rank,
                                        const std::vector<Index>& origins,
                                        const LocalStructureOptions& options);
 

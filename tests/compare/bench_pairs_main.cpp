@@ -4,8 +4,9 @@
 // Origins are the centres in the control volume, neighbours every particle within the
 // g(r) range 5·d (+ half a bin), as in `sgmp-compare measure`. Times, in CPU seconds of one
 // thread (so the figures hold on a loaded machine):
-//   scan     the candidates of the column grid: squared distances and a count of those
-//            within reach (the memory-bound floor of any pass over these pairs);
+//   scan     the candidates of the pass's column windows (every origin's windows in both
+//            grids, whole): squared distances and a count of those within reach (the
+//            floor of any pass that visits each origin's neighbours);
 //   bins     the same plus the square root and the g(r) histogram;
 //   pass     measure_local_structure itself (g(r), split ratio, Z at six tolerances, Q6).
 // Prints "pairs N", then one "<name> <seconds> s <pairs per second>" line per loop.
@@ -50,53 +51,77 @@ int main(int argc, char** argv) {
             particles.push_back(pack.particles[i]);
         }
         std::vector<Index> origins;
-        std::vector<Vec3> centres;
         for (Index i = 0; i < particles.size(); ++i) {
-            centres.push_back(particles[i].center);
             if (control_volume().contains(particles[i].center)) {
                 origins.push_back(i);
             }
         }
-        const std::vector<Index> ordered = spatial_order(particles, origins, d);
         const std::size_t bins = bins_for(5.0 / 0.02);
         const double width = 0.02 * d;
         const double reach = bin_outer(bins - 1, width);
         const double reach2 = reach * reach;
-        const ColumnGrid grid(particles, 0.5 * d);
+        // The pass's two grids of whole columns; every origin scans all its windows.
+        std::vector<char> is_origin(particles.size(), 0);
+        for (const Index i : origins) {
+            is_origin[i] = 1;
+        }
+        std::vector<Index> rest;
+        for (Index i = 0; i < particles.size(); ++i) {
+            if (is_origin[i] == 0) {
+                rest.push_back(i);
+            }
+        }
+        const double side = kPairPassColumnSide * d;
+        const ColumnGrid origin_grid(particles, origins, side, true);
+        const ColumnGrid other_grid(particles, rest, side, true);
+        const auto for_each_window = [&](auto&& f) {
+            for (std::size_t c = 0; c < origin_grid.columns(); ++c) {
+                const std::size_t begin = origin_grid.column_begin(c);
+                const std::size_t end = origin_grid.column_begin(c + 1);
+                if (begin == end) {
+                    continue;
+                }
+                for (const ColumnGrid* grid : {&origin_grid, &other_grid}) {
+                    grid->for_each_window(origin_grid, begin, end,
+                                          origin_grid.footprint(begin, end), reach, 0,
+                                          [&](std::size_t, std::size_t p, std::size_t from,
+                                              std::size_t to) { f(*grid, p, from, to); });
+                }
+            }
+        };
 
         double start = cpu_seconds();
         std::size_t pairs = 0;
-        for (const Index i : ordered) {
-            const Vec3 c = particles[i].center;
-            grid.for_each_range(c, reach, [&](std::size_t begin, std::size_t end) {
+        for_each_window(
+            [&](const ColumnGrid& grid, std::size_t p, std::size_t from, std::size_t to) {
+                const double ax = origin_grid.x[p];
+                const double ay = origin_grid.y[p];
+                const double az = origin_grid.z[p];
                 std::size_t n = 0;
-                for (std::size_t k = begin; k < end; ++k) {
-                    const double dx = grid.x[k] - c.x();
-                    const double dy = grid.y[k] - c.y();
-                    const double dz = grid.z[k] - c.z();
+                for (std::size_t k = from; k < to; ++k) {
+                    const double dx = grid.x[k] - ax;
+                    const double dy = grid.y[k] - ay;
+                    const double dz = grid.z[k] - az;
                     n += (dx * dx + dy * dy + dz * dz <= reach2) ? 1 : 0;
                 }
                 pairs += n;
             });
-            --pairs;  // itself
-        }
+        pairs -= origins.size();  // each origin itself
         const double scan = cpu_seconds() - start;
 
         start = cpu_seconds();
         std::vector<std::int64_t> histogram(bins + 1, 0);
-        for (const Index i : ordered) {
-            const Vec3 c = particles[i].center;
-            grid.for_each_range(c, reach, [&](std::size_t begin, std::size_t end) {
-                for (std::size_t k = begin; k < end; ++k) {
-                    const double dx = grid.x[k] - c.x();
-                    const double dy = grid.y[k] - c.y();
-                    const double dz = grid.z[k] - c.z();
+        for_each_window(
+            [&](const ColumnGrid& grid, std::size_t p, std::size_t from, std::size_t to) {
+                for (std::size_t k = from; k < to; ++k) {
+                    const double dx = grid.x[k] - origin_grid.x[p];
+                    const double dy = grid.y[k] - origin_grid.y[p];
+                    const double dz = grid.z[k] - origin_grid.z[p];
                     const double q = dx * dx + dy * dy + dz * dz;
                     const auto b = static_cast<std::size_t>(std::sqrt(q) / width + 0.5);
                     ++histogram[std::min(b, bins)];
                 }
             });
-        }
         const double binned = cpu_seconds() - start;
 
         LocalStructureOptions options;

@@ -3,6 +3,7 @@
 // Pair, contact and wall counts are integers and must agree exactly; Q6 sums the same
 // bonds in another order, so it agrees to rounding: 1e-12 (the sums hold ~10³ terms of
 // size ≤ 1, each rounded to 1e-16).
+#include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
@@ -179,6 +180,53 @@ BOOST_AUTO_TEST_CASE(column_grid_ranges_hold_every_centre_of_the_ball) {
                 BOOST_TEST(seen[i] <= 1);  // ranges are disjoint
                 if ((particles[i].center - p).norm() <= radius) {
                     BOOST_TEST(seen[i] == 1);
+                }
+            }
+        }
+    }
+}
+
+BOOST_AUTO_TEST_CASE(column_windows_hold_every_centre_within_the_radius) {
+    // Windows of a grid of whole columns for the columns of another grid over a different
+    // set: for every source centre p, the windows (one per column) are disjoint and hold
+    // every centre within the radius of p.
+    Random random(6);
+    std::vector<Particle> particles(1200);
+    for (auto& p : particles) {
+        p.center = Vec3(random.uniform(-1, 1), random.uniform(0, 0.5), random.uniform(-2, 1));
+    }
+    std::vector<Index> sources;
+    std::vector<Index> targets;
+    for (Index i = 0; i < particles.size(); ++i) {
+        (i % 3 == 0 ? sources : targets).push_back(i);
+    }
+    for (const double side : {0.05, 0.2, 1.0}) {
+        const ColumnGrid source(particles, sources, side, true);
+        const ColumnGrid target(particles, targets, 0.7 * side, true);
+        const double radius = 0.3;
+        for (std::size_t c = 0; c < source.columns(); ++c) {
+            const std::size_t begin = source.column_begin(c);
+            const std::size_t end = source.column_begin(c + 1);
+            BOOST_TEST(std::is_sorted(source.z.begin() + static_cast<std::ptrdiff_t>(begin),
+                                      source.z.begin() + static_cast<std::ptrdiff_t>(end)));
+            if (begin == end) {
+                continue;
+            }
+            std::vector<std::vector<int>> seen(end - begin, std::vector<int>(particles.size(), 0));
+            target.for_each_window(
+                source, begin, end, source.footprint(begin, end), radius, 0,
+                [&](std::size_t, std::size_t p, std::size_t from, std::size_t to) {
+                    for (std::size_t k = from; k < to; ++k) {
+                        ++seen[p - begin][target.index[k]];
+                    }
+                });
+            for (std::size_t p = begin; p < end; ++p) {
+                const Vec3& a = particles[source.index[p]].center;
+                for (const Index j : targets) {
+                    BOOST_TEST(seen[p - begin][j] <= 1);
+                    if ((particles[j].center - a).norm() <= radius) {
+                        BOOST_TEST(seen[p - begin][j] == 1);
+                    }
                 }
             }
         }

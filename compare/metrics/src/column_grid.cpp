@@ -21,11 +21,11 @@ std::vector<Index> every_index(std::size_t n) {
 
 }  // namespace
 
-ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, double side)
-    : ColumnGrid(particles, every_index(particles.size()), side) {}
+ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, double side, bool whole_columns)
+    : ColumnGrid(particles, every_index(particles.size()), side, whole_columns) {}
 
 ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, const std::vector<Index>& members,
-                       double side)
+                       double side, bool whole_columns)
     : side_(side) {
     if (!(side > 0.0) || !std::isfinite(side)) {
         throw std::invalid_argument("the cell side of a column grid must be positive");
@@ -44,7 +44,7 @@ ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, const std::vector
     const double limit = 2.0 * static_cast<double>(n) + 64.0;
     for (;;) {
         double cells = 1.0;
-        for (int a = 0; a < 3; ++a) {
+        for (int a = 0; a < (whole_columns ? 2 : 3); ++a) {
             cells *= std::floor((hi[a] - lo[a]) / side_) + 1.0;
         }
         if (cells <= limit) {
@@ -55,7 +55,9 @@ ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, const std::vector
     std::size_t cells = 1;
     for (int a = 0; a < 3; ++a) {
         origin_[a] = lo[a];
-        dims_[a] = static_cast<std::int64_t>(std::floor((hi[a] - lo[a]) / side_)) + 1;
+        dims_[a] = a == 2 && whole_columns
+                       ? 1
+                       : static_cast<std::int64_t>(std::floor((hi[a] - lo[a]) / side_)) + 1;
         cells *= static_cast<std::size_t>(dims_[a]);
     }
     std::vector<std::uint32_t> cell_of(n);
@@ -83,6 +85,34 @@ ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, const std::vector
         y[k] = p.center.y();
         z[k] = p.center.z();
         index[k] = members[i];
+    }
+    // Each cell's members by z, then index, so that every column is sorted by z.
+    std::vector<std::pair<double, std::uint32_t>> keyed;  // z, position before sorting
+    for (std::size_t c = 0; c < cells; ++c) {
+        const std::size_t begin = start_[c];
+        const std::size_t end = start_[c + 1];
+        if (end - begin < 2 || std::is_sorted(z.begin() + static_cast<std::ptrdiff_t>(begin),
+                                              z.begin() + static_cast<std::ptrdiff_t>(end))) {
+            continue;
+        }
+        keyed.clear();
+        for (std::size_t k = begin; k < end; ++k) {
+            keyed.emplace_back(z[k], static_cast<std::uint32_t>(k));  // k increases with index
+        }
+        std::sort(keyed.begin(), keyed.end());
+        const std::vector<double> xs(x.begin() + static_cast<std::ptrdiff_t>(begin),
+                                     x.begin() + static_cast<std::ptrdiff_t>(end));
+        const std::vector<double> ys(y.begin() + static_cast<std::ptrdiff_t>(begin),
+                                     y.begin() + static_cast<std::ptrdiff_t>(end));
+        const std::vector<Index> is(index.begin() + static_cast<std::ptrdiff_t>(begin),
+                                    index.begin() + static_cast<std::ptrdiff_t>(end));
+        for (std::size_t k = begin; k < end; ++k) {
+            const std::size_t from = keyed[k - begin].second - begin;
+            x[k] = xs[from];
+            y[k] = ys[from];
+            z[k] = keyed[k - begin].first;
+            index[k] = is[from];
+        }
     }
 }
 

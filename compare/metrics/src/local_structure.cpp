@@ -13,11 +13,10 @@
 namespace sgmp::compare {
 namespace {
 
-// Origins per parallel work item. Fixed (never from the thread count), and with it the
-// order of every floating-point sum.
-constexpr std::size_t kOriginsPerChunk = 256;
-constexpr double kCellSideOverD = 0.3;  // of the column grids (0.3: 6 % less CPU than 0.5 or 0.7)
-constexpr std::size_t kMaxZ = 64;       // Z above this is recorded as kMaxZ (never seen in packs)
+// Columns of the origins' grid per parallel work item (~400 origins at 10^6 particles).
+// Fixed (never from the thread count), and with it the order of every floating-point sum.
+constexpr std::size_t kColumnsPerChunk = 64;
+constexpr std::size_t kMaxZ = 64;  // Z above this is recorded as kMaxZ (never seen in packs)
 
 struct Partial {
     std::vector<std::int64_t> z_sum;
@@ -155,7 +154,8 @@ struct Setup {
 
 /// A neighbour close enough to be a contact or a bond.
 struct Close {
-    Index index;  // into the particles
+    std::uint32_t origin;  // position in the origins' grid
+    Index index;           // into the particles
     double distance;
 };
 
@@ -166,110 +166,111 @@ constexpr std::size_t kHistogramLanes = 4;
 
 /// Buffers of one work item, reused for each of its origins.
 struct Scratch {
-    std::vector<double> squared;  // of the candidates within reach
-    std::vector<double> distance;
-    std::vector<std::int32_t> bin;
     std::vector<Close> close;
     std::vector<int> z;
     std::vector<std::int64_t> lanes;  // kHistogramLanes × bins, lane-major
+    std::int64_t split[2] = {0, 0};   // pairs in the split windows
 };
 
-/// Fills scratch.squared with the squared distances from c of the grid's centres within
-/// reach (all, or only those after position `after`, see ColumnGrid::for_each_range), by
-/// branch-free compaction (about half the candidates pass: a branch would mispredict).
-std::size_t gather_near(const ColumnGrid& grid, const Vec3& c, const Setup& s, std::size_t after,
-                        Scratch& scratch) {
-    std::size_t m = 0;
-    const double ax = c.x();
-    const double ay = c.y();
-    const double az = c.z();
-    const double reach_squared = s.reach_squared;
-    const double* const xs = grid.x.data();
-    const double* const ys = grid.y.data();
-    const double* const zs = grid.z.data();
-    grid.for_each_range(
-        c, s.reach,
-        [&](std::size_t begin, std::size_t end) {
-            if (scratch.squared.size() < m + (end - begin)) {
-                scratch.squared.resize(2 * (m + end - begin));
-            }
-            double* __restrict const squared = scratch.squared.data();
-            std::size_t count = m;  // a local: the compiler keeps it in a register
-            for (std::size_t k = begin; k < end; ++k) {
-                const double dx = xs[k] - ax;
-                const double dy = ys[k] - ay;
-                const double dz = zs[k] - az;
-                const double q = dx * dx + dy * dy + dz * dz;
-                squared[count] = q;
-                count += static_cast<std::size_t>(q <= reach_squared);
-            }
-            m = count;
-        },
-        after);
-    return m;
-}
-
-/// Adds `weight` × the g(r) and split-window counts of the m gathered pairs. Distances and
-/// bins first, in a loop the compiler vectorises (bin_of's arithmetic, truncated by a
-/// 32-bit conversion: the same value for bins below 2³¹), then the counts.
-void count_pairs(const Setup& s, std::size_t m, std::int64_t weight, Scratch& scratch,
-                 Partial& part) {
-    if (scratch.distance.size() < m) {
-        scratch.distance.resize(scratch.squared.size());
-        scratch.bin.resize(scratch.squared.size());
-    }
-    const double* __restrict const squared = scratch.squared.data();
-    double* __restrict const distance = scratch.distance.data();
-    std::int32_t* __restrict const bin = scratch.bin.data();
-    const double per_width = s.per_width;
-    for (std::size_t q = 0; q < m; ++q) {
-        distance[q] = std::sqrt(squared[q]);
-        bin[q] = static_cast<std::int32_t>(distance[q] * per_width + 0.5);
-    }
+/// Adds `weight` × the g(r) and split-window counts of the pairs of centre a with
+/// the grid's centres at positions [from, to) within reach. Consecutive positions
+/// count into different histogram lanes; bin_of's arithmetic truncated by a 32-bit
+/// conversion gives the same value for bins below 2³¹.
+void count_window(const ColumnGrid& grid, const double (&a)[3], std::size_t from, std::size_t to,
+                  std::int64_t weight, const Setup& s, Scratch& scratch) {
     const auto bins = static_cast<std::uint32_t>(s.bins);
     const auto split_first = static_cast<std::uint32_t>(s.split_first_bin);
     const auto split_bins = static_cast<std::uint32_t>(s.split_bins);
     std::int64_t* const lanes = scratch.lanes.data();
-    std::int64_t split_pairs[2] = {0, 0};
-    for (std::size_t q = 0; q < m; ++q) {
-        const auto b = static_cast<std::uint32_t>(bin[q]);
-        if (b < bins) {
-            lanes[(q % kHistogramLanes) * bins + b] += weight;
-        }
-        if (b - split_first <= split_bins) {  // unsigned: one compare
-            s.split.count(distance[q], split_pairs);
-        }
-    }
-    part.split_pairs[0] += weight * split_pairs[0];
-    part.split_pairs[1] += weight * split_pairs[1];
-}
-
-/// Appends to scratch.close the centres of `grid` other than particle i close enough to
-/// it to be a contact or a bond.
-void gather_close(const ColumnGrid& grid, Index i, const Vec3& c, const Setup& s,
-                  Scratch& scratch) {
-    grid.for_each_range(c, std::sqrt(s.close_squared), [&](std::size_t begin, std::size_t end) {
-        for (std::size_t k = begin; k < end; ++k) {
-            const double dx = grid.x[k] - c.x();
-            const double dy = grid.y[k] - c.y();
-            const double dz = grid.z[k] - c.z();
-            const double q = dx * dx + dy * dy + dz * dz;
-            if (q <= s.close_squared && grid.index[k] != i) {
-                scratch.close.push_back({grid.index[k], std::sqrt(q)});
+    const double* const xs = grid.x.data();
+    const double* const ys = grid.y.data();
+    const double* const zs = grid.z.data();
+    for (std::size_t k = from; k < to; ++k) {
+        const double dx = xs[k] - a[0];
+        const double dy = ys[k] - a[1];
+        const double dz = zs[k] - a[2];
+        const double q = dx * dx + dy * dy + dz * dz;
+        const double distance = std::sqrt(q);
+        const auto b =
+            static_cast<std::uint32_t>(static_cast<std::int32_t>(distance * s.per_width + 0.5));
+        if (q <= s.reach_squared && b < bins) {
+            lanes[(k % kHistogramLanes) * bins + b] += weight;
+            if (b - split_first <= split_bins) {  // unsigned: one compare
+                std::int64_t split[2] = {0, 0};
+                s.split.count(distance, split);
+                scratch.split[0] += weight * split[0];
+                scratch.split[1] += weight * split[1];
             }
         }
+    }
+}
+
+/// The g(r) and split-window counts of the origins of one column of the origins' grid:
+/// pairs with the origins after each of them (weight 2: both are origins) and with every
+/// other particle (weight 1), over the sliding windows of ColumnGrid::for_each_window.
+void count_column_pairs(const ColumnGrid& origin_grid, const ColumnGrid& other_grid,
+                        std::size_t column, const Setup& s, Scratch& scratch) {
+    const std::size_t begin = origin_grid.column_begin(column);
+    const std::size_t end = origin_grid.column_begin(column + 1);
+    if (begin == end) {
+        return;
+    }
+    const std::array<double, 4> footprint = origin_grid.footprint(begin, end);
+    origin_grid.for_each_window(
+        origin_grid, begin, end, footprint, s.reach, column,
+        [&](std::size_t c, std::size_t p, std::size_t from, std::size_t to) {
+            const double a[3] = {origin_grid.x[p], origin_grid.y[p], origin_grid.z[p]};
+            count_window(origin_grid, a, c == column ? std::max(from, p + 1) : from, to, 2, s,
+                         scratch);
+        });
+    other_grid.for_each_window(
+        origin_grid, begin, end, footprint, s.reach, 0,
+        [&](std::size_t, std::size_t p, std::size_t from, std::size_t to) {
+            const double a[3] = {origin_grid.x[p], origin_grid.y[p], origin_grid.z[p]};
+            count_window(other_grid, a, from, to, 1, s, scratch);
+        });
+}
+
+/// Fills scratch.close with the centres close enough to an origin of the column
+/// [begin, end) of the origins' grid to be a contact or a bond (both grids, the origin
+/// itself left out), sorted by origin, then particle index.
+void gather_close(const ColumnGrid& origin_grid, const ColumnGrid& other_grid, std::size_t begin,
+                  std::size_t end, const Setup& s, Scratch& scratch) {
+    scratch.close.clear();
+    if (begin == end) {
+        return;
+    }
+    const std::array<double, 4> footprint = origin_grid.footprint(begin, end);
+    for (const ColumnGrid* grid : {&origin_grid, &other_grid}) {
+        const bool own = grid == &origin_grid;
+        grid->for_each_window(origin_grid, begin, end, footprint, std::sqrt(s.close_squared), 0,
+                              [&](std::size_t, std::size_t p, std::size_t from, std::size_t to) {
+                                  for (std::size_t k = from; k < to; ++k) {
+                                      const double dx = grid->x[k] - origin_grid.x[p];
+                                      const double dy = grid->y[k] - origin_grid.y[p];
+                                      const double dz = grid->z[k] - origin_grid.z[p];
+                                      const double q = dx * dx + dy * dy + dz * dz;
+                                      if (q <= s.close_squared && !(own && k == p)) {
+                                          scratch.close.push_back({static_cast<std::uint32_t>(p),
+                                                                   grid->index[k], std::sqrt(q)});
+                                      }
+                                  }
+                              });
+    }
+    std::sort(scratch.close.begin(), scratch.close.end(), [](const Close& u, const Close& v) {
+        return u.origin != v.origin ? u.origin < v.origin : u.index < v.index;
     });
 }
 
 /// Z at every tolerance and the Q6 bond sums of one origin, bonds summed in increasing
 /// particle index (which fixes their rounding whatever the grid or the thread count).
 BondSums contacts_and_bonds(const std::vector<Particle>& particles, const Particle& a,
-                            const Setup& s, Scratch& scratch) {
-    std::sort(scratch.close.begin(), scratch.close.end(),
-              [](const Close& u, const Close& v) { return u.index < v.index; });
+                            const Setup& s, const Close* first, const Close* last,
+                            Scratch& scratch) {
     std::fill(scratch.z.begin(), scratch.z.end(), 0);
     BondSums bonds;
-    for (const Close& c : scratch.close) {
+    for (const Close* close = first; close != last; ++close) {
+        const Close& c = *close;
         const Particle& b = particles[c.index];
         const double rb = b.radius;
         const double gap = c.distance - a.radius - rb;
@@ -402,32 +403,43 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
     // g(r) counts each pair once: origin–origin pairs from their earlier member in the
     // origins' grid (weight 2, both are origins), origin–other pairs from the origin.
     // Origins are visited in the grid's stored order (column by column: near in space).
-    const double side = kCellSideOverD * options.mean_diameter;
-    const ColumnGrid origin_grid(particles, origins, side);
-    const ColumnGrid other_grid(particles, others(particles.size(), origins), side);
+    const double side = kPairPassColumnSide * options.mean_diameter;
+    const ColumnGrid origin_grid(particles, origins, side, true);
+    const ColumnGrid other_grid(particles, others(particles.size(), origins), side, true);
     const Partial total = chunked_reduce(
-        origin_grid.index.size(), kOriginsPerChunk, Partial(s.tolerances, options.bins),
-        [&](Partial& part, std::size_t begin, std::size_t end) {
+        origin_grid.columns(), kColumnsPerChunk, Partial(s.tolerances, options.bins),
+        [&](Partial& part, std::size_t first, std::size_t last) {
             Scratch scratch;
             scratch.z.resize(s.tolerances);
             scratch.lanes.assign(kHistogramLanes * s.bins, 0);
-            for (std::size_t o = begin; o < end; ++o) {
-                const Index i = origin_grid.index[o];
-                const Particle& a = particles[i];
-                count_pairs(s, gather_near(origin_grid, a.center, s, o, scratch), 2, scratch, part);
-                count_pairs(s, gather_near(other_grid, a.center, s, ColumnGrid::kAll, scratch), 1,
-                            scratch, part);
-                scratch.close.clear();
-                gather_close(origin_grid, i, a.center, s, scratch);
-                gather_close(other_grid, i, a.center, s, scratch);
-                const BondSums bonds = contacts_and_bonds(particles, a, s, scratch);
-                add_origin(a, bonds, s, options, scratch.z, part);
+            for (std::size_t column = first; column < last; ++column) {
+                count_column_pairs(origin_grid, other_grid, column, s, scratch);
+            }
+            for (std::size_t column = first; column < last; ++column) {
+                const std::size_t begin = origin_grid.column_begin(column);
+                const std::size_t end = origin_grid.column_begin(column + 1);
+                gather_close(origin_grid, other_grid, begin, end, s, scratch);
+                const Close* close = scratch.close.data();
+                const Close* const close_end = close + scratch.close.size();
+                for (std::size_t o = begin; o < end; ++o) {
+                    const Close* next = close;
+                    while (next != close_end && next->origin == o) {
+                        ++next;
+                    }
+                    const Particle& a = particles[origin_grid.index[o]];
+                    const BondSums bonds =
+                        contacts_and_bonds(particles, a, s, close, next, scratch);
+                    add_origin(a, bonds, s, options, scratch.z, part);
+                    close = next;
+                }
             }
             for (std::size_t l = 0; l < kHistogramLanes; ++l) {
                 for (std::size_t k = 0; k < s.bins; ++k) {
                     part.pairs[k] += scratch.lanes[l * s.bins + k];
                 }
             }
+            part.split_pairs[0] += scratch.split[0];
+            part.split_pairs[1] += scratch.split[1];
         },
         [](Partial& sum, const Partial& part) { sum.add(part); });
 

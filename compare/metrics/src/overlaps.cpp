@@ -9,9 +9,9 @@
 namespace sgmp::compare {
 namespace {
 
-// Grid positions per parallel work item: fixed, so the depth sums do not depend on the
+// Grid columns per parallel work item: fixed, so the depth sums do not depend on the
 // thread count.
-constexpr std::size_t kPositionsPerChunk = 4096;
+constexpr std::size_t kColumnsPerChunk = 16;
 
 struct Tally {
     std::int64_t count = 0;
@@ -75,44 +75,52 @@ OverlapSummary summarise(Tally tally, std::size_t limit) {
     return summary;
 }
 
-/// Every pair once, from its earlier member in a column grid of all centres (cells of
-/// side 2·r_max), searched within 2·r_max: an overlap needs |c_i − c_j| < r_i + r_j. The
-/// depth is computed as the pack library's overlap search does, so the same pairs count.
+/// Every pair once, from its earlier member in a grid of whole columns of side 2·r_max
+/// over all centres (ColumnGrid::for_each_window), searched within 2·r_max: an overlap
+/// needs |c_i − c_j| < r_i + r_j. The depth is computed as the pack library's overlap
+/// search does, so the same pairs count.
 Tally pair_overlaps(const std::vector<Particle>& particles, double mean_diameter, double floor,
                     std::size_t limit) {
     const double r_max = max_radius(particles);
     if (particles.size() < 2 || !(r_max > 0.0)) {
         return {};
     }
-    const ColumnGrid grid(particles, 2.0 * r_max);
     const double reach = 2.0 * r_max;
+    const ColumnGrid grid(particles, reach, true);
     const double reach_squared = reach * reach * (1.0 + 1e-9);  // the exact test decides
+    const auto pairs_from = [&](Tally& tally, std::size_t p, std::size_t from, std::size_t to) {
+        const Particle& a = particles[grid.index[p]];
+        for (std::size_t m = from; m < to; ++m) {
+            const double dx = grid.x[m] - grid.x[p];
+            const double dy = grid.y[m] - grid.y[p];
+            const double dz = grid.z[m] - grid.z[p];
+            if (dx * dx + dy * dy + dz * dz > reach_squared) {
+                continue;
+            }
+            const Particle& b = particles[grid.index[m]];
+            const double depth = a.radius + b.radius - (a.center - b.center).norm();
+            if (depth > 0.0) {
+                add(tally,
+                    OverlapRecord{std::min(a.id, b.id), std::max(a.id, b.id),
+                                  depth / mean_diameter},
+                    floor, limit);
+            }
+        }
+    };
     return chunked_reduce(
-        grid.index.size(), kPositionsPerChunk, Tally{},
-        [&](Tally& tally, std::size_t begin, std::size_t end) {
-            for (std::size_t k = begin; k < end; ++k) {
-                const Particle& a = particles[grid.index[k]];
-                grid.for_each_range(
-                    a.center, reach,
-                    [&](std::size_t from, std::size_t to) {
-                        for (std::size_t m = from; m < to; ++m) {
-                            const double dx = grid.x[m] - a.center.x();
-                            const double dy = grid.y[m] - a.center.y();
-                            const double dz = grid.z[m] - a.center.z();
-                            if (dx * dx + dy * dy + dz * dz > reach_squared) {
-                                continue;
-                            }
-                            const Particle& b = particles[grid.index[m]];
-                            const double depth = a.radius + b.radius - (a.center - b.center).norm();
-                            if (depth > 0.0) {
-                                add(tally,
-                                    OverlapRecord{std::min(a.id, b.id), std::max(a.id, b.id),
-                                                  depth / mean_diameter},
-                                    floor, limit);
-                            }
-                        }
-                    },
-                    k);
+        grid.columns(), kColumnsPerChunk, Tally{},
+        [&](Tally& tally, std::size_t first, std::size_t last) {
+            for (std::size_t column = first; column < last; ++column) {
+                const std::size_t begin = grid.column_begin(column);
+                const std::size_t end = grid.column_begin(column + 1);
+                if (begin == end) {
+                    continue;
+                }
+                grid.for_each_window(
+                    grid, begin, end, grid.footprint(begin, end), reach, column,
+                    [&](std::size_t c, std::size_t p, std::size_t from, std::size_t to) {
+                        pairs_from(tally, p, c == column ? std::max(from, p + 1) : from, to);
+                    });
             }
         },
         [&](Tally& total, const Tally& part) { merge(total, part, limit); });

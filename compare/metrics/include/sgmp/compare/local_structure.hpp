@@ -49,11 +49,17 @@ struct LocalStructureOptions {
     Container container;  // for wall contacts
 };
 
-/// One pass over the origins on a ColumnGrid: for each origin its neighbours within
-/// reach = max(g(r) range, contact and bond distances), one fused loop for the g(r) bins,
-/// Z(δ) and the Q6 bonds. Each origin's bonds are summed in increasing particle index, and
-/// work items of a fixed 256 origins (in the grid's order) are folded in order: results
-/// are bit-identical for any thread count.
+/// Side of the pass's grid columns, over d: 1.6 took 18 % less CPU than 0.8 and 7 % less
+/// than 1.2 or 2.2 on the 10⁶ loose-random pack (windows of ~20 candidates).
+inline constexpr double kPairPassColumnSide = 1.6;
+
+/// One pass over the origins on two grids of whole columns (ColumnGrid::for_each_window),
+/// one of the origins and one of the other particles, column of origins by column:
+/// g(r) and the split windows count each origin–origin pair once, from its earlier member
+/// (weight 2), and each origin–other pair from the origin, out to the g(r) range; then a
+/// short window search gives each origin's contacts, Z(δ), and its Q6 bonds, summed in
+/// increasing particle index. Work items of a fixed 64 columns are folded in order:
+/// results are bit-identical for any thread count.
 LocalStructure measure_local_structure(const std::vector<Particle>& particles,
                                        const std::vector<Index>& origins,
                                        const LocalStructureOptions& options);

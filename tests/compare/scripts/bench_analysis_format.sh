@@ -17,7 +17,7 @@ row='^  [A-Za-z].{33} +[0-9]+\.[0-9]{3} (s|B|x) +target (<=|>=) +[0-9]+\.[0-9]{3
 rows=$(grep -c -E "$row" <<<"$output" || true)
 [ "$rows" -eq 8 ] || fail "$rows rows of the form 'caption measured target PASS|FAIL', expected 8"
 for caption in 'measurement (all but reading)' overlaps 'Z(delta) + g(r) to 5 d + Q6' \
-    'kd-tree + ordering' phi 'phi(y)' 'peak RSS per particle' 'fused pass / minimal scan rate'; do
+    'spatial ordering' phi 'phi(y)' 'peak RSS per particle' 'fused pass / minimal scan rate'; do
     grep -q -F "  $caption " <<<"$output" || fail "no row '$caption'"
 done
 grep -q -E '^  pairs within 5 d of the [0-9]+ origins: [0-9]+; one core' <<<"$output" ||

@@ -1,6 +1,9 @@
 #include "sgmp/compare/spatial_order.hpp"
 
+#include "sgmp/compare/parallel.hpp"
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -16,6 +19,30 @@ std::uint64_t spread_bits(std::uint64_t v) {
     v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
     v = (v | v << 2) & 0x1249249249249249ULL;
     return v;
+}
+
+/// Sorts by (code, index): eight parts sorted on the worker threads, then merged. The
+/// keys are distinct, so the result is the one sorted order whatever the thread count.
+void sort_in_parts(std::vector<std::pair<std::uint64_t, Index>>& keyed) {
+    constexpr std::size_t kParts = 8;
+    if (keyed.size() < 65536) {
+        std::sort(keyed.begin(), keyed.end());
+        return;
+    }
+    std::array<std::size_t, kParts + 1> bound{};
+    for (std::size_t k = 0; k <= kParts; ++k) {
+        bound[k] = keyed.size() * k / kParts;
+    }
+    const auto at = [&](std::size_t k) {
+        return keyed.begin() + static_cast<std::ptrdiff_t>(bound[k]);
+    };
+    parallel_for(kParts, [&](std::size_t k) { std::sort(at(k), at(k + 1)); });
+    for (std::size_t width = 1; width < kParts; width *= 2) {
+        parallel_for(kParts / (2 * width), [&](std::size_t m) {
+            const std::size_t first = 2 * width * m;
+            std::inplace_merge(at(first), at(first + width), at(first + 2 * width));
+        });
+    }
 }
 
 }  // namespace
@@ -40,7 +67,7 @@ std::vector<Index> spatial_order(const std::vector<Particle>& points, std::vecto
         }
         keyed.emplace_back(code, i);
     }
-    std::sort(keyed.begin(), keyed.end());
+    sort_in_parts(keyed);
     for (std::size_t k = 0; k < keyed.size(); ++k) {
         subset[k] = keyed[k].second;
     }

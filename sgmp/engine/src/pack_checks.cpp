@@ -21,10 +21,8 @@ bool on_container(const Vec3& c, double r, const Container& container, double to
 
 /// Spheres neither on the container nor on a sphere whose centre is not higher (surface
 /// gap ≤ tolerance).
-std::size_t count_unsupported(const std::vector<Particle>& particles, const Container& container,
-                              double tolerance) {
-    const double r_max = max_radius(particles);
-    const CellGrid grid(centres_of(particles), 2.0 * r_max);
+std::size_t count_unsupported(const std::vector<Particle>& particles, const CellGrid& grid,
+                              double r_max, const Container& container, double tolerance) {
     std::size_t unsupported = 0;
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const Vec3& c = particles[i].center;
@@ -42,19 +40,42 @@ std::size_t count_unsupported(const std::vector<Particle>& particles, const Cont
     return unsupported;
 }
 
+/// Pairs overlapping by more than `tolerance` (depth r_i + r_j − |c_i − c_j|, as in
+/// pack_overlaps.hpp) and the most negative gap, on the grid of reach 2·r_max.
+void count_pair_overlaps(const std::vector<Particle>& particles, const CellGrid& grid,
+                         double tolerance, PackCheck& result) {
+    double deepest = 0.0;
+    grid.for_each_pair([&](std::size_t i, std::size_t j, double) {
+        const Particle& a = particles[i];
+        const Particle& b = particles[j];
+        const double depth = a.radius + b.radius - (a.center - b.center).norm();
+        if (depth > 0.0) {
+            result.overlaps += depth > tolerance ? 1 : 0;
+            deepest = std::max(deepest, depth);
+        }
+    });
+    result.worst_gap = deepest > 0.0 ? -deepest : 0.0;
+}
+
 }  // namespace
 
+// One cell grid of side 2·r_max serves the pair overlaps and the supports.
 PackCheck check_pack(const std::vector<Particle>& particles, const Container& container,
                      double overlap_tolerance, double support_tolerance) {
     PackCheck result;
     if (particles.empty()) {
         return result;
     }
-    const OverlapCount count = count_overlaps(particles, container, overlap_tolerance);
-    result.overlaps = count.pairs;
-    result.worst_gap = count.max_pair > 0.0 ? -count.max_pair : 0.0;
-    result.outside = count.walls;
-    result.unsupported = count_unsupported(particles, container, support_tolerance);
+    const double r_max = max_radius(particles);
+    const CellGrid grid(centres_of(particles), 2.0 * r_max);
+    if (particles.size() >= 2 && r_max > 0.0) {
+        count_pair_overlaps(particles, grid, overlap_tolerance, result);
+    }
+    for (const Particle& p : particles) {
+        const double depth = container.penetration(p.center, p.radius);
+        result.outside += depth > 0.0 && depth > overlap_tolerance ? 1 : 0;
+    }
+    result.unsupported = count_unsupported(particles, grid, r_max, container, support_tolerance);
     return result;
 }
 

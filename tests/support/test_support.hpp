@@ -1,7 +1,10 @@
 #pragma once
 // Helpers shared by the test suites: scratch directories under the build tree, reading
-// files back, and the message of an InputError.
+// files back, running a command as a user would, and the message of an InputError.
 
+#include <sys/wait.h>
+
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -41,6 +44,24 @@ inline std::string read_bytes(const std::filesystem::path& path) {
 
 inline void write_text(const std::filesystem::path& path, const std::string& text) {
     std::ofstream(path, std::ios::binary) << text;
+}
+
+/// What a command printed and how it ended.
+struct CommandRun {
+    int status = -1;  ///< its exit status; -1 when it did not exit (a signal)
+    std::string out;  ///< what it wrote on stdout
+    std::string err;  ///< what it wrote on stderr
+};
+
+/// Runs the shell command line `command` (sh -c, so `cd DIR && …` and `VAR=x …` work) with
+/// stdout and stderr captured in the files `stdout` and `stderr` of `directory`.
+inline CommandRun run_command(const std::string& command, const std::filesystem::path& directory) {
+    const std::filesystem::path out = directory / "stdout";
+    const std::filesystem::path err = directory / "stderr";
+    const std::string line =
+        "{ " + command + "\n} >'" + out.string() + "' 2>'" + err.string() + "'";
+    const int raw = std::system(line.c_str());
+    return CommandRun{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_bytes(out), read_bytes(err)};
 }
 
 /// A sphere of radius r centred at (x, y, z), colour bin 0.

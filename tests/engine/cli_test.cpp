@@ -18,17 +18,12 @@ namespace {
 
 using Run = sgmp::testing::CommandRun;
 
-/// A fresh scratch directory per test case; `run` runs `sgmp ARGS` capturing its output
-/// in the files stdout and stderr there.
-struct Scratch {
-    sgmp::testing::TestDirectory scratch{
-        "engine-cli-" + boost::unit_test::framework::current_test_case().p_name.get()};
-    const fs::path& dir = scratch.path();
-    [[nodiscard]] std::string path(const std::string& name) const { return (dir / name).string(); }
-
-    [[nodiscard]] Run run(const std::string& args) const {
-        return sgmp::testing::run_command(std::string("'") + SGMP_EXECUTABLE + "' " + args, dir);
-    }
+/// A fresh scratch directory per test case; `run` runs `sgmp ARGS` there.
+struct Scratch : sgmp::testing::ProgramScratch {
+    Scratch()
+        : ProgramScratch(
+              "engine-cli-" + boost::unit_test::framework::current_test_case().p_name.get(),
+              SGMP_EXECUTABLE) {}
 };
 
 /// A usage error: exit 2, one line on stderr starting with `expected`, no output file.

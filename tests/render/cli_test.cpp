@@ -18,20 +18,15 @@ namespace {
 using Run = sgmp::testing::CommandRun;
 
 /// A scratch directory holding a 300-sphere pack made by the real `sgmp pack`; `run` runs
-/// `ENV sgmp ARGS` capturing its output in the files stdout and stderr there.
-struct Scratch {
-    sgmp::testing::TestDirectory scratch{
-        "render-cli-" + boost::unit_test::framework::current_test_case().p_name.get()};
-    const fs::path& dir = scratch.path();
-    Scratch() {
+/// `ENV sgmp ARGS` there.
+struct Scratch : sgmp::testing::ProgramScratch {
+    Scratch()
+        : ProgramScratch(
+              "render-cli-" + boost::unit_test::framework::current_test_case().p_name.get(),
+              SGMP_EXECUTABLE) {
         BOOST_REQUIRE(run("pack --count 300 --arrangement loose-random --seed 2 --out '" +
                           path("p.xyz") + "'")
                           .status == 0);
-    }
-    [[nodiscard]] std::string path(const std::string& name) const { return (dir / name).string(); }
-    [[nodiscard]] Run run(const std::string& args, const std::string& env = "") const {
-        return sgmp::testing::run_command(env + " '" + std::string(SGMP_EXECUTABLE) + "' " + args,
-                                          dir);
     }
 };
 

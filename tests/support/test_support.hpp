@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/particle.hpp"
@@ -63,6 +64,28 @@ inline CommandRun run_command(const std::string& command, const std::filesystem:
     const int raw = std::system(line.c_str());
     return CommandRun{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_bytes(out), read_bytes(err)};
 }
+
+/// A fresh scratch directory (TestDirectory) for running one program as a user would.
+class ProgramScratch {
+  public:
+    ProgramScratch(const std::string& name, std::string program)
+        : directory_(name), program_(std::move(program)) {}
+
+    /// The path of `name` in the scratch directory, as text for command lines.
+    [[nodiscard]] std::string path(const std::string& name) const { return (dir / name).string(); }
+    /// Runs `PREFIX 'PROGRAM' ARGS` (the prefix e.g. `VAR=value` or `cd DIR &&`), its
+    /// output captured in the files stdout and stderr of the scratch directory.
+    [[nodiscard]] CommandRun run(const std::string& args, const std::string& prefix = "") const {
+        return run_command(prefix + " '" + program_ + "' " + args, dir);
+    }
+
+  private:
+    TestDirectory directory_;
+    std::string program_;
+
+  public:
+    const std::filesystem::path& dir = directory_.path();  ///< the scratch directory
+};
 
 /// A sphere of radius r centred at (x, y, z), colour bin 0.
 inline Particle sphere(std::int64_t id, double x, double y, double z, double r) {

@@ -49,11 +49,24 @@ void SettledGrid::insert(const Sphere& sphere) {
     const int l = layer_of(sphere.y);
     if (l >= layers_) {
         layers_ = l + 1;
-        cells_.resize(static_cast<std::size_t>(layers_) * nx_ * nz_);
+        while (static_cast<int>(layers_cells_.size()) < layers_) {
+            layers_cells_.push_back(std::make_unique<Cell[]>(static_cast<std::size_t>(nx_) * nz_));
+        }
     }
     const int ix = clamp_index(sphere.x, x_min_, hx_, nx_);
     const int iz = clamp_index(sphere.z, z_min_, hz_, nz_);
-    cells_[(static_cast<std::size_t>(l) * nx_ + ix) * nz_ + iz].push_back(sphere);
+    Cell& cell =
+        layers_cells_[static_cast<std::size_t>(l)][static_cast<std::size_t>(ix) * nz_ + iz];
+    if (cell.count < kInline) {
+        cell.spheres[cell.count] = sphere;
+    } else {
+        if (cell.count == kInline) {
+            cell.spill = static_cast<std::uint32_t>(spill_.size());
+            spill_.emplace_back();
+        }
+        spill_[cell.spill].push_back(sphere);
+    }
+    ++cell.count;
     ++size_;
 }
 

@@ -1,6 +1,7 @@
 #include "pour_command.hpp"
 
 #include "launcher_options.hpp"
+#include "physics_options.hpp"
 
 #include <cstdio>
 #include <iostream>
@@ -83,33 +84,12 @@ CLI::App* add_pour_command(CLI::App& app, PourOptions& o) {
     cmd->add_option("--keep-work", o.keep_work,
                     "Run in this directory and keep it (input script, log, dump); "
                     "default: a temporary directory, removed afterwards");
-    cmd->add_option("--restitution", p.restitution, "Normal coefficient of restitution e")
-        ->capture_default_str();
-    cmd->add_option("--rolling-friction", p.rolling_friction,
-                    "Rolling friction coefficient (constant directional torque)")
-        ->capture_default_str();
     cmd->add_option("--tangential-damping", o.tangential_damping,
                     "Viscous damping of the tangential contact spring, on or off (off for "
                     "exactly frictionless pours: at mu = 0 it still turns the spheres)")
         ->capture_default_str()
         ->check(CLI::IsMember({"on", "off"}));
-    cmd->add_option("--youngs-modulus", p.youngs_modulus,
-                    "Young's modulus E in Pa (must exceed 5e6)")
-        ->capture_default_str();
-    cmd->add_option("--poisson-ratio", p.poisson_ratio, "Poisson's ratio nu")
-        ->capture_default_str();
-    cmd->add_option("--density", p.density, "Particle density in kg/m^3")->capture_default_str();
-    cmd->add_option("--gravity", p.gravity, "Gravitational acceleration in m/s^2 (along -Y)")
-        ->capture_default_str();
-    cmd->add_option("--timestep-fraction", p.timestep_fraction,
-                    "Time step as a fraction of the Rayleigh time")
-        ->capture_default_str();
-    cmd->add_option("--settle-threshold", p.settle_threshold,
-                    "Settled when the translational kinetic energy per particle stays "
-                    "below this times m g d at two consecutive checks")
-        ->capture_default_str();
-    cmd->add_option("--check-time", p.check_time, "Simulated seconds between settling checks")
-        ->capture_default_str();
+    add_physics_options(*cmd, p);
     cmd->add_option("--max-time", p.max_time,
                     "Simulated seconds allowed before the pour counts as not settled "
                     "(the step cap)")

@@ -1,6 +1,7 @@
 #include "settle_command.hpp"
 
 #include "launcher_options.hpp"
+#include "physics_options.hpp"
 #include "pour_command.hpp"
 
 #include <cmath>
@@ -26,6 +27,7 @@ StartPositions start_from(const Pack& pack, const std::string& path, PourParamet
     const double r = pack.particles.front().radius;
     StartPositions start;
     start.name = "pack";
+    start.penetration_allowed_over_d = kMaxSettledPenetrationOverD;
     for (const Particle& particle : pack.particles) {
         if (std::abs(particle.radius - r) > 1e-9 * r) {
             throw std::invalid_argument(path +
@@ -73,6 +75,7 @@ CLI::App* add_settle_command(CLI::App& app, SettleOptions& o) {
     cmd->add_option("--max-time", p.max_time,
                     "Simulated seconds allowed before the run counts as not settled")
         ->capture_default_str();
+    add_physics_options(*cmd, p);
     cmd->add_option("--keep-work", o.keep_work, "Run in this directory and keep it");
     cmd->add_option("--liggghts", o.request.liggghts, "LIGGGHTS program (name on PATH or path)")
         ->capture_default_str();

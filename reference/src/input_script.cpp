@@ -85,6 +85,8 @@ std::string pour_script(const PourParameters& p, double start_top) {
         {"seed_distribution", std::to_string(seeds.distribution)},
         {"seed_insert", std::to_string(seeds.insertion)},
         {"arrangement", p.arrangement.value_or("")},
+        // LIGGGHTS refuses E above 1e9 Pa in SI units unless told the particles are hard.
+        {"hard_particles", p.youngs_modulus > 1e9 ? "hard_particles  yes" : "# E <= 1e9 Pa"},
     };
     const std::string& start_template =
         embedded_template(p.arrangement ? "start-arrangement.in" : "start-cloud.in");

@@ -135,8 +135,9 @@ void check_start(const PourRequest& request) {
     }
     const Container container;
     const double r = request.parameters.diameter() / 2.0;
+    const double allowed = request.start->penetration_allowed_over_d * 2.0 * r + 1e-9 * r;
     for (std::size_t i = 0; i < centers.size(); ++i) {
-        if (container.penetration(centers[i], r) > 1e-9 * r) {
+        if (container.penetration(centers[i], r) > allowed) {
             throw PourError("arrangement " + request.start->name + ": sphere " +
                             std::to_string(i + 1) + " lies outside the container");
         }

@@ -63,6 +63,35 @@ BOOST_AUTO_TEST_CASE(a_relaxed_sgmp_pack_of_300_settles_from_where_it_is) {
     fs::remove_all(dir);
 }
 
+BOOST_AUTO_TEST_CASE(a_stored_dem_pour_settles_again_with_stiffer_contacts) {
+    // A DEM pour keeps its soft wall contacts (up to 0.006 d): settle must start from it.
+    const fs::path dir = testing::fresh_directory("sgmp-settle-dem");
+    const fs::path start_file = fs::path(SGMP_REFERENCE_DATA) / "n0150-mu0.5-seed1.xyz.gz";
+    const Pack start = read_pack_file(start_file);
+    const double d = *start.metadata.get_number("diameter");
+    BOOST_TEST_REQUIRE(count_overlaps(start.particles, Container{}, 0.0).max_wall > 1e-6 * d);
+    const fs::path out = dir / "stiff.xyz";
+    const auto run = run_reference({"settle", start_file.string(), "--friction", "0.5",
+                                    "--youngs-modulus", "1.6e10", "--out", out.string(),
+                                    "--quiet"});
+    BOOST_TEST_INFO(run.stderr_text);
+    BOOST_TEST_REQUIRE(run.exit_code == 0);
+    const Pack pack = read_pack_file(out);
+    BOOST_TEST(*pack.metadata.get_number("youngs_modulus_pa") == 1.6e10);
+    BOOST_TEST(pack.metadata.get("start_generator").value_or("") == "liggghts");
+    // 16× stiffer Hertz contacts overlap 16^(2/3) ≈ 6.3× less: the deepest pair and wall
+    // overlaps fall (the stored pour's are about 0.004 d; bound: half of the start's).
+    const OverlapCount before = count_overlaps(start.particles, Container{}, 0.0);
+    const OverlapCount after = count_overlaps(pack.particles, Container{}, 0.0);
+    BOOST_TEST(after.max_pair < 0.5 * before.max_pair);
+    BOOST_TEST(after.max_wall < 0.5 * before.max_wall);
+    // A settled frictional bed does not rearrange: φ of the control volume moves by less
+    // than 0.01 (the seed spread of φ at N = 150 is about 0.01).
+    BOOST_TEST(std::abs(packing_fraction(pack, control_volume()) -
+                        packing_fraction(start, control_volume())) < 0.01);
+    fs::remove_all(dir);
+}
+
 BOOST_AUTO_TEST_CASE(settle_refuses_unequal_spheres_and_a_missing_friction) {
     const fs::path dir = testing::fresh_directory("sgmp-settle-refusals");
     engine::PackRequest request;

@@ -40,6 +40,10 @@ struct StartPositions {
     std::string name;
     std::vector<Vec3> centers;
     std::vector<int> colours;  ///< empty: colours drawn from the ten bins
+    /// How far a start sphere may reach through a wall or the floor, over d: 0 (up to
+    /// rounding) for an SGMP arrangement; a settled pour's bound when the start is a pack
+    /// file, whose DEM pours keep their soft wall contacts (up to 0.006 d in the stored set).
+    double penetration_allowed_over_d = 0.0;
 };
 
 struct PourRequest {

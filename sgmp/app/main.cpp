@@ -35,110 +35,135 @@ namespace {
 using namespace sgmp;
 using namespace sgmp::engine;
 
-/// Raw option values as typed; turned into a PackRequest (with one-line errors) later.
+/// The command line's values. Options bind straight to the request (its defaults are the
+/// library's, shown by --help); only the values that need a rule across options stay raw.
 struct Options {
     long long count = 0;
-    std::string arrangement;
-    std::uint64_t seed = 1;
     std::string out;
     bool force = false;
-    double phi_target = kThesisPhiTarget;
-    std::string size_modes = "1:1";
-    double circle_factor = 50.0;
-    int sweep_positions = 120;
-    std::string sweep_stages;
-    int lower_neighbours = 10;
-    std::string gap = "largest";
-    std::string fall = "exact";
-    double fall_step = 0.001;
-    std::string contact = "none";
-    double momentum = 0.0;
-    std::string walls = "fix";
-    long stall_moves = 50;
-    long max_moves = 100000;
-    std::string relax = "none";
-    RelaxParams relax_params;
+    PackRequest request;
+    /// --sweep-positions is one stage; --sweep-stages, when given, overrides it.
+    int sweep_positions = ProtocolParams{}.sweep_stages.front();
+    std::optional<std::vector<int>> sweep_stages;
+    /// The first value refused while parsing; reported once parsing is done (so --help
+    /// and missing options come first, then the count's range, as for the other rules).
+    std::optional<std::string> refused;
 };
 
 using cli::UsageError;
 
+/// An option parsed by `parse` straight into `target`; a value it refuses (nullopt) is
+/// kept in `refused` as "NAME VALUE: RULE".
+template <class T, class Parse>
+CLI::Option* add_parsed(CLI::App& app, Options& o, const std::string& name, T& target, Parse parse,
+                        const std::string& rule, const std::string& help) {
+    return app.add_option_function<std::string>(
+        name,
+        [&o, &target, parse, name, rule](const std::string& text) {
+            const auto parsed = parse(text);
+            if (parsed) {
+                target = *parsed;
+            } else if (!o.refused) {
+                o.refused = name + " " + text + ": " + rule;
+            }
+        },
+        help);
+}
+
+/// A choice from an enum's name table bound to `target`; --help shows its default.
+template <class Enum, std::size_t N>
+CLI::Option* add_choice(CLI::App& app, Options& o, const std::string& name, Enum& target,
+                        const NameTable<Enum, N>& table, const std::string& help) {
+    return add_parsed(
+               app, o, name, target,
+               [&table](const std::string& text) { return table.parse(text); },
+               "must be one of " + table.choices(), help)
+        ->default_str(std::string(table.name(target)));
+}
+
 void add_common(CLI::App& app, Options& o) {
+    PackRequest& q = o.request;
     app.add_option("--count", o.count, "number of particles N (1 to 10000000)")->required();
-    app.add_option("--arrangement", o.arrangement,
-                   "starting arrangement: single-column, small-dense, large-dense, loose-random")
+    add_parsed(
+        app, o, "--arrangement", q.arrangement,
+        [](const std::string& text) { return parse_arrangement(text); },
+        "must be one of " + std::string(arrangement_names()),
+        "starting arrangement: single-column, small-dense, large-dense, loose-random")
         ->required();
-    app.add_option("--seed", o.seed,
+    app.add_option("--seed", q.seed,
                    "random seed (colours, loose-random positions, random choices)")
         ->capture_default_str()
         ->check([](const std::string& text) { return sgmp::seed_rule(text); });
     app.add_option("--out", o.out, "output pack file (extended XYZ; .gz compresses)")->required();
     app.add_flag("--force", o.force, "overwrite an existing output file");
-    app.add_option("--phi-target", o.phi_target,
+    app.add_option("--phi-target", q.phi_target,
                    "target packing fraction phi* in (0, 0.74048]; sets the diameter by "
                    "(N/3)(pi/6)d^3 = phi*")
         ->capture_default_str();
-    app.add_option("--size-modes", o.size_modes,
-                   "particle sizes as relative-diameter:number-fraction pairs, e.g. 1:0.7,0.5:0.3; "
-                   "the scale s solves (N/3)(pi/6) sum f_i (a_i s)^3 = phi*")
-        ->capture_default_str();
+    add_parsed(
+        app, o, "--size-modes", q.size_modes,
+        [](const std::string& text) { return parse_size_modes(text); },
+        "must be positive diameter:fraction pairs, e.g. 1:0.7,0.5:0.3",
+        "particle sizes as relative-diameter:number-fraction pairs, e.g. 1:0.7,0.5:0.3; "
+        "the scale s solves (N/3)(pi/6) sum f_i (a_i s)^3 = phi*")
+        ->default_str(size_modes_to_string(q.size_modes));
 }
 
 void add_protocol(CLI::App& app, Options& o) {
-    app.add_option("--circle-factor", o.circle_factor,
+    ProtocolParams& p = o.request.protocol;
+    app.add_option("--circle-factor", p.circle_factor,
                    "circle factor F > 1: sweep radius = d/F (length units of the control volume)")
         ->capture_default_str();
     app.add_option("--sweep-positions", o.sweep_positions,
                    "positions tested on the sweep circle (>= 3; 120 = every 3 degrees)")
         ->capture_default_str();
-    app.add_option("--sweep-stages", o.sweep_stages,
-                   "multi-stage sweep, increasing counts such as 8,120,720: a stage is tried "
-                   "only when the previous one found no free position (overrides "
-                   "--sweep-positions)")
+    add_parsed(
+        app, o, "--sweep-stages", o.sweep_stages,
+        [](const std::string& text) { return parse_stages(text); },
+        "must be comma-separated whole numbers, e.g. 8,120,720",
+        "multi-stage sweep, increasing counts such as 8,120,720: a stage is tried "
+        "only when the previous one found no free position (overrides "
+        "--sweep-positions)")
         ->check([](const std::string& text) {
             return text.empty() ? "must list at least one count, e.g. 8,120,720" : "";
         });
-    app.add_option("--lower-neighbours", o.lower_neighbours,
+    app.add_option("--lower-neighbours", p.lower_neighbours,
                    "size of the lower columnar neighbour list (>= 1; recorded, does not change "
                    "results: the fall scans the whole column below)")
         ->capture_default_str();
-    app.add_option("--gap", o.gap, "free arc to move toward: largest | random")
-        ->capture_default_str();
-    app.add_option("--fall", o.fall,
-                   "fall mode: exact (jump to the first contact; ends touching) | step (thesis "
-                   "steps of --fall-step; ends less than one step above the contact)")
-        ->capture_default_str();
-    app.add_option("--fall-step", o.fall_step,
+    add_choice(app, o, "--gap", p.gap, gap_rules(), "free arc to move toward: largest | random");
+    add_choice(app, o, "--fall", p.fall, fall_modes(),
+               "fall mode: exact (jump to the first contact; ends touching) | step (thesis "
+               "steps of --fall-step; ends less than one step above the contact)");
+    app.add_option("--fall-step", p.fall_step,
                    "downward increment of the step fall, 0 < step < d (control-volume units)")
         ->capture_default_str();
-    app.add_option("--contact", o.contact,
-                   "contact model for resting particles: none | settle (drop onto the support "
-                   "and roll down over it to a second contact) | roll (roll on down to a stable "
-                   "rest on three spheres, or the floor or a wall)")
-        ->capture_default_str();
-    app.add_option("--momentum", o.momentum,
+    add_choice(app, o, "--contact", p.contact, contact_models(),
+               "contact model for resting particles: none | settle (drop onto the support "
+               "and roll down over it to a second contact) | roll (roll on down to a stable "
+               "rest on three spheres, or the floor or a wall)");
+    app.add_option("--momentum", p.momentum,
                    "momentum weight m in [0, 1): move toward (1-m)*bisector + m*previous move")
         ->capture_default_str();
-    app.add_option("--walls", o.walls,
-                   "side walls: fix (a particle a move brings to a wall stops there, thesis) | "
-                   "block (walls are obstacles like particles)")
-        ->capture_default_str();
-    app.add_option("--stall-moves", o.stall_moves,
+    add_choice(app, o, "--walls", p.walls, wall_rules(),
+               "side walls: fix (a particle a move brings to a wall stops there, thesis) | "
+               "block (walls are obstacles like particles)");
+    app.add_option("--stall-moves", p.stall_moves,
                    "a particle making this many consecutive moves without falling rests (>= 1)")
         ->capture_default_str();
-    app.add_option("--max-moves", o.max_moves,
+    app.add_option("--max-moves", p.max_moves,
                    "bound on sweep-and-move cycles per particle (>= 1); a particle reaching it "
                    "rests where its last fall left it")
         ->capture_default_str();
 }
 
 void add_relax(CLI::App& app, Options& o) {
-    RelaxParams& r = o.relax_params;
-    app.add_option("--relax", o.relax,
-                   "after deposition: none | frictionless (relax the whole pack under gravity "
-                   "to an equilibrium of frictionless soft spheres by FIRE energy "
-                   "minimisation, then finish it as hard spheres) | frictional (the same "
-                   "with Coulomb friction: tangential springs capped at mu*F_n)")
-        ->capture_default_str();
+    RelaxParams& r = o.request.relax;
+    add_choice(app, o, "--relax", r.mode, relax_modes(),
+               "after deposition: none | frictionless (relax the whole pack under gravity "
+               "to an equilibrium of frictionless soft spheres by FIRE energy "
+               "minimisation, then finish it as hard spheres) | frictional (the same "
+               "with Coulomb friction: tangential springs capped at mu*F_n)");
     app.add_option("--relax-stiffness", r.stiffness,
                    "contact stiffness k of the first relaxation stage in m*g/d (a contact "
                    "carrying one weight m*g overlaps by d/k)")
@@ -173,56 +198,19 @@ void add_relax(CLI::App& app, Options& o) {
         ->capture_default_str();
 }
 
-template <class T>
-T parse_choice(std::optional<T> parsed, const std::string& option, const std::string& value,
-               const std::string& choices) {
-    if (!parsed) {
-        throw UsageError("--" + option + " " + value + ": must be one of " + choices);
-    }
-    return *parsed;
-}
-
+/// The request of the command line: the count's range and the sweep stages checked
+/// here, every other rule by the engine's `validate`.
 PackRequest to_request(const Options& o) {
     if (o.count < 1 || o.count > static_cast<long long>(kMaxCount)) {
         throw ParameterError("count", std::to_string(o.count),
                              "must be between 1 and " + std::to_string(kMaxCount));
     }
-    PackRequest request;
+    if (o.refused) {
+        throw UsageError(*o.refused);
+    }
+    PackRequest request = o.request;
     request.count = static_cast<std::size_t>(o.count);
-    request.arrangement = parse_choice(parse_arrangement(o.arrangement), "arrangement",
-                                       o.arrangement, std::string(arrangement_names()));
-    request.seed = o.seed;
-    request.phi_target = o.phi_target;
-    const auto modes = parse_size_modes(o.size_modes);
-    if (!modes) {
-        throw UsageError("--size-modes " + o.size_modes +
-                         ": must be positive diameter:fraction pairs, e.g. 1:0.7,0.5:0.3");
-    }
-    request.size_modes = *modes;
-    ProtocolParams& p = request.protocol;
-    p.circle_factor = o.circle_factor;
-    p.sweep_stages = {o.sweep_positions};
-    if (!o.sweep_stages.empty()) {
-        const auto stages = parse_stages(o.sweep_stages);
-        if (!stages) {
-            throw UsageError("--sweep-stages " + o.sweep_stages +
-                             ": must be comma-separated whole numbers, e.g. 8,120,720");
-        }
-        p.sweep_stages = *stages;
-    }
-    p.lower_neighbours = o.lower_neighbours;
-    p.gap = parse_choice(parse_gap_rule(o.gap), "gap", o.gap, gap_rules().choices());
-    p.fall = parse_choice(parse_fall_mode(o.fall), "fall", o.fall, fall_modes().choices());
-    p.fall_step = o.fall_step;
-    p.contact = parse_choice(parse_contact_model(o.contact), "contact", o.contact,
-                             contact_models().choices());
-    p.momentum = o.momentum;
-    p.walls = parse_choice(parse_wall_rule(o.walls), "walls", o.walls, wall_rules().choices());
-    p.stall_moves = o.stall_moves;
-    p.max_moves = o.max_moves;
-    request.relax = o.relax_params;
-    request.relax.mode =
-        parse_choice(parse_relax_mode(o.relax), "relax", o.relax, relax_modes().choices());
+    request.protocol.sweep_stages = o.sweep_stages.value_or(std::vector<int>{o.sweep_positions});
     validate(request);
     return request;
 }

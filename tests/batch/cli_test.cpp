@@ -20,34 +20,23 @@ using namespace sgmp::batch;
 
 namespace {
 
-struct Run {
-    int status = -1;
-    std::string out;
-    std::string err;
-};
+using Run = sgmp::testing::CommandRun;
 
 struct Scratch {
-    fs::path dir;
-    Scratch() {
-        dir = fs::temp_directory_path() /
-              ("sgmp-batch-test-" + std::to_string(::getpid()) + "-" +
-               boost::unit_test::framework::current_test_case().p_name.get());
-        fs::remove_all(dir);
-        fs::create_directories(dir / "io");
-    }
-    ~Scratch() { fs::remove_all(dir); }
+    sgmp::testing::TestDirectory scratch{
+        "batch-cli-" + boost::unit_test::framework::current_test_case().p_name.get()};
+    const fs::path& dir = scratch.path();
+    Scratch() { fs::create_directories(dir / "io"); }
     [[nodiscard]] fs::path path(const std::string& name) const { return dir / name; }
 
-    /// Runs `prefix sgmp batch ARGS` in `cwd` (relative to the scratch directory).
-    Run batch(const std::string& args, const std::string& cwd = "io",
-              const std::string& prefix = "") const {
+    /// Runs `prefix sgmp batch ARGS` in `cwd` (relative to the scratch directory), its
+    /// output captured in the files stdout and stderr of the scratch directory.
+    [[nodiscard]] Run batch(const std::string& args, const std::string& cwd = "io",
+                            const std::string& prefix = "") const {
         fs::create_directories(dir / cwd);
-        const std::string command =
-            "cd '" + (dir / cwd).string() + "' && " + prefix + " '" + SGMP_EXECUTABLE + "' batch " +
-            args + " >'" + path("stdout").string() + "' 2>'" + path("stderr").string() + "'";
-        const int raw = std::system(command.c_str());
-        return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, sgmp::testing::read_bytes(path("stdout")),
-                sgmp::testing::read_bytes(path("stderr"))};
+        return sgmp::testing::run_command("cd '" + (dir / cwd).string() + "' && " + prefix + " '" +
+                                              SGMP_EXECUTABLE + "' batch " + args,
+                                          dir);
     }
 
     /// Every file under `cwd`, relative paths, sorted.

@@ -1,6 +1,5 @@
 // The command line: bad input gives one line on stderr and a non-zero status (2 for usage),
 // and never leaves a half-written output directory.
-#include <sys/wait.h>
 
 #include <boost/test/unit_test.hpp>
 #include <cstdlib>
@@ -20,31 +19,18 @@ namespace {
 
 const fs::path kTool = fs::path(SGMP_BINARY_DIR) / "compare" / "sgmp-compare";
 
-fs::path scratch() {
-    static const fs::path dir = [] {
-        const fs::path d = fs::path(SGMP_BINARY_DIR) / "compare-test-scratch" / "cli";
-        fs::remove_all(d);
-        fs::create_directories(d);
-        return d;
-    }();
-    return dir;
+/// One scratch directory for the whole suite (the cases build on each other's files).
+const fs::path& scratch() {
+    static const sgmp::testing::TestDirectory dir("compare-cli");
+    return dir.path();
 }
 
-struct Result {
-    int status = -1;
-    std::string err;
-};
+using Result = sgmp::testing::CommandRun;
 
+/// Runs `sgmp-compare ARGUMENTS` in the scratch directory.
 Result run(const std::string& arguments) {
-    const fs::path err = scratch() / "stderr.txt";
-    const std::string command = "cd '" + scratch().string() + "' && '" + kTool.string() + "' " +
-                                arguments + " >/dev/null 2>'" + err.string() + "'";
-    const int raw = std::system(command.c_str());
-    Result result;
-    result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    std::ifstream in(err);
-    result.err.assign(std::istreambuf_iterator<char>(in), {});
-    return result;
+    return sgmp::testing::run_command(
+        "cd '" + scratch().string() + "' && '" + kTool.string() + "' " + arguments, scratch());
 }
 
 void write(const std::string& name, const std::string& text) {
@@ -97,20 +83,15 @@ BOOST_AUTO_TEST_CASE(header_prints_the_provenance_keys_scripts_read) {
     write("keys.xyz",
           "1\nProperties=id:I:1:pos:R:3:radius:R:1:color:I:1 generator=test seed=7 "
           "label=\"a b\"\n1 0 0 0 0.05 0\n");
-    const std::string out = (scratch() / "header.txt").string();
-    const auto header = [&](const std::string& arguments) {
-        const std::string command = "cd '" + scratch().string() + "' && '" + kTool.string() +
-                                    "' header " + arguments + " >'" + out + "' 2>/dev/null";
-        const int raw = std::system(command.c_str());
-        return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    };
-    BOOST_TEST(header("keys.xyz seed label") == 0);
-    BOOST_TEST(sgmp::testing::read_bytes(out) == "7\na b\n");
-    BOOST_TEST(header("keys.xyz seed absent --allow-missing") == 0);
-    BOOST_TEST(sgmp::testing::read_bytes(out) == "7\n\n");
-    BOOST_TEST(header("keys.xyz absent") == 1);              // a missing key is an input error
+    const Result both = run("header keys.xyz seed label");
+    BOOST_TEST(both.status == 0);
+    BOOST_TEST(both.out == "7\na b\n");
+    const Result allowed = run("header keys.xyz seed absent --allow-missing");
+    BOOST_TEST(allowed.status == 0);
+    BOOST_TEST(allowed.out == "7\n\n");
+    BOOST_TEST(run("header keys.xyz absent").status == 1);   // a missing key is an input error
     write("cut.xyz", "2\n" + kHeader + "1 0 0 0 0.05 0\n");  // truncated: not reusable
-    BOOST_TEST(header("cut.xyz generator") == 1);
+    BOOST_TEST(run("header cut.xyz generator").status == 1);
     const Result r = run("header keys.xyz absent");
     BOOST_TEST(r.err == "sgmp-compare: keys.xyz:2: the header has no key 'absent'\n");
 }
@@ -240,8 +221,7 @@ BOOST_AUTO_TEST_CASE(measure_and_report_write_complete_directories) {
          {"a.metrics.json", "a.g_r.csv", "a.phi_y.csv", "a.p_z.csv", "b.metrics.json"}) {
         BOOST_TEST(fs::exists(scratch() / "m" / file), file);
     }
-    std::ifstream json(scratch() / "m" / "a.metrics.json");
-    const std::string text{std::istreambuf_iterator<char>(json), {}};
+    const std::string text = sgmp::testing::read_bytes(scratch() / "m" / "a.metrics.json");
     for (const char* key :
          {"\"count\"", "\"diameter\"", "\"phi\"", "\"overlaps\"", "\"overlap_max_over_d\"",
           "\"z_mean_tol_0\"", "\"z_mean_tol_1e-6\"", "\"z_mean_tol_1e-3\"", "\"z_mean_tol_1e-2\"",
@@ -252,8 +232,7 @@ BOOST_AUTO_TEST_CASE(measure_and_report_write_complete_directories) {
     // Kept without --force, replaced with it; same inputs give the same bytes.
     BOOST_TEST(run("measure a.xyz --out m").status == 2);
     BOOST_TEST(run("measure a.xyz b.xyz --out m2 --threads 1").status == 0);
-    std::ifstream again(scratch() / "m2" / "a.metrics.json");
-    const std::string text2{std::istreambuf_iterator<char>(again), {}};
+    const std::string text2 = sgmp::testing::read_bytes(scratch() / "m2" / "a.metrics.json");
     BOOST_TEST(text2.find("\"phi\"") != std::string::npos);
     BOOST_TEST(run("measure a.xyz --out m --force").status == 0);
     BOOST_TEST(!fs::exists(scratch() / "m" / "b.metrics.json"));

@@ -1,7 +1,6 @@
 // The `sgmp` executable: errors, refusal to overwrite, determinism of the written bytes,
 // config files, the arrange subcommand.
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <boost/test/unit_test.hpp>
 #include <filesystem>
@@ -17,35 +16,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Run {
-    int status = -1;
-    std::string out;
-    std::string err;
-};
+using Run = sgmp::testing::CommandRun;
 
-/// A fresh scratch directory per test case.
-struct Scratch {
-    fs::path dir;
-    Scratch() {
-        dir = fs::temp_directory_path() /
-              ("sgmp-cli-test-" + std::to_string(::getpid()) + "-" +
-               boost::unit_test::framework::current_test_case().p_name.get());
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    ~Scratch() { fs::remove_all(dir); }
-    [[nodiscard]] std::string path(const std::string& name) const { return (dir / name).string(); }
-
-    Run run(const std::string& args) const {
-        const std::string command = std::string("'") + SGMP_EXECUTABLE + "' " + args + " >'" +
-                                    path("stdout") + "' 2>'" + path("stderr") + "'";
-        const int raw = std::system(command.c_str());
-        Run result;
-        result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-        result.out = sgmp::testing::read_bytes(path("stdout"));
-        result.err = sgmp::testing::read_bytes(path("stderr"));
-        return result;
-    }
+/// A fresh scratch directory per test case; `run` runs `sgmp ARGS` there.
+struct Scratch : sgmp::testing::ProgramScratch {
+    Scratch()
+        : ProgramScratch(
+              "engine-cli-" + boost::unit_test::framework::current_test_case().p_name.get(),
+              SGMP_EXECUTABLE) {}
 };
 
 /// A usage error: exit 2, one line on stderr starting with `expected`, no output file.

@@ -15,6 +15,7 @@
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/pack/vtk_format.hpp"
 #include "sgmp/pack/xyz_format.hpp"
+#include "test_support.hpp"
 
 using namespace sgmp;
 namespace fs = std::filesystem;
@@ -55,25 +56,6 @@ void check_same_particles(const Pack& a, const Pack& b) {
 std::size_t overlaps_of(const Pack& pack) {
     const double floor = 1e-9 * *pack.metadata.get_number("diameter");
     return engine::check_pack(pack.particles, container_of(pack), floor, 1e300).overlaps;
-}
-
-struct Scratch {
-    fs::path path = fs::path(SGMP_BINARY_DIR) / "test-scratch" / "interop_round_trip";
-    Scratch() {
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~Scratch() {
-        std::error_code ignored;
-        fs::remove_all(path, ignored);
-    }
-};
-
-std::string bytes_of(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream out;
-    out << in.rdbuf();
-    return out.str();
 }
 
 }  // namespace
@@ -138,39 +120,40 @@ BOOST_AUTO_TEST_CASE(atom_types_follow_the_size_modes) {
 }
 
 BOOST_AUTO_TEST_CASE(the_file_layer_writes_all_or_nothing_and_only_with_force) {
-    Scratch scratch;
+    const sgmp::testing::TestDirectory scratch("interop_round_trip");
     const Pack pack = engine_pack(1);
     for (const PackFormat format : all_pack_formats()) {
-        const fs::path out = scratch.path / ("p" + std::string(extension_of(format)));
+        const fs::path out = scratch.path() / ("p" + std::string(extension_of(format)));
         write_pack_as(out, pack, format, WriteOptions{});
-        const std::string first = bytes_of(out);
+        const std::string first = sgmp::testing::read_bytes(out);
         BOOST_CHECK_THROW(write_pack_as(out, pack, format, WriteOptions{}), std::runtime_error);
         write_pack_as(out, pack, format, WriteOptions{true});
-        BOOST_TEST(bytes_of(out) == first);  // deterministic bytes, compressed ones too
+        BOOST_TEST(sgmp::testing::read_bytes(out) ==
+                   first);  // deterministic bytes, compressed ones too
         if (format != PackFormat::vtk) {
             const Pack back = read_pack_file(out);
             check_same_particles(pack, back);
         }
     }
-    BOOST_TEST(fs::exists(scratch.path / "p.container.vtk"));
+    BOOST_TEST(fs::exists(scratch.path() / "p.container.vtk"));
     BOOST_TEST(container_file_for("a/b.vtk") == fs::path("a/b.container.vtk"));
     // A name that does not match the format, and a pack the format cannot carry: an
     // error naming the format and the field, and no file.
-    BOOST_CHECK_THROW(write_pack_as(scratch.path / "q.xyz", pack, PackFormat::xyz_gz, {}),
+    BOOST_CHECK_THROW(write_pack_as(scratch.path() / "q.xyz", pack, PackFormat::xyz_gz, {}),
                       std::invalid_argument);
     Pack zero = pack;
     zero.particles[0].id = 0;
     try {
-        write_pack_as(scratch.path / "z.data", zero, PackFormat::lammps_data, {});
+        write_pack_as(scratch.path() / "z.data", zero, PackFormat::lammps_data, {});
         BOOST_FAIL("id 0 was written to a data file");
     } catch (const std::invalid_argument& e) {
         BOOST_TEST(std::string(e.what()) ==
                    "format data cannot carry id 0: LAMMPS atom ids must be positive");
     }
-    BOOST_TEST(!fs::exists(scratch.path / "z.data"));
-    BOOST_TEST(!fs::exists(scratch.path / "q.xyz"));
+    BOOST_TEST(!fs::exists(scratch.path() / "z.data"));
+    BOOST_TEST(!fs::exists(scratch.path() / "q.xyz"));
     std::size_t files = 0;
-    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(scratch.path)) {
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(scratch.path())) {
         ++files;
     }
     BOOST_TEST(files == 6u);  // the five formats plus the vtk container, no temporaries

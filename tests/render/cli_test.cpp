@@ -1,8 +1,6 @@
 // `sgmp render`: a real POV-Ray render of a 300-sphere pack has the requested size (read
 // from the PNG's IHDR), a missing renderer is exit 1 and leaves no file, bad options are
 // usage errors (exit 2), an existing output is kept without --force.
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <boost/test/unit_test.hpp>
 #include <filesystem>
@@ -17,32 +15,18 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Run {
-    int status = -1;
-    std::string err;
-};
+using Run = sgmp::testing::CommandRun;
 
-/// A scratch directory holding a 300-sphere pack made by the real `sgmp pack`.
-struct Scratch {
-    fs::path dir;
-    Scratch() {
-        dir = fs::temp_directory_path() /
-              ("sgmp-render-test-" + std::to_string(::getpid()) + "-" +
-               boost::unit_test::framework::current_test_case().p_name.get());
-        fs::remove_all(dir);
-        fs::create_directories(dir);
+/// A scratch directory holding a 300-sphere pack made by the real `sgmp pack`; `run` runs
+/// `ENV sgmp ARGS` there.
+struct Scratch : sgmp::testing::ProgramScratch {
+    Scratch()
+        : ProgramScratch(
+              "render-cli-" + boost::unit_test::framework::current_test_case().p_name.get(),
+              SGMP_EXECUTABLE) {
         BOOST_REQUIRE(run("pack --count 300 --arrangement loose-random --seed 2 --out '" +
                           path("p.xyz") + "'")
                           .status == 0);
-    }
-    ~Scratch() { fs::remove_all(dir); }
-    [[nodiscard]] std::string path(const std::string& name) const { return (dir / name).string(); }
-    [[nodiscard]] Run run(const std::string& args, const std::string& env = "") const {
-        const std::string command = env + " '" + std::string(SGMP_EXECUTABLE) + "' " + args +
-                                    " >/dev/null 2>'" + path("stderr") + "'";
-        const int raw = std::system(command.c_str());
-        return Run{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1,
-                   sgmp::testing::read_bytes(path("stderr"))};
     }
 };
 
@@ -69,7 +53,7 @@ BOOST_AUTO_TEST_CASE(renders_a_png_of_the_requested_size) {
     for (const auto& entry : fs::directory_iterator(s.dir)) {
         files += entry.path().filename().string().find(".tmp") == std::string::npos ? 1 : 0;
     }
-    BOOST_TEST(files == 3U);  // p.xyz, p.png, stderr
+    BOOST_TEST(files == 4U);  // p.xyz, p.png, stdout, stderr
     // An existing output is kept without --force (exit 2), replaced with it.
     BOOST_TEST(s.run("render '" + s.path("p.xyz") + "' --out '" + s.path("p.png") + "'").status ==
                2);

@@ -1,8 +1,6 @@
 // Pictures in the cross-validation report: which packs are pictured (N = 9000 or the
 // largest count with both roles, the lowest seed per group, no variants), and the real
 // `sgmp-compare crossval --pictures` with and without POV-Ray.
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <boost/test/unit_test.hpp>
 #include <filesystem>
@@ -13,6 +11,7 @@
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/render/png_info.hpp"
+#include "test_support.hpp"
 
 namespace fs = std::filesystem;
 using namespace sgmp::compare;
@@ -23,13 +22,6 @@ ManifestEntry entry(Role role, const std::string& group, std::size_t count, std:
     return ManifestEntry{
         role, group,        count,
         seed, std::nullopt, group + "-" + std::to_string(count) + "-" + std::to_string(seed)};
-}
-
-std::string slurp(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
 }
 
 }  // namespace
@@ -62,10 +54,8 @@ BOOST_AUTO_TEST_CASE(the_pictured_packs) {
 }
 
 BOOST_AUTO_TEST_CASE(crossval_pictures_with_and_without_povray) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("sgmp-pictures-test-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const sgmp::testing::TestDirectory scratch("render-crossval-pictures");
+    const fs::path& dir = scratch.path();
     std::string manifest = "role,group,count,seed,seconds,path\n";
     for (const auto& [arrangement, role] :
          {std::pair{sgmp::engine::Arrangement::LooseRandom, "candidate"},
@@ -84,31 +74,32 @@ BOOST_AUTO_TEST_CASE(crossval_pictures_with_and_without_povray) {
     }
     std::ofstream(dir / "manifest.csv") << manifest;
     auto crossval = [&](const std::string& args, const std::string& env) {
-        const std::string command = "cd '" + dir.string() + "' && " + env + " '" + SGMP_COMPARE +
-                                    "' crossval --manifest manifest.csv --no-voronoi " + args +
-                                    " >/dev/null 2>stderr.txt";
-        const int raw = std::system(command.c_str());
-        return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+        return sgmp::testing::run_command(
+                   "cd '" + dir.string() + "' && " + env + " '" + SGMP_COMPARE +
+                       "' crossval --manifest manifest.csv --no-voronoi " + args,
+                   dir)
+            .status;
     };
     BOOST_TEST_REQUIRE(crossval("--pictures --picture-size 64 --out cv", "") == 0);
-    const std::string md = slurp(dir / "cv" / "report.md");
+    const std::string md = sgmp::testing::read_bytes(dir / "cv" / "report.md");
     BOOST_TEST(md.find("\n\n## Pictures\n") != std::string::npos);
-    BOOST_TEST(slurp(dir / "cv" / "index.html").find(">Pictures</h2>") != std::string::npos);
+    BOOST_TEST(sgmp::testing::read_bytes(dir / "cv" / "index.html").find(">Pictures</h2>") !=
+               std::string::npos);
     for (const char* file :
          {"pictures/n300-c1-loose-random.png", "pictures/n300-r2-dem-mu-0.5.png"}) {
-        const std::string png = slurp(dir / "cv" / file);
+        const std::string png = sgmp::testing::read_bytes(dir / "cv" / file);
         const auto size = sgmp::render::png_size(png);
         BOOST_TEST_REQUIRE(size.has_value(), file);
         BOOST_TEST(size->width == 64U);
         BOOST_TEST(size->height == 64U);
         BOOST_TEST(md.find(std::string("(") + file + ")") != std::string::npos, file);
     }
-    const std::string html = slurp(dir / "cv" / "index.html");
+    const std::string html = sgmp::testing::read_bytes(dir / "cv" / "index.html");
     BOOST_TEST(html.find("<img src=\"pictures/n300-c1-loose-random.png\"") != std::string::npos);
 
     // Without POV-Ray the report is still written and says so in one line.
     BOOST_TEST_REQUIRE(crossval("--pictures --out cv-none", "SGMP_POVRAY=") == 0);
-    const std::string none = slurp(dir / "cv-none" / "report.md");
+    const std::string none = sgmp::testing::read_bytes(dir / "cv-none" / "report.md");
     const auto at = none.find("No pictures: POV-Ray was not found");
     BOOST_TEST(at != std::string::npos);
     BOOST_TEST(none.find('\n', at) == none.find(".\n", at) + 1);  // one line
@@ -116,6 +107,6 @@ BOOST_AUTO_TEST_CASE(crossval_pictures_with_and_without_povray) {
     BOOST_TEST(fs::exists(dir / "cv-none" / "index.html"));
     // Pictures are off unless asked for.
     BOOST_TEST_REQUIRE(crossval("--out cv-off", "") == 0);
-    BOOST_TEST(slurp(dir / "cv-off" / "report.md").find("## Pictures") == std::string::npos);
-    fs::remove_all(dir);
+    BOOST_TEST(sgmp::testing::read_bytes(dir / "cv-off" / "report.md").find("## Pictures") ==
+               std::string::npos);
 }

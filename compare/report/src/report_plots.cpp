@@ -150,6 +150,123 @@ std::vector<std::string> write_trend_plots(std::ostringstream& gp, const fs::pat
     return files;
 }
 
+/// A reference curve is dashed.
+std::string style(const PlotCurve& curve) {
+    return curve.reference ? " dt 2" : "";
+}
+
+/// `stem`_`kind`_`k`.dat: the data file of curve k of a panel.
+std::string data_file(const PlotPanel& panel, const std::string& kind, std::size_t k) {
+    return panel.stem + "_" + kind + "_" + std::to_string(k) + ".dat";
+}
+
+/// P(Z) at the two plotted tolerances for a pair of curves; only the headline δ = 1e-2
+/// when more curves share the plot.
+void write_pz_plot(std::ostringstream& gp, const fs::path& plots, const PlotPanel& panel) {
+    const auto& names = coordination_tolerance_names();
+    std::vector<std::size_t> plotted(std::begin(kPlottedPzTolerances),
+                                     std::end(kPlottedPzTolerances));
+    if (panel.curves.size() > 2) {
+        plotted = {kHeadlinePzTolerance};
+    }
+    gp << "set output '" << panel.stem << "_pz.svg'\nset title " << quoted("P(Z): " + panel.what)
+       << "\nset xlabel 'Z (contacts)'\nset ylabel 'P(Z) (fraction of particles)'\nplot ";
+    bool first = true;
+    for (const std::size_t t : plotted) {
+        for (std::size_t k = 0; k < panel.curves.size(); ++k) {
+            const auto& curve = panel.curves[k];
+            const std::string file =
+                panel.stem + "_pz_" + std::to_string(k) + "_" + names[t] + ".dat";
+            write_text_file(plots / file,
+                            columns(integers(curve.curves->p_z[t].size()), curve.curves->p_z[t]));
+            gp << (first ? "" : ", ") << "'" << file << "' with linespoints lw 2" << style(curve)
+               << " title " << quoted(curve.label + ", gap <= " + names[t] + " d");
+            first = false;
+        }
+    }
+    gp << "\n";
+}
+
+/// Mean Z against the gap tolerance δ > 0, on a log axis.
+void write_zdelta_plot(std::ostringstream& gp, const fs::path& plots, const PlotPanel& panel) {
+    const auto& tolerances = coordination_tolerances();
+    gp << "set output '" << panel.stem << "_zdelta.svg'\nset title "
+       << quoted("Z(delta), gap <= delta d: " + panel.what) << "\nset logscale x\nset xtics ("
+       << kPowerTicks
+       << ")\nset xlabel 'δ (gap over d)'\nset ylabel 'mean Z (contacts/particle)'\nplot ";
+    for (std::size_t k = 0; k < panel.curves.size(); ++k) {
+        const auto& curve = panel.curves[k];
+        std::vector<double> deltas;
+        std::vector<double> z;
+        for (std::size_t t = 0; t < tolerances.size(); ++t) {
+            if (tolerances[t] > 0.0) {
+                deltas.push_back(tolerances[t]);
+                z.push_back(curve.curves->z_mean[t]);
+            }
+        }
+        write_text_file(plots / data_file(panel, "zd", k), columns(deltas, z));
+        gp << (k == 0 ? "" : ", ") << "'" << data_file(panel, "zd", k) << "' with linespoints lw 2"
+           << style(curve) << " title " << quoted(curve.label);
+    }
+    gp << "\nunset logscale\nset xtics autofreq\n";
+}
+
+/// φ(y): height on the vertical axis.
+void write_phiy_plot(std::ostringstream& gp, const fs::path& plots, const PlotPanel& panel) {
+    gp << "set output '" << panel.stem << "_phiy.svg'\nset title "
+       << quoted("phi(y): " + panel.what)
+       << "\nset xlabel 'φ (ratio)'\nset ylabel 'y (length units)'\nplot ";
+    for (std::size_t k = 0; k < panel.curves.size(); ++k) {
+        const auto& curve = panel.curves[k];
+        write_text_file(plots / data_file(panel, "phiy", k),
+                        columns(curve.curves->phi_y_mid, curve.curves->phi_y));
+        gp << (k == 0 ? "" : ", ") << "'" << data_file(panel, "phiy", k)
+           << "' using 2:1 with lines lw 2" << style(curve) << " title " << quoted(curve.label);
+    }
+    gp << "\n";
+}
+
+/// The four plots of a panel; their SVG paths (relative to the report) go to `files`.
+void write_panel(std::ostringstream& gp, const fs::path& plots, const PlotPanel& panel,
+                 std::vector<std::string>& files) {
+    write_gr_plot(gp, plots, panel);
+    files.push_back("plots/" + panel.stem + "_gr.svg");
+    write_pz_plot(gp, plots, panel);
+    files.push_back("plots/" + panel.stem + "_pz.svg");
+    write_zdelta_plot(gp, plots, panel);
+    files.push_back("plots/" + panel.stem + "_zdelta.svg");
+    write_phiy_plot(gp, plots, panel);
+    files.push_back("plots/" + panel.stem + "_phiy.svg");
+}
+
+/// Runs gnuplot on plots/plots.gp (its output in plots/gnuplot.log) and checks that every
+/// one of `files` was written.
+PlotResult run_gnuplot(const fs::path& gnuplot, const fs::path& directory,
+                       const std::vector<std::string>& files) {
+    PlotResult result;
+    const fs::path plots = directory / "plots";
+    std::string log;
+    ChildOptions run;
+    run.argv = {gnuplot.string(), "plots.gp"};
+    run.working_directory = plots;
+    run.timeout = std::chrono::minutes(5);
+    const ChildResult ran = run_child(run, [&](const std::string& line) { log += line + "\n"; });
+    write_text_file(plots / "gnuplot.log", log);
+    if (ran.end != ChildEnd::exited || ran.exit_code != 0) {
+        result.note = "gnuplot failed; see plots/gnuplot.log";
+        return result;
+    }
+    for (const auto& file : files) {
+        if (!fs::exists(directory / file)) {
+            result.note = "gnuplot did not write " + file + "; see plots/gnuplot.log";
+            return result;
+        }
+    }
+    result.made = true;
+    result.files = files;
+    return result;
+}
+
 }  // namespace
 
 std::vector<Trend> trends_of(const Report& report, const std::vector<std::string>& metrics) {
@@ -265,102 +382,13 @@ PlotResult make_plots(const std::vector<PlotPanel>& panels, const std::vector<Tr
     gp << "set terminal svg size 900,460 dynamic noenhanced font 'sans,12' background rgb "
           "'white'\nset key outside right top samplen 2\nset grid\n"
        << kPalette;
-    const auto& tolerances = coordination_tolerances();
-    const auto& names = coordination_tolerance_names();
     std::vector<std::string> files = write_trend_plots(gp, plots, trends);
     for (const PlotPanel& panel : panels) {
-        const std::string& stem = panel.stem;
-        const std::string& what = panel.what;
-        const auto style = [](const PlotCurve& curve) {
-            return std::string(curve.reference ? " dt 2" : "");
-        };
-        const auto data_file = [&](const std::string& kind, std::size_t k) {
-            return stem + "_" + kind + "_" + std::to_string(k) + ".dat";
-        };
-
-        write_gr_plot(gp, plots, panel);
-        files.push_back("plots/" + stem + "_gr.svg");
-
-        // Two tolerances for a pair of curves; only δ = 1e-2 when more curves share a plot.
-        std::vector<std::size_t> plotted(std::begin(kPlottedPzTolerances),
-                                         std::end(kPlottedPzTolerances));
-        if (panel.curves.size() > 2) {
-            plotted = {kHeadlinePzTolerance};
-        }
-        gp << "set output '" << stem << "_pz.svg'\nset title " << quoted("P(Z): " + what)
-           << "\nset xlabel 'Z (contacts)'\nset ylabel 'P(Z) (fraction of particles)'\nplot ";
-        bool first = true;
-        for (const std::size_t t : plotted) {
-            for (std::size_t k = 0; k < panel.curves.size(); ++k) {
-                const auto& curve = panel.curves[k];
-                const std::string file =
-                    stem + "_pz_" + std::to_string(k) + "_" + names[t] + ".dat";
-                write_text_file(plots / file, columns(integers(curve.curves->p_z[t].size()),
-                                                      curve.curves->p_z[t]));
-                gp << (first ? "" : ", ") << "'" << file << "' with linespoints lw 2"
-                   << style(curve) << " title "
-                   << quoted(curve.label + ", gap <= " + names[t] + " d");
-                first = false;
-            }
-        }
-        gp << "\n";
-        files.push_back("plots/" + stem + "_pz.svg");
-
-        gp << "set output '" << stem << "_zdelta.svg'\nset title "
-           << quoted("Z(delta), gap <= delta d: " + what) << "\nset logscale x\nset xtics ("
-           << kPowerTicks
-           << ")\nset xlabel 'δ (gap over d)'\nset ylabel 'mean Z (contacts/particle)'\nplot ";
-        for (std::size_t k = 0; k < panel.curves.size(); ++k) {
-            const auto& curve = panel.curves[k];
-            std::vector<double> deltas;
-            std::vector<double> z;
-            for (std::size_t t = 0; t < tolerances.size(); ++t) {
-                if (tolerances[t] > 0.0) {
-                    deltas.push_back(tolerances[t]);
-                    z.push_back(curve.curves->z_mean[t]);
-                }
-            }
-            write_text_file(plots / data_file("zd", k), columns(deltas, z));
-            gp << (k == 0 ? "" : ", ") << "'" << data_file("zd", k) << "' with linespoints lw 2"
-               << style(curve) << " title " << quoted(curve.label);
-        }
-        gp << "\nunset logscale\nset xtics autofreq\n";
-        files.push_back("plots/" + stem + "_zdelta.svg");
-
-        gp << "set output '" << stem << "_phiy.svg'\nset title " << quoted("phi(y): " + what)
-           << "\nset xlabel 'φ (ratio)'\nset ylabel 'y (length units)'\nplot ";
-        for (std::size_t k = 0; k < panel.curves.size(); ++k) {
-            const auto& curve = panel.curves[k];
-            write_text_file(plots / data_file("phiy", k),
-                            columns(curve.curves->phi_y_mid, curve.curves->phi_y));
-            gp << (k == 0 ? "" : ", ") << "'" << data_file("phiy", k)
-               << "' using 2:1 with lines lw 2" << style(curve) << " title " << quoted(curve.label);
-        }
-        gp << "\n";
-        files.push_back("plots/" + stem + "_phiy.svg");
+        write_panel(gp, plots, panel, files);
     }
     gp << "unset output\n";
     write_text_file(plots / "plots.gp", gp.str());
-    std::string log;
-    ChildOptions run;
-    run.argv = {gnuplot->string(), "plots.gp"};
-    run.working_directory = plots;
-    run.timeout = std::chrono::minutes(5);
-    const ChildResult ran = run_child(run, [&](const std::string& line) { log += line + "\n"; });
-    write_text_file(plots / "gnuplot.log", log);
-    if (ran.end != ChildEnd::exited || ran.exit_code != 0) {
-        result.note = "gnuplot failed; see plots/gnuplot.log";
-        return result;
-    }
-    for (const auto& file : files) {
-        if (!fs::exists(directory / file)) {
-            result.note = "gnuplot did not write " + file + "; see plots/gnuplot.log";
-            return result;
-        }
-    }
-    result.made = true;
-    result.files = files;
-    return result;
+    return run_gnuplot(*gnuplot, directory, files);
 }
 
 }  // namespace sgmp::compare

@@ -21,10 +21,8 @@ bool on_container(const Vec3& c, double r, const Container& container, double to
 
 /// Spheres neither on the container nor on a sphere whose centre is not higher (surface
 /// gap ≤ tolerance).
-std::size_t count_unsupported(const std::vector<Particle>& particles, const Container& container,
-                              double tolerance) {
-    const double r_max = max_radius(particles);
-    const CellGrid grid(centres_of(particles), 2.0 * r_max);
+std::size_t count_unsupported(const std::vector<Particle>& particles, const CellGrid& grid,
+                              double r_max, const Container& container, double tolerance) {
     std::size_t unsupported = 0;
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const Vec3& c = particles[i].center;
@@ -42,21 +40,102 @@ std::size_t count_unsupported(const std::vector<Particle>& particles, const Cont
     return unsupported;
 }
 
+/// Pairs overlapping by more than `tolerance` (depth r_i + r_j − |c_i − c_j|, as in
+/// pack_overlaps.hpp) and the most negative gap, on the grid of reach 2·r_max.
+void count_pair_overlaps(const std::vector<Particle>& particles, const CellGrid& grid,
+                         double tolerance, PackCheck& result) {
+    double deepest = 0.0;
+    grid.for_each_pair([&](std::size_t i, std::size_t j, double) {
+        const Particle& a = particles[i];
+        const Particle& b = particles[j];
+        const double depth = a.radius + b.radius - (a.center - b.center).norm();
+        if (depth > 0.0) {
+            result.overlaps += depth > tolerance ? 1 : 0;
+            deepest = std::max(deepest, depth);
+        }
+    });
+    result.worst_gap = deepest > 0.0 ? -deepest : 0.0;
+}
+
 }  // namespace
 
+// One cell grid of side 2·r_max serves the pair overlaps and the supports.
 PackCheck check_pack(const std::vector<Particle>& particles, const Container& container,
                      double overlap_tolerance, double support_tolerance) {
     PackCheck result;
     if (particles.empty()) {
         return result;
     }
-    const OverlapCount count = count_overlaps(particles, container, overlap_tolerance);
-    result.overlaps = count.pairs;
-    result.worst_gap = count.max_pair > 0.0 ? -count.max_pair : 0.0;
-    result.outside = count.walls;
-    result.unsupported = count_unsupported(particles, container, support_tolerance);
+    const double r_max = max_radius(particles);
+    const CellGrid grid(centres_of(particles), 2.0 * r_max);
+    if (particles.size() >= 2 && r_max > 0.0) {
+        count_pair_overlaps(particles, grid, overlap_tolerance, result);
+    }
+    for (const Particle& p : particles) {
+        const double depth = container.penetration(p.center, p.radius);
+        result.outside += depth > 0.0 && depth > overlap_tolerance ? 1 : 0;
+    }
+    result.unsupported = count_unsupported(particles, grid, r_max, container, support_tolerance);
     return result;
 }
+
+namespace {
+
+/// Indices of `particles` in id order (the drop order).
+std::vector<std::size_t> id_order(const std::vector<Particle>& particles) {
+    std::vector<std::size_t> order(particles.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        order[i] = i;
+    }
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return particles[a].id < particles[b].id;
+    });
+    return order;
+}
+
+/// Unit normals (c_i − c_k)/|c_i − c_k| of the spheres k placed before i (lower id) within
+/// surface gap `tolerance` of it.
+void earlier_contact_normals(const std::vector<Particle>& particles, const CellGrid& grid,
+                             double r_max, std::size_t i, double tolerance,
+                             std::vector<Vec3>& normals) {
+    const Particle& p = particles[i];
+    normals.clear();
+    grid.for_each_near(p.center, p.radius + r_max + tolerance, [&](std::size_t j, double) {
+        const Particle& s = particles[j];
+        if (!(s.id < p.id)) {
+            return;  // itself, or placed after it
+        }
+        const double distance = (p.center - s.center).norm();
+        if (distance - p.radius - s.radius <= tolerance) {
+            normals.push_back((p.center - s.center) / distance);
+        }
+    });
+}
+
+/// Whether ŷ = Σ λ_k n_k with every λ_k ≥ −force_tolerance for some three of `normals`.
+bool held_by_three(const std::vector<Vec3>& normals, double force_tolerance) {
+    const std::size_t n = normals.size();
+    for (std::size_t a = 0; a < n; ++a) {
+        for (std::size_t b = a + 1; b < n; ++b) {
+            for (std::size_t e = b + 1; e < n; ++e) {
+                Eigen::Matrix3d m;
+                m.col(0) = normals[a];
+                m.col(1) = normals[b];
+                m.col(2) = normals[e];
+                if (std::abs(m.determinant()) < 1e-12) {
+                    continue;
+                }
+                const Vec3 lambda = m.partialPivLu().solve(Vec3::UnitY());
+                if (lambda.allFinite() && lambda.minCoeff() >= -force_tolerance) {
+                    return true;
+                }
+            }
+        }
+    }
+    return false;
+}
+
+}  // namespace
 
 RestCheck check_rolled_rest(const std::vector<Particle>& particles, const Container& container,
                             double contact_tolerance, double force_tolerance) {
@@ -68,53 +147,15 @@ RestCheck check_rolled_rest(const std::vector<Particle>& particles, const Contai
     const double r_max = max_radius(particles);
     const CellGrid grid(centres_of(particles), 2.0 * r_max);
     // Drop order is id order: each sphere is checked against the spheres placed before it.
-    std::vector<std::size_t> order(particles.size());
-    for (std::size_t i = 0; i < order.size(); ++i) {
-        order[i] = i;
-    }
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        return particles[a].id < particles[b].id;
-    });
     std::vector<Vec3> normals;
-    for (const std::size_t i : order) {
-        const Particle& p = particles[i];
-        const Vec3& c = p.center;
-        const double r = p.radius;
-        const double tol = contact_tolerance;
-        if (on_container(c, r, container, tol)) {
+    for (const std::size_t i : id_order(particles)) {
+        if (on_container(particles[i].center, particles[i].radius, container, contact_tolerance)) {
             continue;
         }
-        normals.clear();
-        grid.for_each_near(c, r + r_max + tol, [&](std::size_t j, double) {
-            const Particle& s = particles[j];
-            if (!(s.id < p.id)) {
-                return;  // itself, or placed after it
-            }
-            const double distance = (c - s.center).norm();
-            if (distance - r - s.radius <= tol) {
-                normals.push_back((c - s.center) / distance);
-            }
-        });
-        bool rests = false;
-        const std::size_t n = normals.size();
-        for (std::size_t a = 0; a < n && !rests; ++a) {
-            for (std::size_t b = a + 1; b < n && !rests; ++b) {
-                for (std::size_t e = b + 1; e < n && !rests; ++e) {
-                    Eigen::Matrix3d m;
-                    m.col(0) = normals[a];
-                    m.col(1) = normals[b];
-                    m.col(2) = normals[e];
-                    if (std::abs(m.determinant()) < 1e-12) {
-                        continue;
-                    }
-                    const Vec3 lambda = m.partialPivLu().solve(Vec3::UnitY());
-                    rests = lambda.allFinite() && lambda.minCoeff() >= -force_tolerance;
-                }
-            }
-        }
-        if (!rests) {
+        earlier_contact_normals(particles, grid, r_max, i, contact_tolerance, normals);
+        if (!held_by_three(normals, force_tolerance)) {
             ++result.unrested;
-            result.fewer_than_three += n < 3 ? 1 : 0;
+            result.fewer_than_three += normals.size() < 3 ? 1 : 0;
             result.first = std::min(result.first, i);
         }
     }

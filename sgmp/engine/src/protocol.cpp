@@ -6,6 +6,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "sgmp/engine/contact_model.hpp"
+
 namespace sgmp::engine {
 
 namespace {
@@ -13,25 +15,6 @@ namespace {
 /// Cell side: one largest diameter, so a sweep looks at a few cells in each direction.
 double cell_side(double max_radius) {
     return 2.0 * max_radius;
-}
-
-/// Height at which a sphere of radius r falling straight down from c first touches the
-/// settled sphere s: y_s + √((r + r_s)² − h²), h the horizontal centre distance; capped at
-/// c.y (a rounding-level overlap means "touching now"). Negative infinity when s lies
-/// above c or outside the fall column (h ≥ r + r_s).
-double contact_height(const Vec3& c, double r, const Sphere& s) {
-    if (s.y > c.y()) {
-        return -std::numeric_limits<double>::infinity();
-    }
-    const double dx = c.x() - s.x;
-    const double dz = c.z() - s.z;
-    const double h2 = dx * dx + dz * dz;
-    const double contact = r + s.r;
-    const double contact2 = contact * contact;
-    if (h2 >= contact2) {
-        return -std::numeric_limits<double>::infinity();
-    }
-    return std::min(s.y + std::sqrt(contact2 - h2), c.y());
 }
 
 }  // namespace
@@ -60,27 +43,12 @@ void Protocol::settle(const Particle& p) {
 }
 
 Protocol::Fall Protocol::fall_exact(const Vec3& c, double r) const {
-    Fall result{container_.floor + r, true, Sphere{}};
-    if (grid_.layers() == 0) {
-        return result;
-    }
-    const double reach = r + max_radius_;
-    const CellRange xs = grid_.x_range(c.x() - reach, c.x() + reach);
-    const CellRange zs = grid_.z_range(c.z() - reach, c.z() + reach);
-    for (int l = std::min(grid_.layer_of(c.y()), grid_.layers() - 1); l >= 0; --l) {
-        // Every sphere in layer l or below has y_j < bottom(l + 1), so its contact height
-        // is below bottom(l + 1) + r + r_max: nothing lower can beat the best found.
-        if (grid_.layer_bottom(l + 1) + reach <= result.y) {
-            break;
-        }
-        grid_.for_each_in_layer(l, xs, zs, [&](const Sphere& s) {
-            const double y = contact_height(c, r, s);
-            if (y > result.y) {
-                result = Fall{y, false, s};
-            }
-        });
-    }
-    return result;
+    return first_contact_below(grid_, container_, max_radius_, c, r);
+}
+
+DropOutcome Protocol::rest(const Vec3& c, double r, StopReason reason, long moves) const {
+    return apply_contact_model(params_.contact, grid_, container_, max_radius_, c, r, reason,
+                               moves);
 }
 
 void Protocol::rebuild_local(const Vec3& origin, double r, double s) {

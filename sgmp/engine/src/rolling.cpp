@@ -1,5 +1,7 @@
 #include "sgmp/engine/rolling.hpp"
 
+#include "sgmp/engine/contact_search.hpp"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <array>
@@ -116,46 +118,6 @@ Hit first_hit(const Context& ctx, const Arc& arc, const Sphere* contacts, int co
     return hit;
 }
 
-/// True when p overlaps nothing (beyond rounding) and lies inside the container.
-bool clear_at(const Context& ctx, const Vec3& p) {
-    if (ctx.box.penetration(p, ctx.r) > 1e-12 * ctx.r)
-        return false;
-    bool clear = true;
-    const Vec3 span = Vec3::Constant(ctx.r + ctx.r_max);
-    ctx.grid.for_each_in_box(p - span, p + span, [&](const Sphere& s) {
-        clear = clear && (p - centre(s)).norm() - (ctx.r + s.r) >= -1e-10 * (ctx.r + s.r);
-    });
-    return clear;
-}
-
-/// Straight down from p to the first contact: the new height and what is touched.
-Hit fall_from(const Context& ctx, const Vec3& p) {
-    Hit hit{0.0, Kind::Floor, Sphere{}};
-    double best = ctx.box.floor + ctx.r;
-    const double reach = ctx.r + ctx.r_max;
-    const Vec3 lo(p.x() - reach, ctx.box.floor - reach, p.z() - reach);
-    const Vec3 hi(p.x() + reach, p.y(), p.z() + reach);
-    ctx.grid.for_each_in_box(lo, hi, [&](const Sphere& s) {
-        const double D = ctx.r + s.r;
-        // A sphere touched at (or below) its equator is left behind by the fall: counting it
-        // would stop the fall where it starts, on a support that cannot hold it.
-        if (s.y > p.y() - 1e-9 * D)
-            return;
-        const double dx = p.x() - s.x;
-        const double dz = p.z() - s.z;
-        const double h2 = dx * dx + dz * dz;
-        if (h2 >= D * D)
-            return;
-        const double y = std::min(s.y + std::sqrt(D * D - h2), p.y());
-        if (y > best) {
-            best = y;
-            hit = Hit{0.0, Kind::Ball, s};
-        }
-    });
-    hit.phi = best;  // the height, for this use
-    return hit;
-}
-
 /// Support coefficients of two contacts: ŷ − (ŷ·t)t = α n_j + β n_k.
 std::array<double, 2> two_forces(const Vec3& nj, const Vec3& nk) {
     const double c = nj.dot(nk);
@@ -232,124 +194,173 @@ Motion choose_motion(const Vec3& p, const Sphere* contacts, int count) {
     return Motion{};
 }
 
+/// The rolling particle: its centre and the supports it touches (at most three).
+struct Roller {
+    Context ctx;
+    Vec3 p;
+    std::array<Sphere, 3> contacts;
+    int count = 1;
+};
+
+/// A leg reached `hit` at p: the floor or a wall ends the roll, a sphere becomes a support.
+std::optional<RollResult> meet(Roller& s, const Hit& hit) {
+    if (hit.kind == Kind::Floor) {
+        return RollResult{s.p, RollEnd::Floor};
+    }
+    if (hit.kind == Kind::Wall) {
+        return RollResult{s.p, RollEnd::Wall};
+    }
+    s.contacts[s.count++] = hit.ball;
+    return std::nullopt;
+}
+
+/// Keeps the supports that `motion` keeps (none for a fall); ends the roll when the
+/// particle is stable or stuck.
+std::optional<RollResult> keep_supports(Roller& s, const Motion& motion) {
+    switch (motion.kind) {
+        case Motion::Kind::Stable:
+            return RollResult{s.p, RollEnd::Stable};
+        case Motion::Kind::Stuck:
+            return RollResult{s.p, RollEnd::Stopped};
+        case Motion::Kind::Fall:
+            s.count = 0;
+            break;
+        case Motion::Kind::Single:
+            s.contacts[0] = s.contacts[motion.keep[0]];
+            s.count = 1;
+            break;
+        case Motion::Kind::Pair: {
+            const Sphere a = s.contacts[motion.keep[0]];
+            const Sphere b = s.contacts[motion.keep[1]];
+            s.contacts[0] = a;
+            s.contacts[1] = b;
+            s.count = 2;
+            break;
+        }
+    }
+    return std::nullopt;
+}
+
+/// No support: straight down to the first contact, which becomes the one support (the
+/// spheres touched at the equator just left are passed, contact_search.hpp).
+std::optional<RollResult> fall_leg(Roller& s) {
+    constexpr double kEquatorMargin = 1e-9;
+    const FirstContact hit =
+        first_contact_below(s.ctx.grid, s.ctx.box, s.ctx.r_max, s.p, s.ctx.r, kEquatorMargin);
+    s.p.y() = hit.y;
+    if (hit.on_floor) {
+        return RollResult{s.p, RollEnd::Floor};
+    }
+    s.contacts[0] = hit.support;
+    s.count = 1;
+    return std::nullopt;
+}
+
+/// Moves to `arc.at(phi)` unless the guard refuses it (then the roll stops where it is).
+std::optional<RollResult> move_along(Roller& s, const Arc& arc, double phi) {
+    const Vec3 next = arc.at(phi);
+    if (!clear_at(s.ctx.grid, s.ctx.box, s.ctx.r_max, next, s.ctx.r)) {
+        return RollResult{s.p, RollEnd::Stopped};
+    }
+    s.p = next;
+    return std::nullopt;
+}
+
+/// One support j: down its meridian in `direction` to the first new contact, or to its
+/// equator, from where the particle falls (no support left).
+std::optional<RollResult> single_leg(Roller& s, const Vec3& direction) {
+    const Vec3 cj = centre(s.contacts[0]);
+    const Arc arc{cj, s.ctx.r + s.contacts[0].r, (s.p - cj).normalized(), direction};
+    const double equator = std::atan2(arc.e1.y(), -arc.e2.y());
+    const Hit hit = first_hit(s.ctx, arc, s.contacts.data(), s.count);
+    if (const auto end = move_along(s, arc, std::min(hit.phi, equator))) {
+        return end;
+    }
+    if (hit.phi > equator) {
+        s.count = 0;
+        return std::nullopt;
+    }
+    return meet(s, hit);
+}
+
+/// The circle where the contact spheres of supports j and k meet, through p, rolled along
+/// the downhill tangent t.
+Arc pair_circle(const Roller& s, const Vec3& t) {
+    const Vec3 cj = centre(s.contacts[0]);
+    const Vec3 axis = centre(s.contacts[1]) - cj;
+    const double L = axis.norm();
+    const double Dj = s.ctx.r + s.contacts[0].r;
+    const double Dk = s.ctx.r + s.contacts[1].r;
+    const double along = (Dj * Dj - Dk * Dk + L * L) / (2.0 * L);
+    const Vec3 m = cj + along * axis / L;
+    const Vec3 radial = s.p - m;
+    return Arc{m, radial.norm(), radial.normalized(), t};
+}
+
+/// Where on [0, phi] a support force of the pair first vanishes (just past it, by
+/// bisection to 60 halvings), or phi when both stay compressive to the end.
+double force_vanishes(const Roller& s, const Arc& arc, double phi, bool& vanishes) {
+    const Vec3 cj = centre(s.contacts[0]);
+    const Vec3 ck = centre(s.contacts[1]);
+    const auto pulls = [&](double angle) {
+        const Vec3 q = arc.at(angle);
+        const auto f = two_forces((q - cj).normalized(), (q - ck).normalized());
+        return f[0] < 0.0 || f[1] < 0.0;
+    };
+    vanishes = pulls(phi);
+    if (!vanishes) {
+        return phi;
+    }
+    double lo = 0.0;
+    double hi = phi;
+    for (int i = 0; i < 60; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (pulls(mid) ? hi : lo) = mid;
+    }
+    return hi;
+}
+
+/// Two supports: along their circle to the first new contact, to the circle's lowest
+/// point, or to where a support force vanishes (then the next leg goes on with the other).
+std::optional<RollResult> pair_leg(Roller& s, const Vec3& direction) {
+    const Arc arc = pair_circle(s, direction);
+    double lowest = std::atan2(arc.e2.y(), arc.e1.y()) + std::numbers::pi;
+    if (lowest <= 0.0)
+        lowest += kTwoPi;
+    const Hit hit = first_hit(s.ctx, arc, s.contacts.data(), s.count);
+    bool leaves = false;
+    const double phi = force_vanishes(s, arc, std::min(hit.phi, lowest), leaves);
+    if (const auto end = move_along(s, arc, phi)) {
+        return end;
+    }
+    if (!leaves && hit.phi <= lowest) {
+        return meet(s, hit);
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 RollResult roll_to_rest(const SettledGrid& grid, const Container& container, double r_max,
                         const Vec3& start, double r, const Sphere& support) {
-    const Context ctx{grid, container, r_max, r};
-    std::array<Sphere, 3> contacts{support, Sphere{}, Sphere{}};
-    int count = 1;
-    Vec3 p = start;
-    // The roll reached `hit` at p: the floor or a wall ends it, a sphere becomes a support.
-    const auto meet = [&](const Hit& hit) -> std::optional<RollResult> {
-        if (hit.kind == Kind::Floor) {
-            return RollResult{p, RollEnd::Floor};
-        }
-        if (hit.kind == Kind::Wall) {
-            return RollResult{p, RollEnd::Wall};
-        }
-        contacts[count++] = hit.ball;
-        return std::nullopt;
-    };
+    Roller s{Context{grid, container, r_max, r}, start, {support, Sphere{}, Sphere{}}, 1};
     constexpr int kMaxLegs = 1000;
     for (int leg = 0; leg < kMaxLegs; ++leg) {
         Motion motion;
-        if (count > 0) {
-            motion = choose_motion(p, contacts.data(), count);
-            switch (motion.kind) {
-                case Motion::Kind::Stable:
-                    return RollResult{p, RollEnd::Stable};
-                case Motion::Kind::Stuck:
-                    return RollResult{p, RollEnd::Stopped};
-                case Motion::Kind::Fall:
-                    count = 0;
-                    break;
-                case Motion::Kind::Single:
-                    contacts[0] = contacts[motion.keep[0]];
-                    count = 1;
-                    break;
-                case Motion::Kind::Pair: {
-                    const Sphere a = contacts[motion.keep[0]];
-                    const Sphere b = contacts[motion.keep[1]];
-                    contacts[0] = a;
-                    contacts[1] = b;
-                    count = 2;
-                    break;
-                }
-            }
-        }
-        if (count == 0) {
-            const Hit fall = fall_from(ctx, p);
-            p.y() = fall.phi;
-            if (fall.kind == Kind::Floor)
-                return RollResult{p, RollEnd::Floor};
-            contacts[0] = fall.ball;
-            count = 1;
-            continue;
-        }
-        if (count == 1) {
-            const Vec3 cj = centre(contacts[0]);
-            const Vec3 n = (p - cj).normalized();
-            const Arc arc{cj, r + contacts[0].r, n, motion.direction};
-            const double equator = std::atan2(arc.e1.y(), -arc.e2.y());
-            const Hit hit = first_hit(ctx, arc, contacts.data(), count);
-            const double phi = std::min(hit.phi, equator);
-            const Vec3 next = arc.at(phi);
-            if (!clear_at(ctx, next))
-                return RollResult{p, RollEnd::Stopped};
-            p = next;
-            if (hit.phi > equator) {
-                count = 0;
-            } else if (const auto end = meet(hit)) {
+        if (s.count > 0) {
+            motion = choose_motion(s.p, s.contacts.data(), s.count);
+            if (const auto end = keep_supports(s, motion)) {
                 return *end;
             }
-            continue;
         }
-        // Two supports: roll along the circle where both contact spheres meet.
-        const Vec3 cj = centre(contacts[0]);
-        const Vec3 ck = centre(contacts[1]);
-        const Vec3 t = motion.direction;
-        const Vec3 axis = ck - cj;
-        const double L = axis.norm();
-        const double Dj = r + contacts[0].r;
-        const double Dk = r + contacts[1].r;
-        const double along = (Dj * Dj - Dk * Dk + L * L) / (2.0 * L);
-        const Vec3 m = cj + along * axis / L;
-        const Vec3 radial = p - m;
-        const Arc arc{m, radial.norm(), radial.normalized(), t};
-        double lowest = std::atan2(arc.e2.y(), arc.e1.y()) + std::numbers::pi;
-        if (lowest <= 0.0)
-            lowest += kTwoPi;
-        const Hit hit = first_hit(ctx, arc, contacts.data(), count);
-        double phi = std::min(hit.phi, lowest);
-        // Does a support force vanish on the way? Then stop where it does.
-        const auto forces_at = [&](double angle) {
-            const Vec3 q = arc.at(angle);
-            return two_forces((q - cj).normalized(), (q - ck).normalized());
-        };
-        const auto end_forces = forces_at(phi);
-        bool leaves = false;
-        if (end_forces[0] < 0.0 || end_forces[1] < 0.0) {
-            double lo = 0.0;
-            double hi = phi;
-            for (int i = 0; i < 60; ++i) {
-                const double mid = 0.5 * (lo + hi);
-                const auto f = forces_at(mid);
-                (f[0] < 0.0 || f[1] < 0.0 ? hi : lo) = mid;
-            }
-            phi = hi;  // just past the point where the force vanishes
-            leaves = true;
-        }
-        const Vec3 next = arc.at(phi);
-        if (!clear_at(ctx, next))
-            return RollResult{p, RollEnd::Stopped};
-        p = next;
-        if (!leaves && hit.phi <= lowest) {
-            if (const auto end = meet(hit))
-                return *end;
+        const auto end = s.count == 0   ? fall_leg(s)
+                         : s.count == 1 ? single_leg(s, motion.direction)
+                                        : pair_leg(s, motion.direction);
+        if (end) {
+            return *end;
         }
     }
-    return RollResult{p, RollEnd::Stopped};
+    return RollResult{s.p, RollEnd::Stopped};
 }
 
 }  // namespace sgmp::engine

@@ -20,6 +20,9 @@
 ///    offset table; when that point itself is not free — possible only between two free
 ///    samples — the arc's middle sample is used). Then fall again.
 ///
+/// A particle the protocol leaves resting is handed to the contact model of `--contact`
+/// (contact_model.hpp: none, settle, roll).
+///
 /// Stopping rules (thesis §4.2): touching the floor fixes a particle; with the `fix` wall
 /// rule a move that would cross a wall ends where the particle touches the wall, and fixes
 /// it; a sweep with no free position (in every stage) leaves the particle resting where
@@ -54,6 +57,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "sgmp/engine/contact_search.hpp"
 #include "sgmp/engine/free_arcs.hpp"
 #include "sgmp/engine/protocol_params.hpp"
 #include "sgmp/engine/settled_grid.hpp"
@@ -95,11 +99,8 @@ class Protocol {
     [[nodiscard]] std::size_t settled_count() const { return grid_.size(); }
 
   private:
-    struct Fall {
-        double y;
-        bool on_floor;
-        Sphere support;  ///< the sphere touched first (when not on the floor)
-    };
+    /// The first contact of a fall (contact_search.hpp).
+    using Fall = FirstContact;
     struct Move {
         double x;  ///< unit offset
         double z;
@@ -124,11 +125,8 @@ class Protocol {
                      double s, const Move& previous, Move& chosen) const;
     /// Where a move from c toward `target` first touches a wall (coordinates snapped).
     [[nodiscard]] Vec3 wall_contact(const Vec3& c, const Vec3& target, double r) const;
-    /// Applies the contact model to a resting particle.
-    DropOutcome rest(Vec3 c, double r, StopReason reason, long moves);
-    /// Rolls a particle touching `support` down over it until a second contact; returns the
-    /// new centre (or c when no contact is met before the support's equator).
-    [[nodiscard]] Vec3 roll(const Vec3& c, double r, const Sphere& support);
+    /// A resting particle goes to the contact model (contact_model.hpp).
+    [[nodiscard]] DropOutcome rest(const Vec3& c, double r, StopReason reason, long moves) const;
 
     Container container_;
     ProtocolParams params_;

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "sgmp/pack/colour_bins.hpp"
 #include "sgmp/engine/settled_grid.hpp"
+#include "sgmp/pack/colour_bins.hpp"
 
 namespace sgmp::engine {
 
@@ -62,7 +62,7 @@ std::vector<Particle> loose_random(const std::vector<double>& d, double d_max,
     // one, so the grid holds only a window of the cloud: when it grows past kWindowLayers
     // layers it is rebuilt from the spheres still within reach, its floor moved up. Memory
     // and time then stay proportional to N however tall the cloud gets.
-    constexpr int kWindowLayers = 64;
+    constexpr int kWindowLayers = 16;
     Container window = box;
     SettledGrid grid(window, d_max);
     std::vector<std::pair<double, double>> blocked;
@@ -83,7 +83,7 @@ std::vector<Particle> loose_random(const std::vector<double>& d, double d_max,
         grid.insert(Sphere{x, y, z, r});
         if (grid.layers() > kWindowLayers) {
             window.floor = y - r - 2.0 * d_max;
-            grid = SettledGrid(window, d_max);
+            grid.reset(window);  // keeps the layers' memory
             while (window_first < out.size() &&
                    out[window_first].center.y() + out[window_first].radius < window.floor) {
                 ++window_first;

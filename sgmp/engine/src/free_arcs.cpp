@@ -73,18 +73,45 @@ void runs_from_bits(int n, FreeRuns& out) {
 
 enum class Run { Found, Empty, Undecided };
 
-/// The run of samples one constraint blocks, as unwrapped indices [lo, hi].
-Run blocked_run(const SweepTable& table, const Blocker& c, long& lo, long& hi) {
-    const int n = table.positions();
-    const double* ux = table.sample_x();
-    const double* uz = table.sample_z();
-    const auto blocked = [&](long k) {
+/// ⌈x⌉ and ⌊x⌋ as integers, exact for |x| < 2^52 (std::ceil is a library call without SSE4.1).
+long ceil_to_long(double x) {
+    const long i = static_cast<long>(x);  // truncates toward zero
+    return i + (static_cast<double>(i) < x ? 1 : 0);
+}
+long floor_to_long(double x) {
+    const long i = static_cast<long>(x);
+    return i - (static_cast<double>(i) > x ? 1 : 0);
+}
+
+/// Sample tests of one constraint: blocked(k) for an unwrapped index k within a few turns.
+struct SampleTest {
+    const double* ux;
+    const double* uz;
+    long n;
+    double a;
+    double b;
+    double q;
+    [[nodiscard]] bool blocked(long k) const {
         while (k < 0)
             k += n;  // k stays within a few turns: cheaper than %
         while (k >= n)
             k -= n;
-        return c.a * ux[k] + c.b * uz[k] < c.q;
-    };
+        return a * ux[k] + b * uz[k] < q;
+    }
+};
+
+/// True when the constraint is too close to tangency (or constant) for its blocked samples to
+/// be trusted as one run: every sample is then tested (`free_runs_by_samples`).
+bool near_tangency(const Blocker& c) {
+    const double radius = std::sqrt(c.a * c.a + c.b * c.b);
+    return radius == 0.0 || std::abs(c.q) >= (1.0 - 1e-6) * radius;
+}
+
+/// The run of samples one constraint blocks, as unwrapped indices [lo, hi].
+Run blocked_run(const SweepTable& table, const Blocker& c, long& lo, long& hi) {
+    const int n = table.positions();
+    const SampleTest test{table.sample_x(), table.sample_z(), n, c.a, c.b, c.q};
+    const auto blocked = [&](long k) { return test.blocked(k); };
     const double radius = std::sqrt(c.a * c.a + c.b * c.b);
     if (radius == 0.0 || std::abs(c.q) >= (1.0 - 1e-6) * radius) {
         return Run::Undecided;  // constant or near tangency: test every sample
@@ -92,8 +119,8 @@ Run blocked_run(const SweepTable& table, const Blocker& c, long& lo, long& hi) {
     const double psi = rough_atan2(c.a, c.b);
     const double beta = rough_acos(c.q / radius);
     const double per_radian = n / (2.0 * kPi);
-    lo = static_cast<long>(std::ceil((psi + beta) * per_radian));
-    hi = static_cast<long>(std::floor((psi + 2.0 * kPi - beta) * per_radian));
+    lo = ceil_to_long((psi + beta) * per_radian);
+    hi = floor_to_long((psi + 2.0 * kPi - beta) * per_radian);
     constexpr int kMaxSteps = 64;  // the estimates are off by far less than this
     int steps = 0;
     if (lo > hi || !blocked(lo) || !blocked(hi)) {
@@ -118,6 +145,37 @@ Run blocked_run(const SweepTable& table, const Blocker& c, long& lo, long& hi) {
     while (hi - lo + 1 < n && blocked(hi + 1) && ++steps < kMaxSteps)
         ++hi;
     return steps >= kMaxSteps ? Run::Undecided : Run::Found;
+}
+
+/// Settles the run [lo, hi] from a guess (the run the same obstacle blocked one move
+/// earlier): moves each end by at most a few samples onto the exact end, testing samples
+/// only. False when the guess is too far off (or the constraint blocks every sample).
+/// Away from tangency the blocked samples form one run, so an end with a blocked sample on
+/// one side and a free one on the other is that run's end: the result is exact.
+bool settle_guess(const SampleTest& test, long& lo, long& hi) {
+    constexpr int kMaxSteps = 4;
+    int steps = 0;
+    while (test.blocked(lo - 1)) {
+        if (++steps > kMaxSteps)
+            return false;
+        --lo;
+    }
+    while (!test.blocked(lo)) {
+        if (++steps > kMaxSteps || lo >= hi)
+            return false;
+        ++lo;
+    }
+    while (test.blocked(hi + 1)) {
+        if (++steps > kMaxSteps)
+            return false;
+        ++hi;
+    }
+    while (!test.blocked(hi)) {
+        if (++steps > kMaxSteps || hi <= lo)
+            return false;
+        --hi;
+    }
+    return hi - lo + 1 < test.n;
 }
 
 }  // namespace
@@ -166,16 +224,40 @@ void free_runs_by_samples(const SweepTable& table, const std::vector<Blocker>& b
 
 void free_runs(const SweepTable& table, const std::vector<Blocker>& blockers, FreeRuns& out) {
     const long n = table.positions();
+    // Guesses are the runs of the previous call (the same obstacles one move earlier, in the
+    // same order, as a rule); a guess is only a starting point, so a wrong one costs time only.
+    const bool guesses = out.guess_positions == n;
+    out.guess_positions = n;
+    out.guess.resize(blockers.size());
     // Blocked runs, split at angle 0 into runs within [0, n).
     out.blocked.clear();
-    for (const Blocker& c : blockers) {
+    for (std::size_t i = 0; i < blockers.size(); ++i) {
+        const Blocker& c = blockers[i];
         long lo = 0;
         long hi = -1;
-        const Run run = blocked_run(table, c, lo, hi);
+        Run run = Run::Undecided;
+        if (guesses && out.guess[i].second >= out.guess[i].first) {
+            if (near_tangency(c)) {
+                out.guess_positions = 0;
+                free_runs_by_samples(table, blockers, out);
+                return;
+            }
+            lo = out.guess[i].first;
+            hi = out.guess[i].second;
+            const SampleTest test{table.sample_x(), table.sample_z(), n, c.a, c.b, c.q};
+            if (settle_guess(test, lo, hi)) {
+                run = Run::Found;
+            }
+        }
+        if (run != Run::Found) {
+            run = blocked_run(table, c, lo, hi);
+        }
         if (run == Run::Undecided) {
+            out.guess_positions = 0;
             free_runs_by_samples(table, blockers, out);
             return;
         }
+        out.guess[i] = {0, -1};
         if (run == Run::Empty) {
             continue;
         }
@@ -183,8 +265,13 @@ void free_runs(const SweepTable& table, const std::vector<Blocker>& blockers, Fr
             out.blocked.emplace_back(0, n);
             continue;
         }
-        const long start = ((lo % n) + n) % n;
+        long start = lo;  // lo mod n; lo is within a few turns, and % is a slow division
+        while (start < 0)
+            start += n;
+        while (start >= n)
+            start -= n;
         const long end = start + (hi - lo + 1);  // exclusive, may pass n
+        out.guess[i] = {start, end - 1};
         if (end <= n) {
             out.blocked.emplace_back(start, end);
         } else {
@@ -192,7 +279,9 @@ void free_runs(const SweepTable& table, const std::vector<Blocker>& blockers, Fr
             out.blocked.emplace_back(0, end - n);
         }
     }
-    std::sort(out.blocked.begin(), out.blocked.end());
+    if (out.blocked.size() > 1) {
+        std::sort(out.blocked.begin(), out.blocked.end());
+    }
     // Free runs are the gaps between the merged blocked runs.
     out.start.clear();
     out.length.clear();

@@ -4,6 +4,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 #include "sgmp/engine/protocol.hpp"
 #include "sgmp/pack/parameter_error.hpp"
 #include "sgmp/pack/version.hpp"
@@ -43,6 +47,15 @@ void record_request(const PackRequest& request, double diameter, Metadata& m) {
     m.set("arrangement", std::string(to_string(request.arrangement)));
     m.set("seed", std::to_string(request.seed));
     m.set("size_modes", size_modes_to_string(request.size_modes));
+}
+
+/// Hands memory freed inside the heap back to the system (glibc keeps it otherwise, and the
+/// settled grid's blocks, freed after deposition, raised the peak memory of a 10^6 pack by
+/// 8-24 MB as later allocations did not fit their place).
+void release_free_memory() {
+#if defined(__GLIBC__)
+    malloc_trim(0);
+#endif
 }
 
 /// Drops every particle in id order with the protocol (the neighbour grid is freed on return).
@@ -154,6 +167,7 @@ Pack make_pack(const PackRequest& request, const ProgressCallback& progress, Pac
     local.start_height = starting_height(particles, container);
 
     deposit(particles, request, container, 0.5 * sizes.largest, rng, progress, local);
+    release_free_memory();  // the neighbour grid's, before the relaxation and the checks
     if (request.relax.mode != RelaxMode::None) {
         local.relax = relax_pack(particles, container, request.relax, d);
     }

@@ -216,6 +216,7 @@ bool Protocol::choose_move(const Vec3& c, double r, double s, const Move& previo
         }
         if (free_count == n) {
             // On the very top of a sphere: every direction is downhill alike.
+            ++draws_;
             const int k = static_cast<int>(rng.below(static_cast<std::uint64_t>(n)));
             chosen = Move{table.x(2 * k), table.z(2 * k)};
             return true;
@@ -229,6 +230,7 @@ bool Protocol::choose_move(const Vec3& c, double r, double s, const Move& previo
         }
         std::size_t pick = 0;
         if (params_.gap == GapRule::Random) {
+            ++draws_;
             pick = static_cast<std::size_t>(rng.below(starts.size()));
         } else {
             for (std::size_t a = 1; a < starts.size(); ++a) {
@@ -278,10 +280,19 @@ DropOutcome Protocol::drop(const Particle& particle, Random& rng) {
     c.y() = lowest_free_height(grid_, c.x(), c.z(), r, max_radius_, c.y(), lift_scratch_);
     Move previous{0.0, 0.0};
     long stalled = 0;
+    cycle_.forget();
     for (long moves = 0;; ++moves) {
         const Fall hit = fall(c, r);
         stalled = hit.y < c.y() ? 0 : stalled + 1;
         c.y() = hit.y;
+        if (stalled == 0) {
+            cycle_.forget();
+        } else if (const auto end = cycle_.observe(c, previous.x, previous.z, stalled, moves,
+                                                   params_.stall_moves, params_.max_moves)) {
+            // A repeated stalled state: the moves cycle until a limit (stall_cycle.hpp).
+            return rest(end->center, r, end->stalled ? StopReason::Stalled : StopReason::MoveLimit,
+                        end->moves);
+        }
         if (hit.on_floor) {
             return DropOutcome{c, StopReason::Floor, moves};
         }
@@ -296,8 +307,12 @@ DropOutcome Protocol::drop(const Particle& particle, Random& rng) {
         }
         gather_near(c, r, s);
         Move move{};
+        const long draws = draws_;
         if (!choose_move(c, r, s, previous, rng, move)) {
             return rest(c, r, StopReason::NoFreeArc, moves);
+        }
+        if (draws_ != draws) {
+            cycle_.forget();  // a random choice: the states no longer repeat by rule alone
         }
         const Vec3 target(c.x() + s * move.x, c.y(), c.z() + s * move.z);
         if (params_.walls == WallRule::Fix && crosses_wall(target.x(), target.z(), r)) {

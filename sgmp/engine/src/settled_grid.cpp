@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 namespace sgmp::engine {
@@ -47,14 +48,50 @@ CellRange SettledGrid::z_range(double lo, double hi) const {
 
 void SettledGrid::insert(const Sphere& sphere) {
     const int l = layer_of(sphere.y);
+    const std::size_t cells = static_cast<std::size_t>(nx_) * nz_;
     if (l >= layers_) {
+        while (static_cast<int>(layer_blocks_.size()) <= l) {
+            static_assert(sizeof(Count) % alignof(Sphere) == 0);
+            Layer layer;
+            layer.memory = std::make_unique_for_overwrite<std::byte[]>(
+                cells * (sizeof(Count) + kInline * sizeof(Sphere)));
+            layer.counts = reinterpret_cast<Count*>(layer.memory.get());
+            layer.spheres = reinterpret_cast<Sphere*>(layer.memory.get() + cells * sizeof(Count));
+            layer_blocks_.push_back(std::move(layer));
+        }
+        // New layers, and layers reached again after a reset, are cleared when first reached.
+        for (int k = reused_layers_; k <= l; ++k) {
+            std::fill_n(layer_blocks_[static_cast<std::size_t>(k)].counts, cells, Count{});
+        }
+        reused_layers_ = std::max(reused_layers_, l + 1);
         layers_ = l + 1;
-        cells_.resize(static_cast<std::size_t>(layers_) * nx_ * nz_);
     }
     const int ix = clamp_index(sphere.x, x_min_, hx_, nx_);
     const int iz = clamp_index(sphere.z, z_min_, hz_, nz_);
-    cells_[(static_cast<std::size_t>(l) * nx_ + ix) * nz_ + iz].push_back(sphere);
+    Layer& layer = layer_blocks_[static_cast<std::size_t>(l)];
+    const std::size_t cell = static_cast<std::size_t>(ix) * nz_ + iz;
+    Count& count = layer.counts[cell];
+    if (count.count < kInline) {
+        layer.spheres[cell * kInline + count.count] = sphere;
+    } else {
+        if (count.count == kInline) {
+            count.spill = static_cast<std::uint32_t>(spill_.size());
+            spill_.emplace_back();
+        }
+        spill_[count.spill].push_back(sphere);
+    }
+    ++count.count;
     ++size_;
+}
+
+void SettledGrid::reset(const Container& container) {
+    x_min_ = container.x_min;
+    z_min_ = container.z_min;
+    floor_ = container.floor;
+    layers_ = 0;
+    size_ = 0;
+    reused_layers_ = 0;
+    spill_.clear();
 }
 
 double lowest_free_height(const SettledGrid& grid, double x, double z, double r, double r_max,

@@ -13,7 +13,9 @@
 /// evaluating the constraint at the samples there, so the result is exactly that of testing
 /// every sample (`free_runs_by_samples`), at a cost that does not grow with the number of
 /// samples. Near tangency (|q/R| within 1e-6 of 1), where rounding could break a run, it
-/// tests every sample instead.
+/// tests every sample instead. Consecutive calls on one `FreeRuns` start from the runs of the
+/// previous call (an obstacle's run moves by a sample or two per move), settled the same way,
+/// so most calls evaluate no trigonometric estimate at all; the result does not depend on it.
 #include <cstdint>
 #include <vector>
 
@@ -37,6 +39,10 @@ struct FreeRuns {
     // Scratch space, reused between calls.
     std::vector<std::uint64_t> bits;
     std::vector<std::pair<long, long>> blocked;
+    /// Each constraint's blocked run of the last call ([lo, hi] within [lo, lo + n); empty
+    /// when hi < lo) and the sample count it was found for: the next call's first guesses.
+    std::vector<std::pair<long, long>> guess;
+    long guess_positions = 0;
 };
 
 /// The free runs of `table`'s samples under `blockers` (see the file comment).

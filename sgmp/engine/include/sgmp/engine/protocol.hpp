@@ -61,6 +61,7 @@
 #include "sgmp/engine/free_arcs.hpp"
 #include "sgmp/engine/protocol_params.hpp"
 #include "sgmp/engine/settled_grid.hpp"
+#include "sgmp/engine/stall_cycle.hpp"
 #include "sgmp/engine/sweep_table.hpp"
 #include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/particle.hpp"
@@ -141,6 +142,9 @@ class Protocol {
     bool local_valid_ = false;
     double skin_ = 0.0;
     std::vector<std::pair<double, double>> lift_scratch_;
+    /// Stalled states of the current drop, to jump over their cycle (stall_cycle.hpp).
+    StallCycle cycle_;
+    long draws_ = 0;  ///< random choices drawn by choose_move so far
 };
 
 /// Hand-made beds (tests, figures): drops `falling` from its centre onto `settled` (all

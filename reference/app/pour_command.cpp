@@ -31,7 +31,7 @@ StartPositions start_positions(const std::string& name, const PourParameters& p)
     start.name = std::string(engine::to_string(request.arrangement));
     for (const Particle& particle : pack.particles) {
         start.centers.push_back(particle.center);
-        start.colours.push_back(particle.color);
+        start.colors.push_back(particle.color);
     }
     return start;
 }

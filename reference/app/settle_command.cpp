@@ -35,7 +35,7 @@ StartPositions start_from(const Pack& pack, const std::string& path, PourParamet
                                         "spheres only");
         }
         start.centers.push_back(particle.center);
-        start.colours.push_back(particle.color);
+        start.colors.push_back(particle.color);
     }
     p.count = pack.particles.size();
     p.arrangement = start.name;  // the input script then reads the positions (start.data)

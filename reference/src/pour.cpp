@@ -13,7 +13,7 @@
 
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/child_process.hpp"
-#include "sgmp/pack/colour_bins.hpp"
+#include "sgmp/pack/color_bins.hpp"
 #include "sgmp/pack/executables.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/pack_file.hpp"
@@ -393,13 +393,13 @@ PourResult pour(const PourRequest& request, const PourObserver& observer) {
     result.max_wall_penetration_over_d = overlaps.max_wall / d;
     result.phi_control_volume = packing_fraction(result.pack, control_volume());
     check_settled(result);
-    if (request.start && request.start->colours.size() == p.count) {
+    if (request.start && request.start->colors.size() == p.count) {
         for (std::size_t i = 0; i < p.count; ++i) {
-            result.pack.particles[i].color = request.start->colours[i];
+            result.pack.particles[i].color = request.start->colors[i];
         }
     } else {
-        Random colour_random(p.seed ^ 0xC01005ULL);  // apart from the LIGGGHTS seeds
-        const std::vector<int> bins = draw_colours(result.pack.particles.size(), colour_random);
+        Random color_random(p.seed ^ 0xC01005ULL);  // apart from the LIGGGHTS seeds
+        const std::vector<int> bins = draw_colors(result.pack.particles.size(), color_random);
         for (std::size_t i = 0; i < bins.size(); ++i) {
             result.pack.particles[i].color = bins[i];
         }

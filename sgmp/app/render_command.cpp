@@ -29,7 +29,7 @@ struct RenderOptions {
     std::string out;
     std::string size = "800x800";
     std::string view = "iso";
-    std::string colour = "bin";
+    std::string color = "bin";
     std::string cut = "none";
     std::string container = "outline";
     int threads = 0;
@@ -74,14 +74,14 @@ render::SceneOptions scene_options(const RenderOptions& o) {
     s.height = h;
     s.view = require(render::parse_view(o.view), "view", o.view,
                      "must be AZ,EL in degrees (EL in [-90, 90]) or front, top, iso");
-    s.colouring = require(render::parse_colouring(o.colour), "colour", o.colour,
-                          "must be one of bin, height");
+    s.coloring =
+        require(render::parse_coloring(o.color), "colour", o.color, "must be one of bin, height");
     s.cut = require(render::parse_cut(o.cut), "cut", o.cut,
                     "must be none, half, slice or a plane such as z>0 (x|y|z, > or <, a number)");
     s.container = require(render::parse_container_style(o.container), "container", o.container,
                           "must be one of outline, walls, none");
     s.provenance = "pack: " + o.pack + "\nsize=" + o.size + " view=" + o.view +
-                   " colour=" + o.colour + " cut=" + o.cut + " container=" + o.container;
+                   " colour=" + o.color + " cut=" + o.cut + " container=" + o.container;
     return s;
 }
 
@@ -95,7 +95,7 @@ std::vector<std::pair<std::string, std::string>> png_texts(const RenderOptions& 
     }
     return {{"Software", "sgmp render " + std::string(sgmp::version())},
             {"Source", o.pack},
-            {"Comment", "size=" + o.size + " view=" + o.view + " colour=" + o.colour +
+            {"Comment", "size=" + o.size + " view=" + o.view + " colour=" + o.color +
                             " cut=" + o.cut + " container=" + o.container},
             {"Pack", made_from}};
 }
@@ -154,7 +154,7 @@ RenderCommand register_render(CLI::App& app) {
                     "camera: AZ,EL in degrees (azimuth about Y from +Z toward +X, elevation "
                     "above the horizontal) or front (0,10), top (0,90), iso (35,30)")
         ->capture_default_str();
-    cmd->add_option("--colour", o->colour,
+    cmd->add_option("--colour", o->color,
                     "sphere colours: bin (the colour bins 0-9, Tableau 10) or height (viridis "
                     "from the floor to the top)")
         ->capture_default_str();

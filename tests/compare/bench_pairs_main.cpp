@@ -128,7 +128,7 @@ int main(int argc, char** argv) {
         options.tolerances = coordination_tolerances();
         options.mean_diameter = d;
         options.bins = bins;
-        options.space = centre_space(particles, container_of(pack), 0.5 * d);
+        options.space = center_space(particles, container_of(pack), 0.5 * d);
         options.container = container_of(pack);
         start = cpu_seconds();
         const LocalStructure local = measure_local_structure(particles, origins, options);

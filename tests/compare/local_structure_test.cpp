@@ -87,10 +87,10 @@ Counts brute_force(const Case& c) {
             if (bin < o.bins) {
                 ++n.pairs[bin];
             }
-            const double centres[2] = {kSplitLow, kSplitHigh};
+            const double centers[2] = {kSplitLow, kSplitHigh};
             for (int w = 0; w < 2; ++w) {
                 n.split_pairs[w] +=
-                    std::abs(distance - centres[w] * d) <= kSplitWindowHalfWidth * d;
+                    std::abs(distance - centers[w] * d) <= kSplitWindowHalfWidth * d;
             }
             for (std::size_t t = 0; t < o.tolerances.size(); ++t) {
                 n.z_sum[t] += distance - a.radius - b.radius <= o.tolerances[t] * d ? 1 : 0;
@@ -158,7 +158,7 @@ BOOST_AUTO_TEST_CASE(results_are_bit_identical_for_any_thread_count) {
     BOOST_TEST(one.bond_order.q6_local_mean == two.bond_order.q6_local_mean);
 }
 
-BOOST_AUTO_TEST_CASE(column_grid_ranges_hold_every_centre_of_the_ball) {
+BOOST_AUTO_TEST_CASE(column_grid_ranges_hold_every_center_of_the_ball) {
     Random random(5);
     std::vector<Particle> particles(700);
     for (auto& p : particles) {
@@ -186,7 +186,7 @@ BOOST_AUTO_TEST_CASE(column_grid_ranges_hold_every_centre_of_the_ball) {
     }
 }
 
-BOOST_AUTO_TEST_CASE(column_windows_hold_every_centre_within_the_radius) {
+BOOST_AUTO_TEST_CASE(column_windows_hold_every_center_within_the_radius) {
     // Windows of a grid of whole columns for the columns of another grid over a different
     // set: for every source centre p, the windows (one per column) are disjoint and hold
     // every centre within the radius of p.

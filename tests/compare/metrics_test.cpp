@@ -76,12 +76,12 @@ BOOST_AUTO_TEST_CASE(split_ratio_of_a_hand_built_cluster) {
     // rounding only.
     const double d = 0.1;
     const double s3 = std::sqrt(3.0) * d;
-    const std::vector<Vec3> centres{Vec3(0, 0, 0),       Vec3(s3, 0, 0),    Vec3(-s3, 0, 0),
+    const std::vector<Vec3> centers{Vec3(0, 0, 0),       Vec3(s3, 0, 0),    Vec3(-s3, 0, 0),
                                     Vec3(0, 0, s3),      Vec3(0, 2 * d, 0), Vec3(0, -2 * d, 0),
                                     Vec3(0.3, 0.45, 0.3)};
     Pack pack;
-    for (std::size_t i = 0; i < centres.size(); ++i) {
-        pack.particles.push_back(Particle{static_cast<std::int64_t>(i), centres[i], d / 2, 0});
+    for (std::size_t i = 0; i < centers.size(); ++i) {
+        pack.particles.push_back(Particle{static_cast<std::int64_t>(i), centers[i], d / 2, 0});
     }
     MeasureOptions options;
     options.region = Box{Vec3::Constant(-0.01), Vec3::Constant(0.01)};  // the origin alone
@@ -99,20 +99,20 @@ BOOST_AUTO_TEST_CASE(g_of_r_space_choices) {
     // centre; --gr-container-space: the container up to the top sphere.
     const Pack pack = sgmp::testing::jittered_fcc_pack(1000, 1.05, 0.02, 3);
     MeasureOptions options;
-    const Measurement centres = measure(pack, options);
+    const Measurement centers = measure(pack, options);
     options.gr_container_space = true;
     const Measurement container = measure(pack, options);
-    const double r = 0.5 * centres.mean_diameter;
-    const Box& a = centres.local.rdf.space;
+    const double r = 0.5 * centers.mean_diameter;
+    const Box& a = centers.local.rdf.space;
     const Box& b = container.local.rdf.space;
     BOOST_TEST(std::abs(a.lo.x() - (-0.625 + r)) <= 1e-15);
     BOOST_TEST(std::abs(a.lo.y() - (-0.625 + r)) <= 1e-15);
-    BOOST_TEST(std::abs(a.hi.y() - (centres.top - r)) <= 1e-14);  // (y + r) - r rounding
+    BOOST_TEST(std::abs(a.hi.y() - (centers.top - r)) <= 1e-14);  // (y + r) - r rounding
     BOOST_TEST(b.lo.x() == -0.625);
     BOOST_TEST(b.hi.y() == container.top);
     // Same pairs, larger space and lower density: g rises by about |container| / |centres|.
-    BOOST_TEST((centres.local.rdf.pairs == container.local.rdf.pairs));
-    BOOST_TEST(container.local.rdf.density < centres.local.rdf.density);
+    BOOST_TEST((centers.local.rdf.pairs == container.local.rdf.pairs));
+    BOOST_TEST(container.local.rdf.density < centers.local.rdf.density);
 }
 
 BOOST_AUTO_TEST_CASE(results_do_not_depend_on_the_thread_count) {

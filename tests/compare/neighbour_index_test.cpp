@@ -72,12 +72,12 @@ BOOST_AUTO_TEST_CASE(within_returns_exactly_the_points_in_the_ball) {
     const NeighbourIndex index(points);
     std::vector<Index> found;
     for (int q = 0; q < 50; ++q) {
-        const Vec3 centre(random.uniform01(), random.uniform01(), random.uniform01());
+        const Vec3 center(random.uniform01(), random.uniform01(), random.uniform01());
         const double radius = random.uniform(0.0, 0.3);
-        index.within(centre, radius, found);
+        index.within(center, radius, found);
         std::set<Index> expected;
         for (Index i = 0; i < points.size(); ++i) {
-            const Vec3 d = points[i] - centre;
+            const Vec3 d = points[i] - center;
             if (d.x() * d.x() + d.y() * d.y() + d.z() * d.z() <= radius * radius) {
                 expected.insert(i);
             }

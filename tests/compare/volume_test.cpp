@@ -43,7 +43,7 @@ BOOST_AUTO_TEST_CASE(one_face_is_the_cap) {
     }
 }
 
-BOOST_AUTO_TEST_CASE(centre_on_an_edge_is_a_quarter_and_on_a_corner_an_eighth) {
+BOOST_AUTO_TEST_CASE(center_on_an_edge_is_a_quarter_and_on_a_corner_an_eighth) {
     const double r = 0.3;
     const Vec3 c(0.1, 0.2, 0.3);
     const Box edge{Vec3(0.1, 0.2, -kBig), Vec3(kBig, kBig, kBig)};

@@ -16,7 +16,7 @@ using namespace sgmp::engine;
 namespace {
 
 /// FNV-1a (64 bit) over the little-endian bytes of every centre's x, y, z in id order.
-std::uint64_t centres_hash(const Pack& pack) {
+std::uint64_t centers_hash(const Pack& pack) {
     std::uint64_t h = 0xcbf29ce484222325ULL;
     for (const Particle& p : pack.particles) {
         for (const double v : {p.center.x(), p.center.y(), p.center.z()}) {
@@ -47,7 +47,7 @@ BOOST_AUTO_TEST_SUITE(pinned_packs)
 // The hashes and move counts are those of the packs written by the engine before its speed
 // work (grid storage, free-run guesses, the stalled-cycle jump), read back from the pack
 // files' shortest round-trip text by an independent script (numpy-free Python, struct.pack).
-BOOST_AUTO_TEST_CASE(packs_keep_their_centres_bit_for_bit) {
+BOOST_AUTO_TEST_CASE(packs_keep_their_centers_bit_for_bit) {
     const std::vector<Pinned> pinned = {
         {Arrangement::SingleColumn, 600, FallMode::Exact, ContactModel::None, 1,
          0xd387dd7815106ecaULL, 90606},
@@ -76,7 +76,7 @@ BOOST_AUTO_TEST_CASE(packs_keep_their_centres_bit_for_bit) {
         PackStats stats;
         const Pack pack = make_pack(request, {}, &stats);
         BOOST_TEST_CONTEXT(to_string(p.arrangement) << " N=" << p.count << " seed " << p.seed) {
-            BOOST_TEST(centres_hash(pack) == p.hash);
+            BOOST_TEST(centers_hash(pack) == p.hash);
             BOOST_TEST(stats.moves == p.moves);
         }
     }

@@ -64,7 +64,7 @@ BOOST_AUTO_TEST_CASE(a_lone_sphere_falls_to_the_floor) {
     }
 }
 
-BOOST_AUTO_TEST_CASE(off_centre_drop_slides_off_a_single_sphere_and_lands_lower) {
+BOOST_AUTO_TEST_CASE(off_center_drop_slides_off_a_single_sphere_and_lands_lower) {
     const std::vector<Particle> bed = {sphere(0, floor_y(), 0)};
     const double offset = 0.3 * kR;
     const DropOutcome out = drop_onto(bed, sphere(offset, 1.0, 0), {});
@@ -194,7 +194,7 @@ BOOST_AUTO_TEST_CASE(a_sphere_that_a_move_brings_to_a_wall_stops_there) {
     BOOST_TEST((blocked.reason != StopReason::Wall));
 }
 
-BOOST_AUTO_TEST_CASE(a_sphere_dropped_dead_centre_on_another_leaves_in_a_random_direction) {
+BOOST_AUTO_TEST_CASE(a_sphere_dropped_dead_center_on_another_leaves_in_a_random_direction) {
     const std::vector<Particle> bed = {sphere(0, floor_y(), 0)};
     const DropOutcome a = drop_onto(bed, sphere(0, 1.0, 0), {}, 1);
     const DropOutcome b = drop_onto(bed, sphere(0, 1.0, 0), {}, 2);

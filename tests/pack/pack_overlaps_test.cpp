@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "sgmp/pack/cell_grid.hpp"
-#include "sgmp/pack/colour_bins.hpp"
+#include "sgmp/pack/color_bins.hpp"
 #include "sgmp/pack/pack_overlaps.hpp"
 #include "sgmp/pack/random.hpp"
 #include "sgmp/pack/sphere_box_volume.hpp"
@@ -100,7 +100,7 @@ BOOST_AUTO_TEST_CASE(pairs_match_brute_force_over_seeds_and_spreads) {
 
 BOOST_AUTO_TEST_CASE(near_queries_of_any_radius_match_brute_force) {
     const std::vector<Particle> ps = random_spheres(300, 0.5, 11);
-    const CellGrid grid(centres_of(ps), 0.05);
+    const CellGrid grid(centers_of(ps), 0.05);
     for (const double radius : {0.0, 0.03, 0.05, 0.31, double(INFINITY)}) {
         const Vec3 p(0.1, -0.2, 0.05);
         std::set<std::size_t> fast;
@@ -115,9 +115,9 @@ BOOST_AUTO_TEST_CASE(near_queries_of_any_radius_match_brute_force) {
     }
 }
 
-BOOST_AUTO_TEST_CASE(a_centre_that_is_not_finite_is_refused) {
-    std::vector<Vec3> centres = {Vec3(0, 0, 0), Vec3(NAN, 0, 0)};
-    BOOST_CHECK_THROW(CellGrid(centres, 0.1), std::invalid_argument);
+BOOST_AUTO_TEST_CASE(a_center_that_is_not_finite_is_refused) {
+    std::vector<Vec3> centers = {Vec3(0, 0, 0), Vec3(NAN, 0, 0)};
+    BOOST_CHECK_THROW(CellGrid(centers, 0.1), std::invalid_argument);
     BOOST_CHECK_THROW(CellGrid({Vec3(0, 0, 0)}, 0.0), std::invalid_argument);
 }
 
@@ -130,17 +130,17 @@ BOOST_AUTO_TEST_CASE(packing_fraction_counts_only_the_part_inside) {
                boost::test_tools::tolerance(1e-10));
 }
 
-BOOST_AUTO_TEST_CASE(colour_bins_share_the_particles_evenly) {
+BOOST_AUTO_TEST_CASE(color_bins_share_the_particles_evenly) {
     for (const std::size_t n : {1u, 9u, 10u, 1002u}) {
         Random rng(3);
-        const std::vector<int> colours = draw_colours(n, rng);
-        BOOST_TEST(colours.size() == n);
-        std::array<std::size_t, kColourBins> count{};
-        for (const int c : colours) {
-            BOOST_TEST_REQUIRE((c >= 0 && c < kColourBins));
+        const std::vector<int> colors = draw_colors(n, rng);
+        BOOST_TEST(colors.size() == n);
+        std::array<std::size_t, kColorBins> count{};
+        for (const int c : colors) {
+            BOOST_TEST_REQUIRE((c >= 0 && c < kColorBins));
             ++count[static_cast<std::size_t>(c)];
         }
-        for (int k = 0; k < kColourBins; ++k) {
+        for (int k = 0; k < kColorBins; ++k) {
             BOOST_TEST(count[static_cast<std::size_t>(k)] ==
                        n / 10 + (static_cast<std::size_t>(k) < n % 10 ? 1u : 0u));
         }
@@ -148,10 +148,10 @@ BOOST_AUTO_TEST_CASE(colour_bins_share_the_particles_evenly) {
     // The order is random and reproducible: two seeds differ, the same seed repeats.
     Random a(1);
     Random b(2);
-    BOOST_TEST(draw_colours(100, a) != draw_colours(100, b));
+    BOOST_TEST(draw_colors(100, a) != draw_colors(100, b));
     Random c(5);
     Random c_again(5);
-    BOOST_TEST(draw_colours(1002, c) == draw_colours(1002, c_again));
+    BOOST_TEST(draw_colors(1002, c) == draw_colors(1002, c_again));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -46,14 +46,14 @@ BOOST_AUTO_TEST_CASE(one_face_gives_the_cap) {
     }
 }
 
-BOOST_AUTO_TEST_CASE(centre_on_an_edge_and_a_corner) {
+BOOST_AUTO_TEST_CASE(center_on_an_edge_and_a_corner) {
     const double r = 0.15;
     BOOST_TEST(sphere_box_volume(Vec3(0.5, 0.0, 0.0), r, control_volume()) == ball(r) / 2, kTight);
     BOOST_TEST(sphere_box_volume(Vec3(0.5, 0.5, 0.0), r, control_volume()) == ball(r) / 4, kTight);
     BOOST_TEST(sphere_box_volume(Vec3(0.5, 0.5, 0.5), r, control_volume()) == ball(r) / 8, kTight);
 }
 
-BOOST_AUTO_TEST_CASE(two_faces_off_centre_against_the_wedge_identity) {
+BOOST_AUTO_TEST_CASE(two_faces_off_center_against_the_wedge_identity) {
     // The planes x = a and y = b split the ball into four wedges; the four must add up to
     // the ball, and the two on one side of x = a to the cap there.
     const double r = 0.3;

@@ -86,23 +86,23 @@ std::string hanging_fake(const fs::path& dir, const std::string& before = "") {
 /// floor, layer upon layer; `edit` may then move sphere 0 (x, y, z) and sphere 1.
 std::string settled_dump(const std::function<void(std::vector<sgmp::Vec3>&)>& edit = {}) {
     const double d = sgmp::diameter_for_count(150);
-    std::vector<sgmp::Vec3> centres;
+    std::vector<sgmp::Vec3> centers;
     for (int i = 0; i < 150; ++i) {
         const int layer = i / 16;
         const int row = (i % 16) / 4;
         const int column = i % 4;
-        centres.emplace_back(-0.625 + d * (0.5 + 1.01 * column), -0.625 + d * (0.5 + 1.01 * layer),
+        centers.emplace_back(-0.625 + d * (0.5 + 1.01 * column), -0.625 + d * (0.5 + 1.01 * layer),
                              -0.625 + d * (0.5 + 1.01 * row));
     }
     if (edit) {
-        edit(centres);
+        edit(centers);
     }
     std::string text =
         "ITEM: TIMESTEP\n1000\nITEM: NUMBER OF ATOMS\n150\nITEM: BOX BOUNDS ff ff ff\n"
         "-0.625 0.625\n-0.625 5\n-0.625 0.625\nITEM: ATOMS id type x y z radius vx vy vz\n";
     for (int i = 0; i < 150; ++i) {
-        text += std::to_string(i + 1) + " 1 " + sgmp::format_number(centres[i].x()) + " " +
-                sgmp::format_number(centres[i].y()) + " " + sgmp::format_number(centres[i].z()) +
+        text += std::to_string(i + 1) + " 1 " + sgmp::format_number(centers[i].x()) + " " +
+                sgmp::format_number(centers[i].y()) + " " + sgmp::format_number(centers[i].z()) +
                 " " + sgmp::format_number(d / 2.0) + " 0 0 0\n";
     }
     return text;

@@ -38,7 +38,7 @@ BOOST_AUTO_TEST_CASE(scene_is_deterministic_and_holds_every_sphere) {
     BOOST_TEST(a.find("camera {") != std::string::npos);
     BOOST_TEST(a.find("cylinder {") != std::string::npos);  // the outline
     SceneOptions height = o;
-    height.colouring = Colouring::Height;
+    height.coloring = Coloring::Height;
     height.container = ContainerStyle::Walls;
     const std::string b = povray_scene(pack, height);
     BOOST_TEST(scene_sphere_count(b) == pack.particles.size());
@@ -97,13 +97,13 @@ BOOST_AUTO_TEST_CASE(views_and_cuts_parse_as_documented) {
 
 BOOST_AUTO_TEST_CASE(palettes) {
     // Tableau 10's first colour, #1f77b4; bins wrap around modulo 10.
-    BOOST_TEST(std::abs(bin_colour(0).r - 0x1f / 255.0) < 1e-15);
-    BOOST_TEST(bin_colour(13).g == bin_colour(3).g);
-    BOOST_TEST(bin_colour(-1).b == bin_colour(9).b);
+    BOOST_TEST(std::abs(bin_color(0).r - 0x1f / 255.0) < 1e-15);
+    BOOST_TEST(bin_color(13).g == bin_color(3).g);
+    BOOST_TEST(bin_color(-1).b == bin_color(9).b);
     // viridis ends: #440154 and #fde725; clamped outside [0, 1].
-    BOOST_TEST(std::abs(height_colour(0.0).b - 0x54 / 255.0) < 1e-15);
-    BOOST_TEST(std::abs(height_colour(1.0).g - 0xe7 / 255.0) < 1e-15);
-    BOOST_TEST(height_colour(2.0).r == height_colour(1.0).r);
+    BOOST_TEST(std::abs(height_color(0.0).b - 0x54 / 255.0) < 1e-15);
+    BOOST_TEST(std::abs(height_color(1.0).g - 0xe7 / 255.0) < 1e-15);
+    BOOST_TEST(height_color(2.0).r == height_color(1.0).r);
     // sRGB 0.5 is linear 0.21404 (the standard transfer function).
     BOOST_TEST(std::abs(linear_from_srgb(Rgb{0.5, 0.5, 0.5}).r - 0.2140411404) < 1e-9);
 }

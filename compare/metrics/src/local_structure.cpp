@@ -77,10 +77,10 @@ struct SplitWindows {
     bool inside_range;  // both windows lie within the g(r) range
 
     SplitWindows(double d, double outer) {
-        const double centres[2] = {kSplitLow, kSplitHigh};
+        const double centers[2] = {kSplitLow, kSplitHigh};
         for (int w = 0; w < 2; ++w) {
-            lo[w] = (centres[w] - kSplitWindowHalfWidth) * d;
-            hi[w] = (centres[w] + kSplitWindowHalfWidth) * d;
+            lo[w] = (centers[w] - kSplitWindowHalfWidth) * d;
+            hi[w] = (centers[w] + kSplitWindowHalfWidth) * d;
         }
         inside_range = hi[1] <= outer;
     }

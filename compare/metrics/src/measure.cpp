@@ -201,7 +201,7 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     local.density_rule = options.gr_density;
     local.q6_cutoff = options.q6_cutoff;
     local.space = options.gr_container_space ? container_space(particles, m.container)
-                                             : centre_space(particles, m.container, 0.5 * d);
+                                             : center_space(particles, m.container, 0.5 * d);
     local.container = m.container;
     m.local = measure_local_structure(particles, origins, local);
     if (options.gr_thesis) {

@@ -86,16 +86,16 @@ struct NeighbourIndex::Impl {
         tree.build();
     }
 
-    /// The points of `input` (Vec3 or Particle, read by `centre`).
-    template <class T, class Centre>
-    static std::vector<Point> make_points(const std::vector<T>& input, Centre centre) {
+    /// The points of `input` (Vec3 or Particle, read by `center`).
+    template <class T, class Center>
+    static std::vector<Point> make_points(const std::vector<T>& input, Center center) {
         if (input.size() >= std::numeric_limits<Index>::max()) {
             throw std::length_error("too many points for the neighbour index");
         }
         std::vector<Point> result;
         result.reserve(input.size());
         for (const T& item : input) {
-            const Vec3& p = centre(item);
+            const Vec3& p = center(item);
             result.emplace_back(p.x(), p.y(), p.z());
         }
         return result;
@@ -140,12 +140,12 @@ std::vector<Index> NeighbourIndex::report_rank() const {
                 hi[a] = std::max(hi[a], p[a]);
             }
         }
-        const Point centre(0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2]));
+        const Point center(0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2]));
         double radius = 1.0;  // more than the whole box: the root reports every point
         for (int a = 0; a < 3; ++a) {
             radius += hi[a] - lo[a];
         }
-        impl_->tree.search(std::back_inserter(order), Sphere(centre, radius, 0.0, impl_->traits));
+        impl_->tree.search(std::back_inserter(order), Sphere(center, radius, 0.0, impl_->traits));
     }
     if (order.size() != points.size()) {
         throw std::logic_error("the kd-tree did not report every point once");

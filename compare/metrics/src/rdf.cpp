@@ -10,7 +10,7 @@
 
 namespace sgmp::compare {
 
-Box centre_space(const std::vector<Particle>& particles, const Container& container,
+Box center_space(const std::vector<Particle>& particles, const Container& container,
                  double mean_radius) {
     double top = -std::numeric_limits<double>::infinity();
     for (const Particle& p : particles) {

@@ -81,17 +81,17 @@ void write_gr_plot(std::ostringstream& gp, const fs::path& plots, const PlotPane
         const auto& curve = panel.curves[k];
         const std::string file = stem + "_gr_" + std::to_string(k) + ".dat";
         write_text_file(plots / file, columns(curve.curves->gr_r, curve.curves->gr));
-        const std::string colour = " lt " + std::to_string(k + 1);
+        const std::string color = " lt " + std::to_string(k + 1);
         if (curve.reference) {
             const std::string band = stem + "_grband_" + std::to_string(k) + ".dat";
             write_text_file(plots / band, band_columns(curve.curves->gr_r, curve.curves->gr,
                                                        curve.curves->gr_sd));
             main << "'" << band << "' using 1:2:3 with filledcurves fs transparent solid 0.25"
-                 << colour << " notitle, ";
+                 << color << " notitle, ";
         }
-        main << "'" << file << "' with lines" << colour << (curve.reference ? " dt 2" : "")
+        main << "'" << file << "' with lines" << color << (curve.reference ? " dt 2" : "")
              << " title " << quoted(curve.label + (curve.reference ? " ± 2 sd" : "")) << ", ";
-        inset << "'" << file << "' with lines" << colour << (curve.reference ? " dt 2" : "")
+        inset << "'" << file << "' with lines" << color << (curve.reference ? " dt 2" : "")
               << " notitle, ";
     }
     const auto trimmed = [](std::string text) { return text.substr(0, text.size() - 2); };
@@ -130,14 +130,14 @@ std::vector<std::string> write_trend_plots(std::ostringstream& gp, const fs::pat
             label = t.metric_label;
             ++k;
             const std::string file = "trend_" + metric + "_" + std::to_string(k) + ".dat";
-            const std::string colour = " lt " + std::to_string(k);
+            const std::string color = " lt " + std::to_string(k);
             if (t.reference) {
                 write_text_file(plots / file, band_columns(t.count, t.mean, t.sd));
                 plot << "'" << file << "' using 1:2:3 with filledcurves fs transparent solid 0.3"
-                     << colour << " title " << quoted(t.label + " ± 2 sd") << ", ";
+                     << color << " title " << quoted(t.label + " ± 2 sd") << ", ";
             } else {
                 write_text_file(plots / file, columns(t.count, t.mean));
-                plot << "'" << file << "' with linespoints pt 7 ps 0.8" << colour << " title "
+                plot << "'" << file << "' with linespoints pt 7 ps 0.8" << color << " title "
                      << quoted(t.label) << ", ";
             }
         }

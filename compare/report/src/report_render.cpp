@@ -373,7 +373,7 @@ const char* kStyle =
     "nav{background:#f7f7f7;padding:4px 10px;border:1px solid #ddd}</style>";
 
 /// Verdict words and marks in table cells get their colour class.
-std::string colour_verdicts(std::string html) {
+std::string color_verdicts(std::string html) {
     const std::pair<std::string, std::string> marks[] = {
         {"<td>agree</td>", "<td class=\"agree\">agree</td>"},
         {"<td>differ</td>", "<td class=\"differ\">differ</td>"},
@@ -406,7 +406,7 @@ std::string render_html(const Report& report, const ReportContext& context,
                         const std::vector<std::string>& svgs) {
     const std::string markdown = markdown_page(report, context, false);
     // The plots go after the lead sections (before "## Rules") when plotted per count.
-    std::string body = colour_verdicts(markdown_to_html(markdown));
+    std::string body = color_verdicts(markdown_to_html(markdown));
     const std::string plots = plots_html(context, svgs);
     const std::string anchor = "<h2>Rules</h2>";
     const auto at = body.find(anchor);

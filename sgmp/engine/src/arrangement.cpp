@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "sgmp/engine/settled_grid.hpp"
-#include "sgmp/pack/colour_bins.hpp"
+#include "sgmp/pack/color_bins.hpp"
 
 namespace sgmp::engine {
 
@@ -15,12 +15,12 @@ namespace {
 constexpr std::array<std::string_view, 4> kNames = {"single-column", "small-dense", "large-dense",
                                                     "loose-random"};
 
-Particle make_particle(std::size_t index, const Vec3& center, double diameter, int colour) {
-    return Particle{static_cast<std::int64_t>(index + 1), center, 0.5 * diameter, colour};
+Particle make_particle(std::size_t index, const Vec3& center, double diameter, int color) {
+    return Particle{static_cast<std::int64_t>(index + 1), center, 0.5 * diameter, color};
 }
 
 /// Centres 0.2 of the two diameters' mean apart (1.2·d apart for equal spheres).
-std::vector<Particle> single_column(const std::vector<double>& d, const std::vector<int>& colours,
+std::vector<Particle> single_column(const std::vector<double>& d, const std::vector<int>& colors,
                                     const Container& box) {
     std::vector<Particle> out;
     out.reserve(d.size());
@@ -29,7 +29,7 @@ std::vector<Particle> single_column(const std::vector<double>& d, const std::vec
         if (i > 0) {
             y += 0.6 * (d[i - 1] + d[i]);
         }
-        out.push_back(make_particle(i, Vec3(0.0, y, 0.0), d[i], colours[i]));
+        out.push_back(make_particle(i, Vec3(0.0, y, 0.0), d[i], colors[i]));
     }
     return out;
 }
@@ -37,7 +37,7 @@ std::vector<Particle> single_column(const std::vector<double>& d, const std::vec
 /// n × n layers with centres at lo + (i + ½)·width/n; layer L spans
 /// [floor + L·d_max, floor + (L+1)·d_max) and its spheres rest on its bottom.
 std::vector<Particle> layers(const std::vector<double>& d, double d_max, int n, double lo,
-                             double width, const std::vector<int>& colours, const Container& box) {
+                             double width, const std::vector<int>& colors, const Container& box) {
     std::vector<Particle> out;
     out.reserve(d.size());
     const double spacing = width / n;
@@ -48,13 +48,13 @@ std::vector<Particle> layers(const std::vector<double>& d, double d_max, int n, 
         const double x = lo + (static_cast<double>(in_layer % n) + 0.5) * spacing;
         const double z = lo + (static_cast<double>(in_layer / n) + 0.5) * spacing;
         const double y = box.floor + 0.5 * d[i] + d_max * static_cast<double>(layer);
-        out.push_back(make_particle(i, Vec3(x, y, z), d[i], colours[i]));
+        out.push_back(make_particle(i, Vec3(x, y, z), d[i], colors[i]));
     }
     return out;
 }
 
 std::vector<Particle> loose_random(const std::vector<double>& d, double d_max,
-                                   const std::vector<int>& colours, const Container& box,
+                                   const std::vector<int>& colors, const Container& box,
                                    Random& rng) {
     std::vector<Particle> out;
     out.reserve(d.size());
@@ -79,7 +79,7 @@ std::vector<Particle> loose_random(const std::vector<double>& d, double d_max,
         const double y = lowest_free_height(grid, x, z, r, 0.5 * d_max, from, blocked);
         y_previous = y;
         r_previous = r;
-        out.push_back(make_particle(i, Vec3(x, y, z), d[i], colours[i]));
+        out.push_back(make_particle(i, Vec3(x, y, z), d[i], colors[i]));
         grid.insert(Sphere{x, y, z, r});
         if (grid.layers() > kWindowLayers) {
             window.floor = y - r - 2.0 * d_max;
@@ -150,17 +150,17 @@ std::vector<Particle> make_arrangement(Arrangement arrangement,
         throw std::invalid_argument("diameters must be in (0, 1.25)");
     }
     const Container box;
-    const std::vector<int> colours = draw_colours(diameters.size(), rng);
+    const std::vector<int> colors = draw_colors(diameters.size(), rng);
     const int n = grid_columns(arrangement, *d_max);
     switch (arrangement) {
         case Arrangement::SingleColumn:
-            return single_column(diameters, colours, box);
+            return single_column(diameters, colors, box);
         case Arrangement::SmallDense:
-            return layers(diameters, *d_max, n, -0.5 * kControlSide, kControlSide, colours, box);
+            return layers(diameters, *d_max, n, -0.5 * kControlSide, kControlSide, colors, box);
         case Arrangement::LargeDense:
-            return layers(diameters, *d_max, n, box.x_min, box.x_max - box.x_min, colours, box);
+            return layers(diameters, *d_max, n, box.x_min, box.x_max - box.x_min, colors, box);
         case Arrangement::LooseRandom:
-            return loose_random(diameters, *d_max, colours, box, rng);
+            return loose_random(diameters, *d_max, colors, box, rng);
     }
     return {};
 }

@@ -80,10 +80,10 @@ double first_plane_on(const Container& box, const Meridian& m, double r) {
         if (at >= m.phi0)
             end = std::min(end, at);
     }
-    const auto wall = [&](double centre, double direction, double bound) {
+    const auto wall = [&](double center, double direction, double bound) {
         if (direction == 0.0)
             return;
-        const double sine = (bound - centre) / (m.D * direction);
+        const double sine = (bound - center) / (m.D * direction);
         if (sine >= std::sin(m.phi0) && sine <= 1.0)
             end = std::min(end, std::asin(sine));
     };

@@ -67,7 +67,7 @@ PackCheck check_pack(const std::vector<Particle>& particles, const Container& co
         return result;
     }
     const double r_max = max_radius(particles);
-    const CellGrid grid(centres_of(particles), 2.0 * r_max);
+    const CellGrid grid(centers_of(particles), 2.0 * r_max);
     if (particles.size() >= 2 && r_max > 0.0) {
         count_pair_overlaps(particles, grid, overlap_tolerance, result);
     }
@@ -145,7 +145,7 @@ RestCheck check_rolled_rest(const std::vector<Particle>& particles, const Contai
         return result;
     }
     const double r_max = max_radius(particles);
-    const CellGrid grid(centres_of(particles), 2.0 * r_max);
+    const CellGrid grid(centers_of(particles), 2.0 * r_max);
     // Drop order is id order: each sphere is checked against the spheres placed before it.
     std::vector<Vec3> normals;
     for (const std::size_t i : id_order(particles)) {

@@ -18,7 +18,7 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kNever = std::numeric_limits<double>::infinity();
 const Vec3 kUp = Vec3::UnitY();
 
-Vec3 centre(const Sphere& s) {
+Vec3 center(const Sphere& s) {
     return Vec3(s.x, s.y, s.z);
 }
 
@@ -96,7 +96,7 @@ Hit first_hit(const Context& ctx, const Arc& arc, const Sphere* contacts, int co
             if (same(s, contacts[i]))
                 return;
         }
-        const Vec3 w = arc.m - centre(s);
+        const Vec3 w = arc.m - center(s);
         const double D = r + s.r;
         const double phi = entering_root(w.squaredNorm() + arc.rho * arc.rho - D * D,
                                          2.0 * arc.rho * w.dot(arc.e1),
@@ -141,7 +141,7 @@ Motion choose_motion(const Vec3& p, const Sphere* contacts, int count) {
     constexpr double kEps = 1e-12;
     std::array<Vec3, 3> n;
     for (int i = 0; i < count; ++i)
-        n[i] = (p - centre(contacts[i])).normalized();
+        n[i] = (p - center(contacts[i])).normalized();
     if (count == 3) {
         Eigen::Matrix3d normals;
         for (int i = 0; i < 3; ++i)
@@ -269,7 +269,7 @@ std::optional<RollResult> move_along(Roller& s, const Arc& arc, double phi) {
 /// One support j: down its meridian in `direction` to the first new contact, or to its
 /// equator, from where the particle falls (no support left).
 std::optional<RollResult> single_leg(Roller& s, const Vec3& direction) {
-    const Vec3 cj = centre(s.contacts[0]);
+    const Vec3 cj = center(s.contacts[0]);
     const Arc arc{cj, s.ctx.r + s.contacts[0].r, (s.p - cj).normalized(), direction};
     const double equator = std::atan2(arc.e1.y(), -arc.e2.y());
     const Hit hit = first_hit(s.ctx, arc, s.contacts.data(), s.count);
@@ -286,8 +286,8 @@ std::optional<RollResult> single_leg(Roller& s, const Vec3& direction) {
 /// The circle where the contact spheres of supports j and k meet, through p, rolled along
 /// the downhill tangent t.
 Arc pair_circle(const Roller& s, const Vec3& t) {
-    const Vec3 cj = centre(s.contacts[0]);
-    const Vec3 axis = centre(s.contacts[1]) - cj;
+    const Vec3 cj = center(s.contacts[0]);
+    const Vec3 axis = center(s.contacts[1]) - cj;
     const double L = axis.norm();
     const double Dj = s.ctx.r + s.contacts[0].r;
     const double Dk = s.ctx.r + s.contacts[1].r;
@@ -300,8 +300,8 @@ Arc pair_circle(const Roller& s, const Vec3& t) {
 /// Where on [0, phi] a support force of the pair first vanishes (just past it, by
 /// bisection to 60 halvings), or phi when both stay compressive to the end.
 double force_vanishes(const Roller& s, const Arc& arc, double phi, bool& vanishes) {
-    const Vec3 cj = centre(s.contacts[0]);
-    const Vec3 ck = centre(s.contacts[1]);
+    const Vec3 cj = center(s.contacts[0]);
+    const Vec3 ck = center(s.contacts[1]);
     const auto pulls = [&](double angle) {
         const Vec3 q = arc.at(angle);
         const auto f = two_forces((q - cj).normalized(), (q - ck).normalized());

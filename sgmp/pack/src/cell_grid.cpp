@@ -22,20 +22,20 @@ double cell_count(const std::array<std::int64_t, 3>& dims) {
 
 }  // namespace
 
-CellGrid::CellGrid(const std::vector<Vec3>& centres, double reach)
-    : centres_(centres), reach_(reach) {
+CellGrid::CellGrid(const std::vector<Vec3>& centers, double reach)
+    : centers_(centers), reach_(reach) {
     if (!(reach > 0.0) || !std::isfinite(reach)) {
         throw std::invalid_argument("cell grid: reach must be a positive finite length");
     }
-    if (centres_.size() >= std::numeric_limits<std::uint32_t>::max()) {
+    if (centers_.size() >= std::numeric_limits<std::uint32_t>::max()) {
         throw std::invalid_argument("cell grid: too many centres");
     }
     Vec3 lo = Vec3::Zero();
     Vec3 hi = Vec3::Zero();
-    if (!centres_.empty()) {
-        lo = hi = centres_.front();
+    if (!centers_.empty()) {
+        lo = hi = centers_.front();
     }
-    for (const Vec3& c : centres_) {
+    for (const Vec3& c : centers_) {
         if (!c.allFinite()) {
             throw std::invalid_argument("cell grid: a centre is not finite");
         }
@@ -45,7 +45,7 @@ CellGrid::CellGrid(const std::vector<Vec3>& centres, double reach)
     origin_ = lo;
     const Vec3 span = hi - lo;
     // Widen the cells until the grid holds at most 2N + 64 of them.
-    const double max_cells = 2.0 * static_cast<double>(centres_.size()) + 64.0;
+    const double max_cells = 2.0 * static_cast<double>(centers_.size()) + 64.0;
     side_ = reach;
     while (cell_count(dims_for(span, side_)) > max_cells) {
         side_ *= 1.25;
@@ -54,10 +54,10 @@ CellGrid::CellGrid(const std::vector<Vec3>& centres, double reach)
     const auto cells = static_cast<std::size_t>(cell_count(dims_));
 
     // Counting sort of the centres by cell; members of a cell stay in increasing order.
-    std::vector<std::uint32_t> cell_of(centres_.size());
+    std::vector<std::uint32_t> cell_of(centers_.size());
     start_.assign(cells + 1, 0);
-    for (std::size_t i = 0; i < centres_.size(); ++i) {
-        const Vec3& c = centres_[i];
+    for (std::size_t i = 0; i < centers_.size(); ++i) {
+        const Vec3& c = centers_[i];
         const std::int64_t cell =
             (axis_cell(0, c.x()) * dims_[1] + axis_cell(1, c.y())) * dims_[2] + axis_cell(2, c.z());
         cell_of[i] = static_cast<std::uint32_t>(cell);
@@ -66,9 +66,9 @@ CellGrid::CellGrid(const std::vector<Vec3>& centres, double reach)
     for (std::size_t c = 0; c < cells; ++c) {
         start_[c + 1] += start_[c];
     }
-    members_.resize(centres_.size());
+    members_.resize(centers_.size());
     std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-    for (std::size_t i = 0; i < centres_.size(); ++i) {
+    for (std::size_t i = 0; i < centers_.size(); ++i) {
         members_[fill[cell_of[i]]++] = static_cast<std::uint32_t>(i);
     }
 }
@@ -82,13 +82,13 @@ std::int64_t CellGrid::axis_cell(int a, double x) const {
     return static_cast<std::int64_t>(std::min(cell, last));
 }
 
-std::vector<Vec3> centres_of(const std::vector<Particle>& particles) {
-    std::vector<Vec3> centres;
-    centres.reserve(particles.size());
+std::vector<Vec3> centers_of(const std::vector<Particle>& particles) {
+    std::vector<Vec3> centers;
+    centers.reserve(particles.size());
     for (const Particle& p : particles) {
-        centres.push_back(p.center);
+        centers.push_back(p.center);
     }
-    return centres;
+    return centers;
 }
 
 }  // namespace sgmp

@@ -14,7 +14,7 @@ constexpr Rgb from_hex(unsigned hex) {
 }
 
 /// Tableau 10, the qualitative palette of matplotlib's "tab10".
-constexpr std::array<Rgb, kBinColours> kTableau10 = {
+constexpr std::array<Rgb, kBinColors> kTableau10 = {
     from_hex(0x1f77b4), from_hex(0xff7f0e), from_hex(0x2ca02c), from_hex(0xd62728),
     from_hex(0x9467bd), from_hex(0x8c564b), from_hex(0xe377c2), from_hex(0x7f7f7f),
     from_hex(0xbcbd22), from_hex(0x17becf)};
@@ -31,12 +31,12 @@ double linear(double s) {
 
 }  // namespace
 
-Rgb bin_colour(int bin) {
-    const int wrapped = ((bin % kBinColours) + kBinColours) % kBinColours;
+Rgb bin_color(int bin) {
+    const int wrapped = ((bin % kBinColors) + kBinColors) % kBinColors;
     return kTableau10[static_cast<std::size_t>(wrapped)];
 }
 
-Rgb height_colour(double t) {
+Rgb height_color(double t) {
     const double clamped = std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.0;
     const double x = clamped * static_cast<double>(kViridis.size() - 1);
     const auto k = std::min(static_cast<std::size_t>(x), kViridis.size() - 2);

@@ -157,9 +157,9 @@ void write_spheres(std::ostream& out, const Pack& pack, const std::vector<std::s
                    const SceneOptions& o, double floor, double top) {
     out << "#declare Shade = finish { ambient 0.10 diffuse 0.75 specular 0.35 roughness 0.015 "
            "}\n";
-    if (o.colouring == Colouring::Bin) {
-        for (int bin = 0; bin < kBinColours; ++bin) {
-            out << "#declare Bin" << bin << " = texture { pigment { color " << rgb(bin_colour(bin))
+    if (o.coloring == Coloring::Bin) {
+        for (int bin = 0; bin < kBinColors; ++bin) {
+            out << "#declare Bin" << bin << " = texture { pigment { color " << rgb(bin_color(bin))
                 << " } finish { Shade } }\n";
         }
     }
@@ -167,10 +167,10 @@ void write_spheres(std::ostream& out, const Pack& pack, const std::vector<std::s
     for (const std::size_t i : kept) {
         const Particle& p = pack.particles[i];
         out << "sphere{" << vec(p.center) << "," << num(p.radius) << " texture{";
-        if (o.colouring == Colouring::Bin) {
-            out << "Bin" << ((p.color % kBinColours) + kBinColours) % kBinColours;
+        if (o.coloring == Coloring::Bin) {
+            out << "Bin" << ((p.color % kBinColors) + kBinColors) % kBinColors;
         } else {
-            out << "pigment{color " << rgb(height_colour((p.center.y() - floor) / span))
+            out << "pigment{color " << rgb(height_color((p.center.y() - floor) / span))
                 << "} finish{Shade}";
         }
         out << "}}\n";
@@ -179,12 +179,12 @@ void write_spheres(std::ostream& out, const Pack& pack, const std::vector<std::s
 
 }  // namespace
 
-std::optional<Colouring> parse_colouring(std::string_view text) {
+std::optional<Coloring> parse_coloring(std::string_view text) {
     if (text == "bin") {
-        return Colouring::Bin;
+        return Coloring::Bin;
     }
     if (text == "height") {
-        return Colouring::Height;
+        return Coloring::Height;
     }
     return std::nullopt;
 }

@@ -35,11 +35,11 @@ class PourError : public std::runtime_error {
 };
 
 /// Starting positions given by the caller (an SGMP arrangement), project units. Sphere i
-/// gets id i + 1 and keeps colour `colours[i]` when colours are given.
+/// gets id i + 1 and keeps colour `colors[i]` when colours are given.
 struct StartPositions {
     std::string name;
     std::vector<Vec3> centers;
-    std::vector<int> colours;  ///< empty: colours drawn from the ten bins
+    std::vector<int> colors;  ///< empty: colours drawn from the ten bins
     /// How far a start sphere may reach through a wall or the floor, over d: 0 (up to
     /// rounding) for an SGMP arrangement; a settled pour's bound when the start is a pack
     /// file, whose DEM pours keep their soft wall contacts (up to 0.006 d in the stored set).

@@ -48,7 +48,7 @@
 namespace sgmp::compare {
 
 /// The space of neighbour centres S described above.
-Box centre_space(const std::vector<Particle>& particles, const Container& container,
+Box center_space(const std::vector<Particle>& particles, const Container& container,
                  double mean_radius);
 
 /// The literal reading (option --gr-container-space): the container up to the top of

@@ -2,7 +2,7 @@
 /// @file arrangement.hpp
 /// The four starting arrangements of the thesis (chapters 5–8): where the particles are
 /// before the protocol drops them. Ids are 1..N in drop order; colours come from the ten
-/// colour bins (colour_bins.hpp). Every starting sphere lies inside the container (walls at
+/// colour bins (color_bins.hpp). Every starting sphere lies inside the container (walls at
 /// x, z = ±0.625, floor y = −0.625); spheres of the starting arrangement may touch but
 /// never overlap. Choices where the thesis is silent are stated per arrangement.
 #include <cstddef>

@@ -23,24 +23,24 @@ class CellGrid {
   public:
     /// `reach` > 0 bounds the pair distance of `for_each_pair`. Centres must be finite
     /// (std::invalid_argument otherwise).
-    CellGrid(const std::vector<Vec3>& centres, double reach);
+    CellGrid(const std::vector<Vec3>& centers, double reach);
 
-    [[nodiscard]] std::size_t size() const { return centres_.size(); }
+    [[nodiscard]] std::size_t size() const { return centers_.size(); }
     [[nodiscard]] double cell_side() const { return side_; }
-    [[nodiscard]] const Vec3& centre(std::size_t i) const { return centres_[i]; }
+    [[nodiscard]] const Vec3& center(std::size_t i) const { return centers_[i]; }
 
     /// Calls f(i, j, distance²) once for every pair i < j with |c_i − c_j| < reach, in
     /// increasing i, then by cell, then by increasing j.
     template <class F>
     void for_each_pair(F&& f) const {
         const double reach2 = reach_ * reach_;
-        for (std::size_t i = 0; i < centres_.size(); ++i) {
-            const Vec3& c = centres_[i];
+        for (std::size_t i = 0; i < centers_.size(); ++i) {
+            const Vec3& c = centers_[i];
             visit_cells(c, reach_, [&](std::uint32_t j) {
                 if (j <= i) {
                     return;
                 }
-                const double r2 = (centres_[j] - c).squaredNorm();
+                const double r2 = (centers_[j] - c).squaredNorm();
                 if (r2 < reach2) {
                     f(i, static_cast<std::size_t>(j), r2);
                 }
@@ -54,7 +54,7 @@ class CellGrid {
     void for_each_near(const Vec3& p, double radius, F&& f) const {
         const double radius2 = radius * radius;
         visit_cells(p, radius, [&](std::uint32_t j) {
-            const double r2 = (centres_[j] - p).squaredNorm();
+            const double r2 = (centers_[j] - p).squaredNorm();
             if (r2 <= radius2) {
                 f(static_cast<std::size_t>(j), r2);
             }
@@ -88,7 +88,7 @@ class CellGrid {
         }
     }
 
-    std::vector<Vec3> centres_;
+    std::vector<Vec3> centers_;
     double reach_ = 0.0;
     double side_ = 0.0;
     Vec3 origin_ = Vec3::Zero();
@@ -98,6 +98,6 @@ class CellGrid {
 };
 
 /// The centres of `particles`, in order (the usual input of CellGrid).
-std::vector<Vec3> centres_of(const std::vector<Particle>& particles);
+std::vector<Vec3> centers_of(const std::vector<Particle>& particles);
 
 }  // namespace sgmp

@@ -26,7 +26,7 @@ void for_each_overlap(const std::vector<Particle>& particles, const Container& c
                       OnPair&& on_pair, OnWall&& on_wall) {
     const double r_max = max_radius(particles);
     if (particles.size() >= 2 && r_max > 0.0) {
-        const CellGrid grid(centres_of(particles), 2.0 * r_max);
+        const CellGrid grid(centers_of(particles), 2.0 * r_max);
         grid.for_each_pair([&](std::size_t i, std::size_t j, double) {
             const Particle& a = particles[i];
             const Particle& b = particles[j];

@@ -38,8 +38,8 @@ struct Slab {
     Vec3 normal = Vec3::UnitZ();
     double lo = -std::numeric_limits<double>::infinity();
     double hi = std::numeric_limits<double>::infinity();
-    [[nodiscard]] bool keeps(const Vec3& centre) const {
-        const double s = normal.dot(centre);
+    [[nodiscard]] bool keeps(const Vec3& center) const {
+        const double s = normal.dot(center);
         return s >= lo && s <= hi;
     }
 };

@@ -15,16 +15,16 @@ struct Rgb {
 };
 
 /// Number of colours of the qualitative palette (the colour bins 0–9).
-inline constexpr int kBinColours = 10;
+inline constexpr int kBinColors = 10;
 
 /// The qualitative colour of bin `bin` (Tableau 10); bins outside [0, 10) wrap around.
-Rgb bin_colour(int bin);
+Rgb bin_color(int bin);
 
 /// The sequential colour at t ∈ [0, 1] (viridis, piecewise linear between 9 stops);
 /// t outside [0, 1] is clamped.
-Rgb height_colour(double t);
+Rgb height_color(double t);
 
 /// sRGB → linear light (the formula in the file comment), per channel.
-Rgb linear_from_srgb(const Rgb& colour);
+Rgb linear_from_srgb(const Rgb& color);
 
 }  // namespace sgmp::render

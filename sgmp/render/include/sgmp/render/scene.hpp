@@ -16,14 +16,14 @@
 
 namespace sgmp::render {
 
-enum class Colouring { Bin, Height };
+enum class Coloring { Bin, Height };
 enum class ContainerStyle { Outline, Walls, None };
 
 struct SceneOptions {
     int width = 800;  ///< pixels (only the aspect ratio enters the scene)
     int height = 800;
     View view;
-    Colouring colouring = Colouring::Bin;
+    Coloring coloring = Coloring::Bin;
     ContainerStyle container = ContainerStyle::Outline;
     CutSpec cut;
     /// Free text placed in the scene's first comment lines (what made it).
@@ -31,7 +31,7 @@ struct SceneOptions {
 };
 
 /// Parses "bin" | "height", and "outline" | "walls" | "none".
-std::optional<Colouring> parse_colouring(std::string_view text);
+std::optional<Coloring> parse_coloring(std::string_view text);
 std::optional<ContainerStyle> parse_container_style(std::string_view text);
 
 /// The scene text. The container is the pack's `container` header key (the thesis

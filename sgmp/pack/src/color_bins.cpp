@@ -1,16 +1,16 @@
-#include "sgmp/pack/colour_bins.hpp"
+#include "sgmp/pack/color_bins.hpp"
 
 #include <array>
 
 namespace sgmp {
 
-std::vector<int> draw_colours(std::size_t count, Random& rng) {
-    std::array<std::size_t, kColourBins> left{};
-    for (int k = 0; k < kColourBins; ++k) {
-        left[k] = count / kColourBins + (static_cast<std::size_t>(k) < count % kColourBins ? 1 : 0);
+std::vector<int> draw_colors(std::size_t count, Random& rng) {
+    std::array<std::size_t, kColorBins> left{};
+    for (int k = 0; k < kColorBins; ++k) {
+        left[k] = count / kColorBins + (static_cast<std::size_t>(k) < count % kColorBins ? 1 : 0);
     }
-    std::vector<int> colours;
-    colours.reserve(count);
+    std::vector<int> colors;
+    colors.reserve(count);
     for (std::size_t i = 0; i < count; ++i) {
         int non_empty = 0;
         for (const std::size_t n : left) {
@@ -18,18 +18,18 @@ std::vector<int> draw_colours(std::size_t count, Random& rng) {
         }
         // The `pick`-th non-empty bin, counted from bin 0.
         auto pick = static_cast<int>(rng.below(static_cast<std::uint64_t>(non_empty)));
-        for (int k = 0; k < kColourBins; ++k) {
+        for (int k = 0; k < kColorBins; ++k) {
             if (left[k] == 0) {
                 continue;
             }
             if (pick-- == 0) {
                 --left[k];
-                colours.push_back(k);
+                colors.push_back(k);
                 break;
             }
         }
     }
-    return colours;
+    return colors;
 }
 
 }  // namespace sgmp

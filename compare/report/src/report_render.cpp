@@ -361,7 +361,7 @@ const char* kStyle =
     "<style>body{font-family:sans-serif;max-width:1360px;margin:auto;padding:0 12px;"
     "line-height:1.35}table{border-collapse:collapse;font-size:13px;margin:6px 0}"
     "td:has(> span){white-space:nowrap}td span{letter-spacing:-1.5px;font-size:12px}"
-    "td,code{overflow-wrap:anywhere}"
+    "code{overflow-wrap:anywhere}td{overflow-wrap:break-word}"
     "td,th{border:1px solid #bbb;padding:2px 4px}th{background:#f2f2f2}"
     "td:has(> .agree:only-child){background:#e6f0fa}"
     ".agree{color:#0072B2;font-weight:bold}.differ{color:#D55E00;font-weight:bold}"

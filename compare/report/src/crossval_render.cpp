@@ -84,8 +84,12 @@ void stand_in_markdown(std::ostringstream& md, const CrossValidation& cv) {
             md << "; worst: " << best.worst_metric << " at N = " << best.worst_count << ", ratio "
                << sig(best.worst_ratio);
         }
-        md << "; " << speed(best.speedup)
-           << " faster than the DEM pour at N = " << best.speedup_count << ").";
+        if (best.speedup_count > 0) {
+            md << "; " << speed(best.speedup)
+               << " faster than the DEM pour at N = " << best.speedup_count << ").";
+        } else {
+            md << "; speed not compared: the inputs record no wall times).";
+        }
         if (per.size() > 1) {
             md << " Others:";
             for (std::size_t i = 1; i < per.size(); ++i) {

@@ -191,7 +191,8 @@ void add_relax(CLI::App& app, Options& o) {
                    "(relax_force_max)")
         ->capture_default_str();
     app.add_option("--relax-friction", r.friction,
-                   "sliding friction mu of --relax frictional (pairs and walls), in [0, 10]")
+                   "sliding friction mu of --relax frictional (pairs and walls), in [0, 10]; "
+                   "0.2 stands in for DEM pours at mu = 0.5")
         ->capture_default_str();
     app.add_option("--relax-tangential-ratio", r.tangential_ratio,
                    "tangential over normal contact stiffness of --relax frictional, in (0, 1]")

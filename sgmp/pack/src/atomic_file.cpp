@@ -127,8 +127,10 @@ void write_file_atomically(const fs::path& target, bool overwrite,
                            const std::function<void(std::ostream&)>& produce) {
     check_writable(target, overwrite);
     const fs::path temporary = sibling_temporary(target, "tmp");
-    const TemporaryGuard guard(temporary);
-    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    int fd = -1;
+    const TemporaryGuard guard(temporary, [&] {
+        fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    });
     if (fd < 0) {
         throw path_error(
             target, std::string("cannot create a file in its directory: ") + std::strerror(errno));
@@ -183,10 +185,11 @@ void write_directory_atomically(const fs::path& target, bool overwrite,
                                 const std::function<void(const fs::path&)>& produce) {
     check_writable(target, overwrite);
     const fs::path temporary = sibling_temporary(target, "tmp");
-    const TemporaryGuard guard(temporary);
     std::error_code ignored;
-    fs::remove_all(temporary, ignored);
-    fs::create_directories(temporary);
+    const TemporaryGuard guard(temporary, [&] {
+        fs::remove_all(temporary, ignored);
+        fs::create_directories(temporary);
+    });
     try {
         produce(temporary);
         if (fs::exists(target)) {

@@ -45,7 +45,13 @@ void watch(const std::string& program, const std::function<bool()>& on_interrupt
         if (on_interrupt && on_interrupt()) {
             continue;  // the program stops by itself
         }
-        remove_registered_temporaries();
+        // The registry stays locked until the process ends: a thread that is about to
+        // create a temporary (TemporaryGuard creates it under this lock) waits instead of
+        // leaving one behind after the sweep.
+        registry_mutex.lock();
+        for (const auto& path : registry()) {
+            remove_temporary(path);
+        }
         const std::string message = program + ": interrupted by " +
                                     (byte == SIGINT ? "SIGINT" : "SIGTERM") +
                                     "; its temporary files are removed\n";
@@ -80,9 +86,18 @@ void remove_registered_temporaries() {
     }
 }
 
-TemporaryGuard::TemporaryGuard(fs::path path) : path_(std::move(path)) {
+TemporaryGuard::TemporaryGuard(fs::path path, const std::function<void()>& create)
+    : path_(std::move(path)) {
     const std::lock_guard lock(registry_mutex);
     registry().insert(path_);
+    if (create) {
+        try {
+            create();
+        } catch (...) {
+            registry().erase(registry().find(path_));
+            throw;
+        }
+    }
 }
 
 TemporaryGuard::~TemporaryGuard() {

@@ -27,9 +27,11 @@ void install_interrupt_handler(const std::string& program, std::function<bool()>
 void remove_registered_temporaries();
 
 /// Registers a temporary file or directory for removal on interrupt while it lives.
+/// `create` (when given) makes it under the registry's lock, so an interrupt either
+/// removes it or comes before it exists: none is left behind by a thread racing the exit.
 class TemporaryGuard {
   public:
-    explicit TemporaryGuard(std::filesystem::path path);
+    explicit TemporaryGuard(std::filesystem::path path, const std::function<void()>& create = {});
     ~TemporaryGuard();
     TemporaryGuard(const TemporaryGuard&) = delete;
     TemporaryGuard& operator=(const TemporaryGuard&) = delete;

@@ -128,12 +128,14 @@ void write_file_atomically(const fs::path& target, bool overwrite,
     check_writable(target, overwrite);
     const fs::path temporary = sibling_temporary(target, "tmp");
     int fd = -1;
+    int open_error = 0;  // errno of open, kept before the guard's unlock can touch errno
     const TemporaryGuard guard(temporary, [&] {
         fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+        open_error = errno;
     });
     if (fd < 0) {
-        throw path_error(
-            target, std::string("cannot create a file in its directory: ") + std::strerror(errno));
+        throw path_error(target, std::string("cannot create a file in its directory: ") +
+                                     std::strerror(open_error));
     }
     bool open = true;
     std::string failure;

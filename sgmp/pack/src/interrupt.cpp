@@ -23,6 +23,13 @@ std::multiset<fs::path>& registry() {
     return paths;
 }
 
+/// Removes every registered temporary; the caller holds registry_mutex.
+void sweep_registry() {
+    for (const auto& path : registry()) {
+        remove_temporary(path);
+    }
+}
+
 int signal_pipe[2] = {-1, -1};
 
 extern "C" void on_signal(int number) {
@@ -49,9 +56,7 @@ void watch(const std::string& program, const std::function<bool()>& on_interrupt
         // create a temporary (TemporaryGuard creates it under this lock) waits instead of
         // leaving one behind after the sweep.
         registry_mutex.lock();
-        for (const auto& path : registry()) {
-            remove_temporary(path);
-        }
+        sweep_registry();
         const std::string message = program + ": interrupted by " +
                                     (byte == SIGINT ? "SIGINT" : "SIGTERM") +
                                     "; its temporary files are removed\n";
@@ -81,9 +86,7 @@ void install_interrupt_handler(const std::string& program, std::function<bool()>
 
 void remove_registered_temporaries() {
     const std::lock_guard lock(registry_mutex);
-    for (const auto& path : registry()) {
-        remove_temporary(path);
-    }
+    sweep_registry();
 }
 
 TemporaryGuard::TemporaryGuard(fs::path path, const std::function<void()>& create)

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <deque>
 #include <fstream>
 #include <limits>
@@ -135,11 +136,23 @@ void check_start(const PourRequest& request) {
     }
     const Container container;
     const double r = request.parameters.diameter() / 2.0;
-    const double allowed = request.start->penetration_allowed_over_d * 2.0 * r + 1e-9 * r;
+    const double allowed_over_d = request.start->penetration_allowed_over_d;
+    const double allowed = allowed_over_d * 2.0 * r + 1e-9 * r;
+    const auto short_number = [](double value) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.3g", value);
+        return std::string(text);
+    };
     for (std::size_t i = 0; i < centers.size(); ++i) {
-        if (container.penetration(centers[i], r) > allowed) {
+        const double penetration = container.penetration(centers[i], r);
+        if (penetration > allowed) {
+            const std::string rule = allowed_over_d > 0.0
+                                         ? " reaches " + short_number(penetration / (2.0 * r)) +
+                                               " d through a wall or the floor (at most " +
+                                               short_number(allowed_over_d) + " d)"
+                                         : " lies outside the container";
             throw PourError("arrangement " + request.start->name + ": sphere " +
-                            std::to_string(i + 1) + " lies outside the container");
+                            std::to_string(i + 1) + rule);
         }
     }
 }

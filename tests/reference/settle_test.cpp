@@ -71,9 +71,9 @@ BOOST_AUTO_TEST_CASE(a_stored_dem_pour_settles_again_with_stiffer_contacts) {
     const double d = *start.metadata.get_number("diameter");
     BOOST_TEST_REQUIRE(count_overlaps(start.particles, Container{}, 0.0).max_wall > 1e-6 * d);
     const fs::path out = dir / "stiff.xyz";
-    const auto run = run_reference({"settle", start_file.string(), "--friction", "0.5",
-                                    "--youngs-modulus", "1.6e10", "--out", out.string(),
-                                    "--quiet"});
+    const auto run =
+        run_reference({"settle", start_file.string(), "--friction", "0.5", "--youngs-modulus",
+                       "1.6e10", "--out", out.string(), "--quiet"});
     BOOST_TEST_INFO(run.stderr_text);
     BOOST_TEST_REQUIRE(run.exit_code == 0);
     const Pack pack = read_pack_file(out);
@@ -89,6 +89,24 @@ BOOST_AUTO_TEST_CASE(a_stored_dem_pour_settles_again_with_stiffer_contacts) {
     // than 0.01 (the seed spread of φ at N = 150 is about 0.01).
     BOOST_TEST(std::abs(packing_fraction(pack, control_volume()) -
                         packing_fraction(start, control_volume())) < 0.01);
+    fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_CASE(settle_refuses_a_start_deeper_through_a_wall_than_a_settled_pour) {
+    const fs::path dir = testing::fresh_directory("sgmp-settle-deep");
+    Pack start = read_pack_file(fs::path(SGMP_REFERENCE_DATA) / "n0150-mu0.5-seed1.xyz.gz");
+    const double r = start.particles.front().radius;
+    start.particles[4].center.x() = Container{}.x_min + r - 0.1 * 2.0 * r;  // 0.1 d through
+    const fs::path start_file = dir / "deep.xyz";
+    write_pack_file(start_file, start, false);
+    const std::string out = (dir / "out.xyz").string();
+    const auto run =
+        run_reference({"settle", start_file.string(), "--friction", "0.5", "--out", out});
+    BOOST_TEST(run.exit_code == 1);
+    BOOST_TEST(run.stderr_text.find("sphere 5 reaches 0.1 d through a wall or the floor (at most "
+                                    "0.05 d)") != std::string::npos,
+               run.stderr_text);
+    BOOST_TEST(!fs::exists(out));
     fs::remove_all(dir);
 }
 

@@ -8,6 +8,7 @@
 
 #include "sgmp/compare/ball_cut.hpp"
 #include "sgmp/compare/column_grid.hpp"
+#include "sgmp/compare/pair_kernels.hpp"
 #include "sgmp/compare/parallel.hpp"
 
 namespace sgmp::compare {
@@ -119,6 +120,7 @@ struct Setup {
     double reach;          // of the pass: g(r), Z and Q6 all lie within it
     double reach_squared;  //
     double close_squared;  // a pair farther than this is neither a contact nor a bond
+    BinSetup kernel;       // of count_bins
 
     Setup(const std::vector<Particle>& particles, const LocalStructureOptions& options)
         : tolerances(options.tolerances.size()),
@@ -149,6 +151,15 @@ struct Setup {
         const double close =
             std::max(2.0 * max_radius + max_threshold, q6_cutoff * 2.0 * max_radius) * (1.0 + 1e-9);
         close_squared = close * close;
+        kernel.reach_squared = reach_squared;
+        kernel.per_width = per_width;
+        kernel.bins = static_cast<std::uint32_t>(bins);
+        kernel.split_first = static_cast<std::uint32_t>(split_first_bin);
+        kernel.split_bins = static_cast<std::uint32_t>(split_bins);
+        for (int w = 0; w < 2; ++w) {
+            kernel.split_lo[w] = split.lo[w];
+            kernel.split_hi[w] = split.hi[w];
+        }
     }
 };
 
@@ -159,51 +170,13 @@ struct Close {
     double distance;
 };
 
-/// Copies of the g(r) histogram that consecutive pairs add to in turn: neighbours met in
-/// a column lie at similar distances, and increments of one counter would wait on each
-/// other's store. Integer counts, so how they are split never changes the total.
-constexpr std::size_t kHistogramLanes = 4;
-
 /// Buffers of one work item, reused for each of its origins.
 struct Scratch {
     std::vector<Close> close;
     std::vector<int> z;
-    std::vector<std::int64_t> lanes;  // kHistogramLanes × bins, lane-major
+    std::vector<std::int64_t> lanes;  // kBinLanes × (bins + 1), lane-major (count_bins)
     std::int64_t split[2] = {0, 0};   // pairs in the split windows
 };
-
-/// Adds `weight` × the g(r) and split-window counts of the pairs of centre a with
-/// the grid's centres at positions [from, to) within reach. Consecutive positions
-/// count into different histogram lanes; bin_of's arithmetic truncated by a 32-bit
-/// conversion gives the same value for bins below 2³¹.
-void count_window(const ColumnGrid& grid, const double (&a)[3], std::size_t from, std::size_t to,
-                  std::int64_t weight, const Setup& s, Scratch& scratch) {
-    const auto bins = static_cast<std::uint32_t>(s.bins);
-    const auto split_first = static_cast<std::uint32_t>(s.split_first_bin);
-    const auto split_bins = static_cast<std::uint32_t>(s.split_bins);
-    std::int64_t* const lanes = scratch.lanes.data();
-    const double* const xs = grid.x.data();
-    const double* const ys = grid.y.data();
-    const double* const zs = grid.z.data();
-    for (std::size_t k = from; k < to; ++k) {
-        const double dx = xs[k] - a[0];
-        const double dy = ys[k] - a[1];
-        const double dz = zs[k] - a[2];
-        const double q = dx * dx + dy * dy + dz * dz;
-        const double distance = std::sqrt(q);
-        const auto b =
-            static_cast<std::uint32_t>(static_cast<std::int32_t>(distance * s.per_width + 0.5));
-        if (q <= s.reach_squared && b < bins) {
-            lanes[(k % kHistogramLanes) * bins + b] += weight;
-            if (b - split_first <= split_bins) {  // unsigned: one compare
-                std::int64_t split[2] = {0, 0};
-                s.split.count(distance, split);
-                scratch.split[0] += weight * split[0];
-                scratch.split[1] += weight * split[1];
-            }
-        }
-    }
-}
 
 /// The g(r) and split-window counts of the origins of one column of the origins' grid:
 /// pairs with the origins after each of them (weight 2: both are origins) and with every
@@ -216,19 +189,17 @@ void count_column_pairs(const ColumnGrid& origin_grid, const ColumnGrid& other_g
         return;
     }
     const std::array<double, 4> footprint = origin_grid.footprint(begin, end);
-    origin_grid.for_each_window(
-        origin_grid, begin, end, footprint, s.reach, column,
-        [&](std::size_t c, std::size_t p, std::size_t from, std::size_t to) {
-            const double a[3] = {origin_grid.x[p], origin_grid.y[p], origin_grid.z[p]};
-            count_window(origin_grid, a, c == column ? std::max(from, p + 1) : from, to, 2, s,
-                         scratch);
-        });
-    other_grid.for_each_window(
-        origin_grid, begin, end, footprint, s.reach, 0,
-        [&](std::size_t, std::size_t p, std::size_t from, std::size_t to) {
-            const double a[3] = {origin_grid.x[p], origin_grid.y[p], origin_grid.z[p]};
-            count_window(other_grid, a, from, to, 1, s, scratch);
-        });
+    for (const ColumnGrid* grid : {&origin_grid, &other_grid}) {
+        const bool origins = grid == &origin_grid;
+        grid->for_each_column(
+            footprint, s.reach, origins ? column : 0,
+            [&](std::size_t c, std::size_t first, std::size_t last, double half) {
+                count_column_bins(origin_grid.x.data(), origin_grid.y.data(), origin_grid.z.data(),
+                                  begin, end, grid->x.data(), grid->y.data(), grid->z.data(), first,
+                                  last, half, origins && c == column, origins ? 2 : 1, s.kernel,
+                                  scratch.lanes.data(), scratch.split);
+            });
+    }
 }
 
 /// Fills scratch.close with the centres close enough to an origin of the column
@@ -243,19 +214,18 @@ void gather_close(const ColumnGrid& origin_grid, const ColumnGrid& other_grid, s
     const std::array<double, 4> footprint = origin_grid.footprint(begin, end);
     for (const ColumnGrid* grid : {&origin_grid, &other_grid}) {
         const bool own = grid == &origin_grid;
-        grid->for_each_window(origin_grid, begin, end, footprint, std::sqrt(s.close_squared), 0,
-                              [&](std::size_t, std::size_t p, std::size_t from, std::size_t to) {
-                                  for (std::size_t k = from; k < to; ++k) {
-                                      const double dx = grid->x[k] - origin_grid.x[p];
-                                      const double dy = grid->y[k] - origin_grid.y[p];
-                                      const double dz = grid->z[k] - origin_grid.z[p];
-                                      const double q = dx * dx + dy * dy + dz * dz;
-                                      if (q <= s.close_squared && !(own && k == p)) {
-                                          scratch.close.push_back({static_cast<std::uint32_t>(p),
-                                                                   grid->index[k], std::sqrt(q)});
-                                      }
-                                  }
-                              });
+        grid->for_each_window(
+            origin_grid, begin, end, footprint, std::sqrt(s.close_squared), 0,
+            [&](std::size_t, std::size_t p, std::size_t from, std::size_t to) {
+                const double a[3] = {origin_grid.x[p], origin_grid.y[p], origin_grid.z[p]};
+                for_each_within(grid->x.data(), grid->y.data(), grid->z.data(), a, from, to,
+                                s.close_squared, [&](std::size_t k, double q) {
+                                    if (!(own && k == p)) {
+                                        scratch.close.push_back({static_cast<std::uint32_t>(p),
+                                                                 grid->index[k], std::sqrt(q)});
+                                    }
+                                });
+            });
     }
     std::sort(scratch.close.begin(), scratch.close.end(), [](const Close& u, const Close& v) {
         return u.origin != v.origin ? u.origin < v.origin : u.index < v.index;
@@ -411,7 +381,7 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
         [&](Partial& part, std::size_t first, std::size_t last) {
             Scratch scratch;
             scratch.z.resize(s.tolerances);
-            scratch.lanes.assign(kHistogramLanes * s.bins, 0);
+            scratch.lanes.assign(kBinLanes * (s.bins + 1), 0);
             for (std::size_t column = first; column < last; ++column) {
                 count_column_pairs(origin_grid, other_grid, column, s, scratch);
             }
@@ -433,9 +403,9 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
                     close = next;
                 }
             }
-            for (std::size_t l = 0; l < kHistogramLanes; ++l) {
-                for (std::size_t k = 0; k < s.bins; ++k) {
-                    part.pairs[k] += scratch.lanes[l * s.bins + k];
+            for (std::size_t l = 0; l < kBinLanes; ++l) {
+                for (std::size_t k = 0; k < s.bins; ++k) {  // not the dump bin k = bins
+                    part.pairs[k] += scratch.lanes[l * (s.bins + 1) + k];
                 }
             }
             part.split_pairs[0] += scratch.split[0];

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "sgmp/compare/column_grid.hpp"
+#include "sgmp/compare/pair_kernels.hpp"
 #include "sgmp/compare/parallel.hpp"
 #include "sgmp/pack/pack_overlaps.hpp"
 
@@ -90,22 +91,18 @@ Tally pair_overlaps(const std::vector<Particle>& particles, double mean_diameter
     const double reach_squared = reach * reach * (1.0 + 1e-9);  // the exact test decides
     const auto pairs_from = [&](Tally& tally, std::size_t p, std::size_t from, std::size_t to) {
         const Particle& a = particles[grid.index[p]];
-        for (std::size_t m = from; m < to; ++m) {
-            const double dx = grid.x[m] - grid.x[p];
-            const double dy = grid.y[m] - grid.y[p];
-            const double dz = grid.z[m] - grid.z[p];
-            if (dx * dx + dy * dy + dz * dz > reach_squared) {
-                continue;
-            }
-            const Particle& b = particles[grid.index[m]];
-            const double depth = a.radius + b.radius - (a.center - b.center).norm();
-            if (depth > 0.0) {
-                add(tally,
-                    OverlapRecord{std::min(a.id, b.id), std::max(a.id, b.id),
-                                  depth / mean_diameter},
-                    floor, limit);
-            }
-        }
+        const double c[3] = {grid.x[p], grid.y[p], grid.z[p]};
+        for_each_within(grid.x.data(), grid.y.data(), grid.z.data(), c, from, to, reach_squared,
+                        [&](std::size_t m, double) {
+                            const Particle& b = particles[grid.index[m]];
+                            const double depth = a.radius + b.radius - (a.center - b.center).norm();
+                            if (depth > 0.0) {
+                                add(tally,
+                                    OverlapRecord{std::min(a.id, b.id), std::max(a.id, b.id),
+                                                  depth / mean_diameter},
+                                    floor, limit);
+                            }
+                        });
     };
     return chunked_reduce(
         grid.columns(), kColumnsPerChunk, Tally{},

@@ -111,6 +111,32 @@ class ColumnGrid {
     void for_each_window(const ColumnGrid& source, std::size_t begin, std::size_t end,
                          const std::array<double, 4>& footprint, double radius,
                          std::size_t first_column, F&& f) const {
+        for_each_column(footprint, radius, first_column,
+                        [&](std::size_t column, std::size_t first, std::size_t last, double half) {
+                            std::size_t lo = first;
+                            std::size_t hi = first;
+                            for (std::size_t p = begin; p < end; ++p) {
+                                const double zp = source.z[p];
+                                while (lo < last && z[lo] < zp - half) {
+                                    ++lo;
+                                }
+                                hi = std::max(hi, lo);
+                                while (hi < last && z[hi] <= zp + half) {
+                                    ++hi;
+                                }
+                                f(column, p, lo, hi);
+                            }
+                        });
+    }
+
+    /// The columns of for_each_window: f(column, first, last, half) for each column numbered
+    /// ≥ first_column whose footprint comes within `radius` of the rectangle `footprint`,
+    /// [first, last) its positions and half = √(radius² − s²) (widened for rounding) the
+    /// half-height of the windows: for a centre p over the rectangle, the positions with
+    /// z_p − half ≤ z ≤ z_p + half.
+    template <class F>
+    void for_each_column(const std::array<double, 4>& footprint, double radius,
+                         std::size_t first_column, F&& f) const {
         const double wide = radius * (1.0 + 1e-12) + side_ * 1e-12;  // covers rounding
         const double wide2 = wide * wide;
         const std::int64_t x_lo = axis_cell(0, footprint[0] - wide);
@@ -129,22 +155,7 @@ class ColumnGrid {
                 if (rest < 0.0) {
                     continue;
                 }
-                const double half = std::sqrt(rest);
-                const std::size_t first = column_begin(column);
-                const std::size_t last = column_begin(column + 1);
-                std::size_t lo = first;
-                std::size_t hi = first;
-                for (std::size_t p = begin; p < end; ++p) {
-                    const double zp = source.z[p];
-                    while (lo < last && z[lo] < zp - half) {
-                        ++lo;
-                    }
-                    hi = std::max(hi, lo);
-                    while (hi < last && z[hi] <= zp + half) {
-                        ++hi;
-                    }
-                    f(column, p, lo, hi);
-                }
+                f(column, column_begin(column), column_begin(column + 1), std::sqrt(rest));
             }
         }
     }

@@ -1,0 +1,146 @@
+#pragma once
+/// @file pair_kernels.hpp
+/// The inner loops of the pair passes over one window [from, to) of a grid's stored
+/// centres (structure of arrays x, y, z) and one centre a, eight candidates at a time with
+/// AVX-512 where the CPU has it (checked once at run time), else one at a time.
+///
+/// Both versions evaluate, for every candidate k, the same IEEE-754 double expressions in
+/// the same order, with no contraction (-ffp-contract=off):
+///     q_k = ((x_k − a_x)·(x_k − a_x) + (y_k − a_y)·(y_k − a_y)) + (z_k − a_z)·(z_k − a_z),
+///     s_k = √q_k (correctly rounded),   b_k = trunc_int32(s_k·(1/ΔR) + ½),
+/// so every comparison of q_k with a threshold and every bin b_k is bit for bit the one a
+/// scalar loop computes: the vector lanes change only how many candidates are evaluated per
+/// instruction, never a count. Candidates whose test fails are counted into a dump bin
+/// (index `bins`) instead of being branched over, so the loops carry no branch on data.
+
+#include <cstddef>
+#include <cstdint>
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define SGMP_PAIR_KERNELS_AVX512 1
+#endif
+
+namespace sgmp::compare {
+
+namespace detail {
+extern bool vector_kernels_on;  ///< set at start-up from the CPU's features
+}  // namespace detail
+
+/// True when the vector kernels are in use: the CPU has AVX-512 (F, DQ, VL) and they are
+/// not switched off.
+inline bool vector_kernels() {
+    return detail::vector_kernels_on;
+}
+/// Switches the vector kernels off (false) or back on where the CPU has them (true); for
+/// tests that compare them with the scalar loops. Not thread-safe against running passes.
+void enable_vector_kernels(bool on);
+
+/// Histogram lanes of count_bins: candidate k of each group of eight counts into lane
+/// k mod 8, so consecutive increments of one bin (neighbours met in a column lie at
+/// similar distances) do not wait on each other's stores. Integer counts: the split into
+/// lanes never changes a total.
+inline constexpr std::size_t kBinLanes = 8;
+
+/// What count_bins needs of the g(r) pass: reach² (pairs beyond it are not counted), 1/ΔR,
+/// the number of bins, and the split-ratio windows [lo_w, hi_w] (distances, w = 0, 1) with
+/// the bins [split_first, split_first + split_bins] that can hold one of their distances
+/// (the exact test on the distance decides).
+struct BinSetup {
+    double reach_squared;
+    double per_width;
+    std::uint32_t bins;
+    std::uint32_t split_first;
+    std::uint32_t split_bins;
+    double split_lo[2];
+    double split_hi[2];
+};
+
+/// Adds `weight` to lanes[(k mod kBinLanes)·(bins + 1) + b_k] for every candidate k in
+/// [from, to) with q_k ≤ reach² and b_k < bins (others to the dump bin b = bins), and
+/// weight to split[w] for each such k with lo_w ≤ s_k ≤ hi_w. `lanes` holds
+/// kBinLanes·(bins + 1) counters.
+void count_bins(const double* xs, const double* ys, const double* zs, const double (&a)[3],
+                std::size_t from, std::size_t to, std::int64_t weight, const BinSetup& s,
+                std::int64_t* lanes, std::int64_t (&split)[2]);
+/// The same one candidate at a time (the fallback, and the tests' reference).
+void count_bins_scalar(const double* xs, const double* ys, const double* zs, const double (&a)[3],
+                       std::size_t from, std::size_t to, std::int64_t weight, const BinSetup& s,
+                       std::int64_t* lanes, std::int64_t (&split)[2]);
+
+/// count_bins over the sliding windows of one pair of columns (ColumnGrid::for_each_window):
+/// for each origin p in [begin, end) of the arrays (ox, oy, oz), z increasing, the
+/// candidates [lo_p, hi_p) of the column [first, last) of (xs, ys, zs), z increasing, with
+/// lo_p the first position with z ≥ z_p − half and hi_p the first after it with
+/// z > z_p + half; with `own` (the same column of the same arrays) only those after p.
+void count_column_bins(const double* ox, const double* oy, const double* oz, std::size_t begin,
+                       std::size_t end, const double* xs, const double* ys, const double* zs,
+                       std::size_t first, std::size_t last, double half, bool own,
+                       std::int64_t weight, const BinSetup& s, std::int64_t* lanes,
+                       std::int64_t (&split)[2]);
+
+namespace detail {
+/// Calls f(k, q_k) for every k in [from, to) with q_k ≤ limit, in increasing k.
+template <class F>
+void for_each_within_scalar(const double* xs, const double* ys, const double* zs,
+                            const double (&a)[3], std::size_t from, std::size_t to, double limit,
+                            F&& f) {
+    for (std::size_t k = from; k < to; ++k) {
+        const double dx = xs[k] - a[0];
+        const double dy = ys[k] - a[1];
+        const double dz = zs[k] - a[2];
+        const double q = dx * dx + dy * dy + dz * dz;
+        if (q <= limit) {
+            f(k, q);
+        }
+    }
+}
+
+#if defined(SGMP_PAIR_KERNELS_AVX512)
+template <class F>
+__attribute__((target("avx512f,avx512dq,avx512vl"))) void for_each_within_avx512(
+    const double* xs, const double* ys, const double* zs, const double (&a)[3], std::size_t from,
+    std::size_t to, double limit, F&& f) {
+    const __m512d ax = _mm512_set1_pd(a[0]);
+    const __m512d ay = _mm512_set1_pd(a[1]);
+    const __m512d az = _mm512_set1_pd(a[2]);
+    const __m512d bound = _mm512_set1_pd(limit);
+    alignas(64) double qs[8];
+    for (std::size_t k = from; k < to; k += 8) {
+        const std::size_t n = to - k;
+        const __mmask8 live = n >= 8 ? __mmask8(0xff) : __mmask8((1u << n) - 1u);
+        const __m512d dx = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, xs + k), ax);
+        const __m512d dy = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, ys + k), ay);
+        const __m512d dz = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, zs + k), az);
+        const __m512d q = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)),
+                                        _mm512_mul_pd(dz, dz));
+        unsigned hits = _mm512_mask_cmp_pd_mask(live, q, bound, _CMP_LE_OQ);
+        if (hits == 0) {
+            continue;
+        }
+        _mm512_store_pd(qs, q);
+        while (hits != 0) {
+            const unsigned j = static_cast<unsigned>(__builtin_ctz(hits));
+            hits &= hits - 1;
+            f(k + j, qs[j]);
+        }
+    }
+}
+#endif
+}  // namespace detail
+
+/// Calls f(k, q_k) for every k in [from, to) with q_k ≤ limit, in increasing k (a short
+/// reach: few candidates pass, so the vector test leaves few calls).
+template <class F>
+void for_each_within(const double* xs, const double* ys, const double* zs, const double (&a)[3],
+                     std::size_t from, std::size_t to, double limit, F&& f) {
+#if defined(SGMP_PAIR_KERNELS_AVX512)
+    if (vector_kernels() && to >= from + 8) {  // shorter windows: the scalar loop is faster
+        detail::for_each_within_avx512(xs, ys, zs, a, from, to, limit, f);
+        return;
+    }
+#endif
+    detail::for_each_within_scalar(xs, ys, zs, a, from, to, limit, f);
+}
+
+}  // namespace sgmp::compare

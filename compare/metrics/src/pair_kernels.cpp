@@ -1,0 +1,208 @@
+#include "sgmp/compare/pair_kernels.hpp"
+
+#include <cmath>
+
+namespace sgmp::compare {
+namespace {
+
+bool cpu_has_avx512() {
+#if defined(SGMP_PAIR_KERNELS_AVX512)
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+           __builtin_cpu_supports("avx512vl");
+#else
+    return false;
+#endif
+}
+
+const bool cpu_avx512 = cpu_has_avx512();
+
+/// Adds weight to split[w] when the distance lies in window w.
+inline void count_split(double distance, std::int64_t weight, const BinSetup& s,
+                        std::int64_t (&split)[2]) {
+    for (int w = 0; w < 2; ++w) {
+        split[w] += (distance >= s.split_lo[w] && distance <= s.split_hi[w]) ? weight : 0;
+    }
+}
+
+#if defined(SGMP_PAIR_KERNELS_AVX512)
+#define SGMP_AVX512 __attribute__((target("avx512f,avx512dq,avx512vl")))
+
+/// The first position in [at, last) whose z is not below t (z increasing: the positions
+/// below t are a prefix), eight at a time.
+SGMP_AVX512 inline std::size_t first_not_below(const double* z, std::size_t at, std::size_t last,
+                                               double t) {
+    const __m512d bound = _mm512_set1_pd(t);
+    while (at < last) {
+        const std::size_t n = last - at;
+        const __mmask8 live = n >= 8 ? __mmask8(0xff) : __mmask8((1u << n) - 1u);
+        const unsigned below =
+            _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, z + at), bound, _CMP_LT_OQ);
+        if (below != 0xffu) {
+            return at + static_cast<unsigned>(__builtin_ctz(~below));
+        }
+        at += 8;
+    }
+    return at;
+}
+
+/// The first position in [at, last) whose z is above t.
+SGMP_AVX512 inline std::size_t first_above(const double* z, std::size_t at, std::size_t last,
+                                           double t) {
+    const __m512d bound = _mm512_set1_pd(t);
+    while (at < last) {
+        const std::size_t n = last - at;
+        const __mmask8 live = n >= 8 ? __mmask8(0xff) : __mmask8((1u << n) - 1u);
+        const unsigned below =
+            _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, z + at), bound, _CMP_LE_OQ);
+        if (below != 0xffu) {
+            return at + static_cast<unsigned>(__builtin_ctz(~below));
+        }
+        at += 8;
+    }
+    return at;
+}
+
+SGMP_AVX512 inline void count_bins_avx512(const double* xs, const double* ys, const double* zs,
+                                          const double (&a)[3], std::size_t from, std::size_t to,
+                                          std::int64_t weight, const BinSetup& s,
+                                          std::int64_t* lanes, std::int64_t (&split)[2]) {
+    const __m512d ax = _mm512_set1_pd(a[0]);
+    const __m512d ay = _mm512_set1_pd(a[1]);
+    const __m512d az = _mm512_set1_pd(a[2]);
+    const __m512d reach = _mm512_set1_pd(s.reach_squared);
+    const __m512d per_width = _mm512_set1_pd(s.per_width);
+    const __m512d half = _mm512_set1_pd(0.5);
+    const __m256i bins = _mm256_set1_epi32(static_cast<int>(s.bins));
+    const __m256i split_first = _mm256_set1_epi32(static_cast<int>(s.split_first));
+    const __m256i split_bins = _mm256_set1_epi32(static_cast<int>(s.split_bins));
+    const auto stride = static_cast<int>(s.bins + 1);
+    const __m256i lane_start =
+        _mm256_mullo_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7), _mm256_set1_epi32(stride));
+    alignas(32) std::int32_t at[8];
+    alignas(64) double distances[8];
+    for (std::size_t k = from; k < to; k += 8) {
+        const std::size_t n = to - k;
+        const __mmask8 live = n >= 8 ? __mmask8(0xff) : __mmask8((1u << n) - 1u);
+        const __m512d dx = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, xs + k), ax);
+        const __m512d dy = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, ys + k), ay);
+        const __m512d dz = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, zs + k), az);
+        const __m512d q = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)),
+                                        _mm512_mul_pd(dz, dz));
+        const __mmask8 near = _mm512_mask_cmp_pd_mask(live, q, reach, _CMP_LE_OQ);
+        const __m512d distance = _mm512_maskz_sqrt_pd(live, q);
+        const __m256i bin = _mm512_maskz_cvttpd_epi32(
+            live, _mm512_add_pd(_mm512_mul_pd(distance, per_width), half));
+        const __mmask8 counted = _mm256_mask_cmplt_epu32_mask(near, bin, bins);
+        const __m256i slot =
+            _mm256_add_epi32(lane_start, _mm256_mask_blend_epi32(counted, bins, bin));
+        _mm256_store_si256(reinterpret_cast<__m256i*>(at), slot);
+        for (int j = 0; j < 8; ++j) {
+            lanes[at[j]] += weight;
+        }
+        unsigned in_split =
+            _mm256_mask_cmple_epu32_mask(counted, _mm256_sub_epi32(bin, split_first), split_bins);
+        if (in_split != 0) {
+            _mm512_store_pd(distances, distance);
+            while (in_split != 0) {
+                const unsigned j = static_cast<unsigned>(__builtin_ctz(in_split));
+                in_split &= in_split - 1;
+                count_split(distances[j], weight, s, split);
+            }
+        }
+    }
+    // The dump bins also counted the dead lanes of the last group: they are never read.
+}
+
+SGMP_AVX512 void count_column_bins_avx512(const double* ox, const double* oy, const double* oz,
+                                          std::size_t begin, std::size_t end, const double* xs,
+                                          const double* ys, const double* zs, std::size_t first,
+                                          std::size_t last, double half, bool own,
+                                          std::int64_t weight, const BinSetup& s,
+                                          std::int64_t* lanes, std::int64_t (&split)[2]) {
+    std::size_t lo = first;
+    std::size_t hi = first;
+    for (std::size_t p = begin; p < end; ++p) {
+        const double zp = oz[p];
+        lo = first_not_below(zs, lo, last, zp - half);
+        hi = first_above(zs, std::max(hi, lo), last, zp + half);
+        const double a[3] = {ox[p], oy[p], zp};
+        count_bins_avx512(xs, ys, zs, a, own ? std::max(lo, p + 1) : lo, hi, weight, s, lanes,
+                          split);
+    }
+}
+#endif
+
+}  // namespace
+
+namespace detail {
+bool vector_kernels_on = cpu_avx512;
+}  // namespace detail
+
+void enable_vector_kernels(bool on) {
+    detail::vector_kernels_on = on && cpu_avx512;
+}
+
+void count_bins_scalar(const double* xs, const double* ys, const double* zs, const double (&a)[3],
+                       std::size_t from, std::size_t to, std::int64_t weight, const BinSetup& s,
+                       std::int64_t* lanes, std::int64_t (&split)[2]) {
+    const std::size_t stride = s.bins + 1;
+    for (std::size_t k = from; k < to; ++k) {
+        const double dx = xs[k] - a[0];
+        const double dy = ys[k] - a[1];
+        const double dz = zs[k] - a[2];
+        const double q = dx * dx + dy * dy + dz * dz;
+        const double distance = std::sqrt(q);
+        // bin_of's arithmetic; a 32-bit conversion gives the same value below 2³¹ bins.
+        const auto b =
+            static_cast<std::uint32_t>(static_cast<std::int32_t>(distance * s.per_width + 0.5));
+        const bool counted = q <= s.reach_squared && b < s.bins;
+        lanes[((k - from) % kBinLanes) * stride + (counted ? b : s.bins)] += weight;
+        if (counted && b - s.split_first <= s.split_bins) {  // unsigned: one compare
+            count_split(distance, weight, s, split);
+        }
+    }
+}
+
+void count_column_bins(const double* ox, const double* oy, const double* oz, std::size_t begin,
+                       std::size_t end, const double* xs, const double* ys, const double* zs,
+                       std::size_t first, std::size_t last, double half, bool own,
+                       std::int64_t weight, const BinSetup& s, std::int64_t* lanes,
+                       std::int64_t (&split)[2]) {
+#if defined(SGMP_PAIR_KERNELS_AVX512)
+    if (vector_kernels()) {
+        count_column_bins_avx512(ox, oy, oz, begin, end, xs, ys, zs, first, last, half, own, weight,
+                                 s, lanes, split);
+        return;
+    }
+#endif
+    std::size_t lo = first;
+    std::size_t hi = first;
+    for (std::size_t p = begin; p < end; ++p) {
+        const double zp = oz[p];
+        while (lo < last && zs[lo] < zp - half) {
+            ++lo;
+        }
+        hi = std::max(hi, lo);
+        while (hi < last && zs[hi] <= zp + half) {
+            ++hi;
+        }
+        const double a[3] = {ox[p], oy[p], zp};
+        count_bins_scalar(xs, ys, zs, a, own ? std::max(lo, p + 1) : lo, hi, weight, s, lanes,
+                          split);
+    }
+}
+
+void count_bins(const double* xs, const double* ys, const double* zs, const double (&a)[3],
+                std::size_t from, std::size_t to, std::int64_t weight, const BinSetup& s,
+                std::int64_t* lanes, std::int64_t (&split)[2]) {
+#if defined(SGMP_PAIR_KERNELS_AVX512)
+    if (vector_kernels()) {
+        count_bins_avx512(xs, ys, zs, a, from, to, weight, s, lanes, split);
+        return;
+    }
+#endif
+    count_bins_scalar(xs, ys, zs, a, from, to, weight, s, lanes, split);
+}
+
+}  // namespace sgmp::compare

@@ -214,17 +214,22 @@ void gather_close(const ColumnGrid& origin_grid, const ColumnGrid& other_grid, s
     const std::array<double, 4> footprint = origin_grid.footprint(begin, end);
     for (const ColumnGrid* grid : {&origin_grid, &other_grid}) {
         const bool own = grid == &origin_grid;
-        grid->for_each_window(
-            origin_grid, begin, end, footprint, std::sqrt(s.close_squared), 0,
-            [&](std::size_t, std::size_t p, std::size_t from, std::size_t to) {
-                const double a[3] = {origin_grid.x[p], origin_grid.y[p], origin_grid.z[p]};
-                for_each_within(grid->x.data(), grid->y.data(), grid->z.data(), a, from, to,
-                                s.close_squared, [&](std::size_t k, double q) {
-                                    if (!(own && k == p)) {
-                                        scratch.close.push_back({static_cast<std::uint32_t>(p),
-                                                                 grid->index[k], std::sqrt(q)});
-                                    }
-                                });
+        grid->for_each_column(
+            footprint, std::sqrt(s.close_squared), 0,
+            [&](std::size_t, std::size_t first, std::size_t last, double half) {
+                for_each_nonempty_window(
+                    origin_grid.z.data(), begin, end, grid->z.data(), first, last, half,
+                    [&](std::size_t p, std::size_t from, std::size_t to) {
+                        const double a[3] = {origin_grid.x[p], origin_grid.y[p], origin_grid.z[p]};
+                        for_each_within(
+                            grid->x.data(), grid->y.data(), grid->z.data(), a, from, to,
+                            s.close_squared, [&](std::size_t k, double q) {
+                                if (!(own && k == p)) {
+                                    scratch.close.push_back({static_cast<std::uint32_t>(p),
+                                                             grid->index[k], std::sqrt(q)});
+                                }
+                            });
+                    });
             });
     }
     std::sort(scratch.close.begin(), scratch.close.end(), [](const Close& u, const Close& v) {

@@ -129,6 +129,42 @@ __attribute__((target("avx512f,avx512dq,avx512vl"))) void for_each_within_avx512
 #endif
 }  // namespace detail
 
+/// The sliding windows of ColumnGrid::for_each_window for the origins [begin, end) of `oz`
+/// (z increasing) over the column [first, last) of `zs` (z increasing), the empty ones left
+/// out: f(p, lo, hi) with lo the first position with z ≥ z_p − half, hi the first after it
+/// with z > z_p + half, only where lo < hi. An empty window (z_lo > z_p + half) skips at once
+/// to the first origin with z + half ≥ z_lo: the windows of those between are empty too.
+template <class F>
+void for_each_nonempty_window(const double* oz, std::size_t begin, std::size_t end,
+                              const double* zs, std::size_t first, std::size_t last, double half,
+                              F&& f) {
+    std::size_t lo = first;
+    std::size_t hi = first;
+    for (std::size_t p = begin; p < end;) {
+        const double zp = oz[p];
+        while (lo < last && zs[lo] < zp - half) {
+            ++lo;
+        }
+        if (lo == last) {
+            return;
+        }
+        hi = hi > lo ? hi : lo;
+        while (hi < last && zs[hi] <= zp + half) {
+            ++hi;
+        }
+        if (hi == lo) {
+            const double target = zs[lo];
+            ++p;
+            while (p < end && oz[p] + half < target) {
+                ++p;
+            }
+            continue;
+        }
+        f(p, lo, hi);
+        ++p;
+    }
+}
+
 /// Calls f(k, q_k) for every k in [from, to) with q_k ≤ limit, in increasing k (a short
 /// reach: few candidates pass, so the vector test leaves few calls).
 template <class F>

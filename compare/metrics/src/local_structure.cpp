@@ -217,18 +217,14 @@ void gather_close(const ColumnGrid& origin_grid, const ColumnGrid& other_grid, s
         grid->for_each_column(
             footprint, std::sqrt(s.close_squared), 0,
             [&](std::size_t, std::size_t first, std::size_t last, double half) {
-                for_each_nonempty_window(
-                    origin_grid.z.data(), begin, end, grid->z.data(), first, last, half,
-                    [&](std::size_t p, std::size_t from, std::size_t to) {
-                        const double a[3] = {origin_grid.x[p], origin_grid.y[p], origin_grid.z[p]};
-                        for_each_within(
-                            grid->x.data(), grid->y.data(), grid->z.data(), a, from, to,
-                            s.close_squared, [&](std::size_t k, double q) {
-                                if (!(own && k == p)) {
-                                    scratch.close.push_back({static_cast<std::uint32_t>(p),
-                                                             grid->index[k], std::sqrt(q)});
-                                }
-                            });
+                for_each_pair_within(
+                    origin_grid.x.data(), origin_grid.y.data(), origin_grid.z.data(), begin, end,
+                    grid->x.data(), grid->y.data(), grid->z.data(), first, last, half, false,
+                    s.close_squared, [&](std::size_t p, std::size_t k, double q) {
+                        if (!(own && k == p)) {
+                            scratch.close.push_back(
+                                {static_cast<std::uint32_t>(p), grid->index[k], std::sqrt(q)});
+                        }
                     });
             });
     }

@@ -20,6 +20,10 @@ struct Tally {
     double sum = 0.0;
     double max = 0.0;
     std::vector<OverlapRecord> worst;
+    // Once `worst` was cut to the limit, its last record: a record not deeper than it
+    // can never be among the deepest, so it is not kept (the same deepest either way).
+    bool has_cutoff = false;
+    OverlapRecord cutoff{};
 };
 
 void keep_worst(std::vector<OverlapRecord>& records, std::size_t limit);
@@ -52,17 +56,36 @@ void keep_worst(std::vector<OverlapRecord>& records, std::size_t limit) {
     }
 }
 
-void add(Tally& tally, const OverlapRecord& record, double floor, std::size_t limit) {
+/// Counts one positive depth (over d) and keeps its record among the deepest; `record()`
+/// makes the record (ids), called only when it may be among them.
+template <class MakeRecord>
+void add_depth(Tally& tally, double depth_over_d, double floor, std::size_t limit,
+               MakeRecord&& record) {
     ++tally.count_any;
-    tally.max = std::max(tally.max, record.depth_over_d);
-    if (record.depth_over_d > floor) {
+    tally.max = std::max(tally.max, depth_over_d);
+    if (depth_over_d > floor) {
         ++tally.count;
-        tally.sum += record.depth_over_d;
+        tally.sum += depth_over_d;
     }
-    tally.worst.push_back(record);
+    if (tally.has_cutoff && depth_over_d < tally.cutoff.depth_over_d) {
+        return;  // not deeper than the cutoff, whatever the ids
+    }
+    const OverlapRecord r = record();
+    if (tally.has_cutoff && !deeper(r, tally.cutoff)) {
+        return;
+    }
+    tally.worst.push_back(r);
     if (tally.worst.size() > 4 * limit + 16) {
         keep_worst(tally.worst, limit);
+        if (limit > 0 && tally.worst.size() == limit) {
+            tally.has_cutoff = true;
+            tally.cutoff = tally.worst.back();
+        }
     }
+}
+
+void add(Tally& tally, const OverlapRecord& record, double floor, std::size_t limit) {
+    add_depth(tally, record.depth_over_d, floor, limit, [&] { return record; });
 }
 
 OverlapSummary summarise(Tally tally, std::size_t limit) {
@@ -87,23 +110,10 @@ Tally pair_overlaps(const std::vector<Particle>& particles, double mean_diameter
         return {};
     }
     const double reach = 2.0 * r_max;
+    const bool equal = std::all_of(particles.begin(), particles.end(),
+                                   [&](const Particle& p) { return p.radius == r_max; });
     const ColumnGrid grid(particles, reach, true);
     const double reach_squared = reach * reach * (1.0 + 1e-9);  // the exact test decides
-    const auto pairs_from = [&](Tally& tally, std::size_t p, std::size_t from, std::size_t to) {
-        const Particle& a = particles[grid.index[p]];
-        const double c[3] = {grid.x[p], grid.y[p], grid.z[p]};
-        for_each_within(grid.x.data(), grid.y.data(), grid.z.data(), c, from, to, reach_squared,
-                        [&](std::size_t m, double) {
-                            const Particle& b = particles[grid.index[m]];
-                            const double depth = a.radius + b.radius - (a.center - b.center).norm();
-                            if (depth > 0.0) {
-                                add(tally,
-                                    OverlapRecord{std::min(a.id, b.id), std::max(a.id, b.id),
-                                                  depth / mean_diameter},
-                                    floor, limit);
-                            }
-                        });
-    };
     return chunked_reduce(
         grid.columns(), kColumnsPerChunk, Tally{},
         [&](Tally& tally, std::size_t first, std::size_t last) {
@@ -113,10 +123,29 @@ Tally pair_overlaps(const std::vector<Particle>& particles, double mean_diameter
                 if (begin == end) {
                     continue;
                 }
-                grid.for_each_window(
-                    grid, begin, end, grid.footprint(begin, end), reach, column,
-                    [&](std::size_t c, std::size_t p, std::size_t from, std::size_t to) {
-                        pairs_from(tally, p, c == column ? std::max(from, p + 1) : from, to);
+                grid.for_each_column(
+                    grid.footprint(begin, end), reach, column,
+                    [&](std::size_t c, std::size_t from, std::size_t to, double half) {
+                        for_each_pair_within(
+                            grid.x.data(), grid.y.data(), grid.z.data(), begin, end, grid.x.data(),
+                            grid.y.data(), grid.z.data(), from, to, half, c == column,
+                            reach_squared, [&](std::size_t p, std::size_t m, double) {
+                                // The grid's copies of the centres (in cache) and, for equal
+                                // spheres, the one radius: the same doubles as the particles'.
+                                const Vec3 ca(grid.x[p], grid.y[p], grid.z[p]);
+                                const Vec3 cb(grid.x[m], grid.y[m], grid.z[m]);
+                                const double ra = equal ? r_max : particles[grid.index[p]].radius;
+                                const double rb = equal ? r_max : particles[grid.index[m]].radius;
+                                const double depth = ra + rb - (ca - cb).norm();
+                                if (depth > 0.0) {
+                                    add_depth(tally, depth / mean_diameter, floor, limit, [&] {
+                                        const std::int64_t ia = particles[grid.index[p]].id;
+                                        const std::int64_t ib = particles[grid.index[m]].id;
+                                        return OverlapRecord{std::min(ia, ib), std::max(ia, ib),
+                                                             depth / mean_diameter};
+                                    });
+                                }
+                            });
                     });
             }
         },

@@ -26,65 +26,11 @@ inline void count_split(double distance, std::int64_t weight, const BinSetup& s,
 }
 
 #if defined(SGMP_PAIR_KERNELS_AVX512)
-#define SGMP_AVX512 __attribute__((target("avx512f,avx512dq,avx512vl")))
 
-/// The first position in [at, last) whose z is not below t (z increasing: the positions
-/// below t are a prefix), eight at a time.
-SGMP_AVX512 inline std::size_t first_not_below(const double* z, std::size_t at, std::size_t last,
-                                               double t) {
-    const __m512d bound = _mm512_set1_pd(t);
-    while (at < last) {
-        const std::size_t n = last - at;
-        const __mmask8 live = n >= 8 ? __mmask8(0xff) : __mmask8((1u << n) - 1u);
-        const unsigned below =
-            _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, z + at), bound, _CMP_LT_OQ);
-        if (below != 0xffu) {
-            return at + static_cast<unsigned>(__builtin_ctz(~below));
-        }
-        at += 8;
-    }
-    return at;
-}
-
-/// The first position in [at, last) whose z is above t.
-SGMP_AVX512 inline std::size_t first_above(const double* z, std::size_t at, std::size_t last,
-                                           double t) {
-    const __m512d bound = _mm512_set1_pd(t);
-    while (at < last) {
-        const std::size_t n = last - at;
-        const __mmask8 live = n >= 8 ? __mmask8(0xff) : __mmask8((1u << n) - 1u);
-        const unsigned below =
-            _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, z + at), bound, _CMP_LE_OQ);
-        if (below != 0xffu) {
-            return at + static_cast<unsigned>(__builtin_ctz(~below));
-        }
-        at += 8;
-    }
-    return at;
-}
-
-/// The first position p in [at, end) with z_p + half ≥ t (z increasing).
-SGMP_AVX512 inline std::size_t first_reaching(const double* z, std::size_t at, std::size_t end,
-                                              double half, double t) {
-    const __m512d bound = _mm512_set1_pd(t);
-    const __m512d reach = _mm512_set1_pd(half);
-    while (at < end) {
-        const std::size_t n = end - at;
-        const __mmask8 live = n >= 8 ? __mmask8(0xff) : __mmask8((1u << n) - 1u);
-        const unsigned below = _mm512_mask_cmp_pd_mask(
-            live, _mm512_add_pd(_mm512_maskz_loadu_pd(live, z + at), reach), bound, _CMP_LT_OQ);
-        if (below != 0xffu) {
-            return at + static_cast<unsigned>(__builtin_ctz(~below));
-        }
-        at += 8;
-    }
-    return at;
-}
-
-SGMP_AVX512 inline void count_bins_avx512(const double* xs, const double* ys, const double* zs,
-                                          const double (&a)[3], std::size_t from, std::size_t to,
-                                          std::int64_t weight, const BinSetup& s,
-                                          std::int64_t* lanes, std::int64_t (&split)[2]) {
+SGMP_AVX512 void count_bins_avx512(const double* xs, const double* ys, const double* zs,
+                                   const double (&a)[3], std::size_t from, std::size_t to,
+                                   std::int64_t weight, const BinSetup& s, std::int64_t* lanes,
+                                   std::int64_t (&split)[2]) {
     const __m512d ax = _mm512_set1_pd(a[0]);
     const __m512d ay = _mm512_set1_pd(a[1]);
     const __m512d az = _mm512_set1_pd(a[2]);
@@ -142,15 +88,15 @@ SGMP_AVX512 void count_column_bins_avx512(const double* ox, const double* oy, co
     std::size_t hi = first;
     for (std::size_t p = begin; p < end;) {
         const double zp = oz[p];
-        lo = first_not_below(zs, lo, last, zp - half);
+        lo = detail::first_not_below(zs, lo, last, zp - half);
         if (lo == last) {
             return;  // every later origin's window is empty too
         }
-        hi = first_above(zs, std::max(hi, lo), last, zp + half);
+        hi = detail::first_above(zs, std::max(hi, lo), last, zp + half);
         if (hi == lo) {
             // An empty window (z_lo > z_p + half): so are those of the next origins up to
             // the first with z + half ≥ z_lo; their windows start at lo or later.
-            p = first_reaching(oz, p + 1, end, half, zs[lo]);
+            p = detail::first_reaching(oz, p + 1, end, half, zs[lo]);
             continue;
         }
         const double a[3] = {ox[p], oy[p], zp};

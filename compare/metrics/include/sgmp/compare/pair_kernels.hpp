@@ -19,6 +19,7 @@
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
 #define SGMP_PAIR_KERNELS_AVX512 1
+#define SGMP_AVX512 __attribute__((target("avx512f,avx512dq,avx512vl")))
 #endif
 
 namespace sgmp::compare {
@@ -79,56 +80,6 @@ void count_column_bins(const double* ox, const double* oy, const double* oz, std
                        std::int64_t weight, const BinSetup& s, std::int64_t* lanes,
                        std::int64_t (&split)[2]);
 
-namespace detail {
-/// Calls f(k, q_k) for every k in [from, to) with q_k ≤ limit, in increasing k.
-template <class F>
-void for_each_within_scalar(const double* xs, const double* ys, const double* zs,
-                            const double (&a)[3], std::size_t from, std::size_t to, double limit,
-                            F&& f) {
-    for (std::size_t k = from; k < to; ++k) {
-        const double dx = xs[k] - a[0];
-        const double dy = ys[k] - a[1];
-        const double dz = zs[k] - a[2];
-        const double q = dx * dx + dy * dy + dz * dz;
-        if (q <= limit) {
-            f(k, q);
-        }
-    }
-}
-
-#if defined(SGMP_PAIR_KERNELS_AVX512)
-template <class F>
-__attribute__((target("avx512f,avx512dq,avx512vl"))) void for_each_within_avx512(
-    const double* xs, const double* ys, const double* zs, const double (&a)[3], std::size_t from,
-    std::size_t to, double limit, F&& f) {
-    const __m512d ax = _mm512_set1_pd(a[0]);
-    const __m512d ay = _mm512_set1_pd(a[1]);
-    const __m512d az = _mm512_set1_pd(a[2]);
-    const __m512d bound = _mm512_set1_pd(limit);
-    alignas(64) double qs[8];
-    for (std::size_t k = from; k < to; k += 8) {
-        const std::size_t n = to - k;
-        const __mmask8 live = n >= 8 ? __mmask8(0xff) : __mmask8((1u << n) - 1u);
-        const __m512d dx = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, xs + k), ax);
-        const __m512d dy = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, ys + k), ay);
-        const __m512d dz = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, zs + k), az);
-        const __m512d q = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)),
-                                        _mm512_mul_pd(dz, dz));
-        unsigned hits = _mm512_mask_cmp_pd_mask(live, q, bound, _CMP_LE_OQ);
-        if (hits == 0) {
-            continue;
-        }
-        _mm512_store_pd(qs, q);
-        while (hits != 0) {
-            const unsigned j = static_cast<unsigned>(__builtin_ctz(hits));
-            hits &= hits - 1;
-            f(k + j, qs[j]);
-        }
-    }
-}
-#endif
-}  // namespace detail
-
 /// The sliding windows of ColumnGrid::for_each_window for the origins [begin, end) of `oz`
 /// (z increasing) over the column [first, last) of `zs` (z increasing), the empty ones left
 /// out: f(p, lo, hi) with lo the first position with z ≥ z_p − half, hi the first after it
@@ -163,6 +114,162 @@ void for_each_nonempty_window(const double* oz, std::size_t begin, std::size_t e
         f(p, lo, hi);
         ++p;
     }
+}
+
+namespace detail {
+/// Calls f(k, q_k) for every k in [from, to) with q_k ≤ limit, in increasing k.
+template <class F>
+void for_each_within_scalar(const double* xs, const double* ys, const double* zs,
+                            const double (&a)[3], std::size_t from, std::size_t to, double limit,
+                            F&& f) {
+    for (std::size_t k = from; k < to; ++k) {
+        const double dx = xs[k] - a[0];
+        const double dy = ys[k] - a[1];
+        const double dz = zs[k] - a[2];
+        const double q = dx * dx + dy * dy + dz * dz;
+        if (q <= limit) {
+            f(k, q);
+        }
+    }
+}
+
+#if defined(SGMP_PAIR_KERNELS_AVX512)
+/// The first position in [at, last) whose z is not below t (z increasing: the positions
+/// below t are a prefix), eight at a time.
+SGMP_AVX512 inline std::size_t first_not_below(const double* z, std::size_t at, std::size_t last,
+                                               double t) {
+    const __m512d bound = _mm512_set1_pd(t);
+    while (at < last) {
+        const std::size_t n = last - at;
+        const __mmask8 live = n >= 8 ? __mmask8(0xff) : __mmask8((1u << n) - 1u);
+        const unsigned below =
+            _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, z + at), bound, _CMP_LT_OQ);
+        if (below != 0xffu) {
+            return at + static_cast<unsigned>(__builtin_ctz(~below));
+        }
+        at += 8;
+    }
+    return at;
+}
+
+/// The first position in [at, last) whose z is above t.
+SGMP_AVX512 inline std::size_t first_above(const double* z, std::size_t at, std::size_t last,
+                                           double t) {
+    const __m512d bound = _mm512_set1_pd(t);
+    while (at < last) {
+        const std::size_t n = last - at;
+        const __mmask8 live = n >= 8 ? __mmask8(0xff) : __mmask8((1u << n) - 1u);
+        const unsigned below =
+            _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, z + at), bound, _CMP_LE_OQ);
+        if (below != 0xffu) {
+            return at + static_cast<unsigned>(__builtin_ctz(~below));
+        }
+        at += 8;
+    }
+    return at;
+}
+
+/// The first position p in [at, end) with z_p + half ≥ t (z increasing).
+SGMP_AVX512 inline std::size_t first_reaching(const double* z, std::size_t at, std::size_t end,
+                                              double half, double t) {
+    const __m512d bound = _mm512_set1_pd(t);
+    const __m512d reach = _mm512_set1_pd(half);
+    while (at < end) {
+        const std::size_t n = end - at;
+        const __mmask8 live = n >= 8 ? __mmask8(0xff) : __mmask8((1u << n) - 1u);
+        const unsigned below = _mm512_mask_cmp_pd_mask(
+            live, _mm512_add_pd(_mm512_maskz_loadu_pd(live, z + at), reach), bound, _CMP_LT_OQ);
+        if (below != 0xffu) {
+            return at + static_cast<unsigned>(__builtin_ctz(~below));
+        }
+        at += 8;
+    }
+    return at;
+}
+
+template <class F>
+SGMP_AVX512 void for_each_within_avx512(const double* xs, const double* ys, const double* zs,
+                                        const double (&a)[3], std::size_t from, std::size_t to,
+                                        double limit, F&& f) {
+    const __m512d ax = _mm512_set1_pd(a[0]);
+    const __m512d ay = _mm512_set1_pd(a[1]);
+    const __m512d az = _mm512_set1_pd(a[2]);
+    const __m512d bound = _mm512_set1_pd(limit);
+    alignas(64) double qs[8];
+    for (std::size_t k = from; k < to; k += 8) {
+        const std::size_t n = to - k;
+        const __mmask8 live = n >= 8 ? __mmask8(0xff) : __mmask8((1u << n) - 1u);
+        const __m512d dx = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, xs + k), ax);
+        const __m512d dy = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, ys + k), ay);
+        const __m512d dz = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, zs + k), az);
+        const __m512d q = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)),
+                                        _mm512_mul_pd(dz, dz));
+        unsigned hits = _mm512_mask_cmp_pd_mask(live, q, bound, _CMP_LE_OQ);
+        if (hits == 0) {
+            continue;
+        }
+        _mm512_store_pd(qs, q);
+        while (hits != 0) {
+            const unsigned j = static_cast<unsigned>(__builtin_ctz(hits));
+            hits &= hits - 1;
+            f(k + j, qs[j]);
+        }
+    }
+}
+
+/// for_each_pair_within on the CPU's vectors: the same windows and pairs, in the same order.
+template <class F>
+SGMP_AVX512 void for_each_pair_within_avx512(const double* ox, const double* oy, const double* oz,
+                                             std::size_t begin, std::size_t end, const double* xs,
+                                             const double* ys, const double* zs, std::size_t first,
+                                             std::size_t last, double half, bool after,
+                                             double limit, F&& f) {
+    std::size_t lo = first;
+    std::size_t hi = first;
+    for (std::size_t p = begin; p < end;) {
+        const double zp = oz[p];
+        lo = first_not_below(zs, lo, last, zp - half);
+        if (lo == last) {
+            return;
+        }
+        hi = first_above(zs, hi > lo ? hi : lo, last, zp + half);
+        if (hi == lo) {
+            p = first_reaching(oz, p + 1, end, half, zs[lo]);
+            continue;
+        }
+        const double a[3] = {ox[p], oy[p], zp};
+        const std::size_t from = after && lo <= p ? p + 1 : lo;
+        for_each_within_avx512(xs, ys, zs, a, from, hi, limit,
+                               [&](std::size_t k, double q) { f(p, k, q); });
+        ++p;
+    }
+}
+#endif
+}  // namespace detail
+
+/// Every pair of an origin p in [begin, end) of (ox, oy, oz) and a centre k of the column
+/// [first, last) of (xs, ys, zs) in p's window (for_each_nonempty_window) with q_pk ≤ limit:
+/// f(p, k, q_pk), by increasing p, then k. With `after` (the same column of the same arrays)
+/// only k > p.
+template <class F>
+void for_each_pair_within(const double* ox, const double* oy, const double* oz, std::size_t begin,
+                          std::size_t end, const double* xs, const double* ys, const double* zs,
+                          std::size_t first, std::size_t last, double half, bool after,
+                          double limit, F&& f) {
+#if defined(SGMP_PAIR_KERNELS_AVX512)
+    if (vector_kernels()) {
+        detail::for_each_pair_within_avx512(ox, oy, oz, begin, end, xs, ys, zs, first, last, half,
+                                            after, limit, f);
+        return;
+    }
+#endif
+    for_each_nonempty_window(
+        oz, begin, end, zs, first, last, half, [&](std::size_t p, std::size_t lo, std::size_t hi) {
+            const double a[3] = {ox[p], oy[p], oz[p]};
+            const std::size_t from = after && lo <= p ? p + 1 : lo;
+            detail::for_each_within_scalar(xs, ys, zs, a, from, hi, limit,
+                                           [&](std::size_t k, double q) { f(p, k, q); });
+        });
 }
 
 /// Calls f(k, q_k) for every k in [from, to) with q_k ≤ limit, in increasing k (a short

@@ -121,6 +121,8 @@ struct Setup {
     double reach_squared;  //
     double close_squared;  // a pair farther than this is neither a contact nor a bond
     BinSetup kernel;       // of count_bins
+    bool equal;            // every radius is `radius`
+    double radius;
 
     Setup(const std::vector<Particle>& particles, const LocalStructureOptions& options)
         : tolerances(options.tolerances.size()),
@@ -137,6 +139,9 @@ struct Setup {
         for (const Particle& p : particles) {
             max_radius = std::max(max_radius, p.radius);
         }
+        radius = max_radius;
+        equal = std::all_of(particles.begin(), particles.end(),
+                            [&](const Particle& p) { return p.radius == max_radius; });
         const double max_tolerance = tolerances == 0 ? 0.0
                                                      : *std::max_element(options.tolerances.begin(),
                                                                          options.tolerances.end());
@@ -168,6 +173,8 @@ struct Close {
     std::uint32_t origin;  // position in the origins' grid
     Index index;           // into the particles
     double distance;
+    std::uint32_t position;  // in its grid
+    std::uint32_t grid;      // 0: the origins' grid, 1: the other particles'
 };
 
 /// Buffers of one work item, reused for each of its origins.
@@ -222,8 +229,9 @@ void gather_close(const ColumnGrid& origin_grid, const ColumnGrid& other_grid, s
                     grid->x.data(), grid->y.data(), grid->z.data(), first, last, half, false,
                     s.close_squared, [&](std::size_t p, std::size_t k, double q) {
                         if (!(own && k == p)) {
-                            scratch.close.push_back(
-                                {static_cast<std::uint32_t>(p), grid->index[k], std::sqrt(q)});
+                            scratch.close.push_back({static_cast<std::uint32_t>(p), grid->index[k],
+                                                     std::sqrt(q), static_cast<std::uint32_t>(k),
+                                                     own ? 0u : 1u});
                         }
                     });
             });
@@ -236,14 +244,15 @@ void gather_close(const ColumnGrid& origin_grid, const ColumnGrid& other_grid, s
 /// Z at every tolerance and the Q6 bond sums of one origin, bonds summed in increasing
 /// particle index (which fixes their rounding whatever the grid or the thread count).
 BondSums contacts_and_bonds(const std::vector<Particle>& particles, const Particle& a,
-                            const Setup& s, const Close* first, const Close* last,
-                            Scratch& scratch) {
+                            const Setup& s, const std::array<const ColumnGrid*, 2>& grids,
+                            const Close* first, const Close* last, Scratch& scratch) {
     std::fill(scratch.z.begin(), scratch.z.end(), 0);
     BondSums bonds;
     for (const Close* close = first; close != last; ++close) {
         const Close& c = *close;
-        const Particle& b = particles[c.index];
-        const double rb = b.radius;
+        // The grid's copy of the centre (in cache) and, for equal spheres, the one radius.
+        const ColumnGrid& grid = *grids[c.grid];
+        const double rb = s.equal ? s.radius : particles[c.index].radius;
         const double gap = c.distance - a.radius - rb;
         if (gap <= s.max_threshold) {
             for (std::size_t t = 0; t < s.tolerances; ++t) {
@@ -251,8 +260,8 @@ BondSums contacts_and_bonds(const std::vector<Particle>& particles, const Partic
             }
         }
         if (c.distance <= s.q6_cutoff * (a.radius + rb) && c.distance > 0.0) {
-            const Vec3 bond(b.center.x() - a.center.x(), b.center.y() - a.center.y(),
-                            b.center.z() - a.center.z());
+            const Vec3 bond(grid.x[c.position] - a.center.x(), grid.y[c.position] - a.center.y(),
+                            grid.z[c.position] - a.center.z());
             bonds.add(bond / c.distance);
         }
     }
@@ -377,6 +386,7 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
     const double side = kPairPassColumnSide * options.mean_diameter;
     const ColumnGrid origin_grid(particles, origins, side, true);
     const ColumnGrid other_grid(particles, others(particles.size(), origins), side, true);
+    const std::array<const ColumnGrid*, 2> grids{&origin_grid, &other_grid};
     const Partial total = chunked_reduce(
         origin_grid.columns(), kColumnsPerChunk, Partial(s.tolerances, options.bins),
         [&](Partial& part, std::size_t first, std::size_t last) {
@@ -397,9 +407,11 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
                     while (next != close_end && next->origin == o) {
                         ++next;
                     }
-                    const Particle& a = particles[origin_grid.index[o]];
+                    Particle a;  // the centre and radius of the origin (id unused)
+                    a.center = Vec3(origin_grid.x[o], origin_grid.y[o], origin_grid.z[o]);
+                    a.radius = s.equal ? s.radius : particles[origin_grid.index[o]].radius;
                     const BondSums bonds =
-                        contacts_and_bonds(particles, a, s, close, next, scratch);
+                        contacts_and_bonds(particles, a, s, grids, close, next, scratch);
                     add_origin(a, bonds, s, options, scratch.z, part);
                     close = next;
                 }

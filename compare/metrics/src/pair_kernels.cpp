@@ -27,10 +27,26 @@ inline void count_split(double distance, std::int64_t weight, const BinSetup& s,
 
 #if defined(SGMP_PAIR_KERNELS_AVX512)
 
+/// Histogram slots (lane·(bins + 1) + bin) of counted pairs, added to the lanes in bulk:
+/// the counted lanes of each group of eight are packed together, so rejected candidates
+/// cost no increment.
+struct Slots {
+    static constexpr std::size_t kCapacity = 2048;
+    alignas(64) std::int32_t at[kCapacity + 8];
+    std::size_t n = 0;
+
+    void flush(std::int64_t* lanes, std::int64_t weight) {
+        for (std::size_t i = 0; i < n; ++i) {
+            lanes[at[i]] += weight;
+        }
+        n = 0;
+    }
+};
+
 SGMP_AVX512 void count_bins_avx512(const double* xs, const double* ys, const double* zs,
                                    const double (&a)[3], std::size_t from, std::size_t to,
                                    std::int64_t weight, const BinSetup& s, std::int64_t* lanes,
-                                   std::int64_t (&split)[2]) {
+                                   Slots& slots, std::int64_t (&split)[2]) {
     const __m512d ax = _mm512_set1_pd(a[0]);
     const __m512d ay = _mm512_set1_pd(a[1]);
     const __m512d az = _mm512_set1_pd(a[2]);
@@ -43,7 +59,6 @@ SGMP_AVX512 void count_bins_avx512(const double* xs, const double* ys, const dou
     const auto stride = static_cast<int>(s.bins + 1);
     const __m256i lane_start =
         _mm256_mullo_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7), _mm256_set1_epi32(stride));
-    alignas(32) std::int32_t at[8];
     alignas(64) double distances[8];
     for (std::size_t k = from; k < to; k += 8) {
         const std::size_t n = to - k;
@@ -58,12 +73,13 @@ SGMP_AVX512 void count_bins_avx512(const double* xs, const double* ys, const dou
         const __m256i bin = _mm512_maskz_cvttpd_epi32(
             live, _mm512_add_pd(_mm512_mul_pd(distance, per_width), half));
         const __mmask8 counted = _mm256_mask_cmplt_epu32_mask(near, bin, bins);
-        const __m256i slot =
-            _mm256_add_epi32(lane_start, _mm256_mask_blend_epi32(counted, bins, bin));
-        _mm256_store_si256(reinterpret_cast<__m256i*>(at), slot);
-        for (int j = 0; j < 8; ++j) {
-            lanes[at[j]] += weight;
+        const __m256i slot = _mm256_add_epi32(lane_start, bin);
+        if (slots.n > Slots::kCapacity) {
+            slots.flush(lanes, weight);
         }
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(slots.at + slots.n),
+                            _mm256_maskz_compress_epi32(counted, slot));
+        slots.n += static_cast<unsigned>(__builtin_popcount(counted));
         unsigned in_split =
             _mm256_mask_cmple_epu32_mask(counted, _mm256_sub_epi32(bin, split_first), split_bins);
         if (in_split != 0) {
@@ -75,7 +91,6 @@ SGMP_AVX512 void count_bins_avx512(const double* xs, const double* ys, const dou
             }
         }
     }
-    // The dump bins also counted the dead lanes of the last group: they are never read.
 }
 
 SGMP_AVX512 void count_column_bins_avx512(const double* ox, const double* oy, const double* oz,
@@ -84,13 +99,14 @@ SGMP_AVX512 void count_column_bins_avx512(const double* ox, const double* oy, co
                                           std::size_t last, double half, bool own,
                                           std::int64_t weight, const BinSetup& s,
                                           std::int64_t* lanes, std::int64_t (&split)[2]) {
+    Slots slots;
     std::size_t lo = first;
     std::size_t hi = first;
     for (std::size_t p = begin; p < end;) {
         const double zp = oz[p];
         lo = detail::first_not_below(zs, lo, last, zp - half);
         if (lo == last) {
-            return;  // every later origin's window is empty too
+            break;  // every later origin's window is empty too
         }
         hi = detail::first_above(zs, std::max(hi, lo), last, zp + half);
         if (hi == lo) {
@@ -101,9 +117,10 @@ SGMP_AVX512 void count_column_bins_avx512(const double* ox, const double* oy, co
         }
         const double a[3] = {ox[p], oy[p], zp};
         count_bins_avx512(xs, ys, zs, a, own ? std::max(lo, p + 1) : lo, hi, weight, s, lanes,
-                          split);
+                          slots, split);
         ++p;
     }
+    slots.flush(lanes, weight);
 }
 #endif
 
@@ -172,7 +189,9 @@ void count_bins(const double* xs, const double* ys, const double* zs, const doub
                 std::int64_t* lanes, std::int64_t (&split)[2]) {
 #if defined(SGMP_PAIR_KERNELS_AVX512)
     if (vector_kernels()) {
-        count_bins_avx512(xs, ys, zs, a, from, to, weight, s, lanes, split);
+        Slots slots;
+        count_bins_avx512(xs, ys, zs, a, from, to, weight, s, lanes, slots, split);
+        slots.flush(lanes, weight);
         return;
     }
 #endif

@@ -180,6 +180,8 @@ struct Close {
 /// Buffers of one work item, reused for each of its origins.
 struct Scratch {
     std::vector<Close> close;
+    std::vector<Close> sorted;          // gather_close's counting sort
+    std::vector<std::uint32_t> starts;  //
     std::vector<int> z;
     std::vector<std::int64_t> lanes;  // kBinLanes × (bins + 1), lane-major (count_bins)
     std::int64_t split[2] = {0, 0};   // pairs in the split windows
@@ -236,9 +238,28 @@ void gather_close(const ColumnGrid& origin_grid, const ColumnGrid& other_grid, s
                     });
             });
     }
-    std::sort(scratch.close.begin(), scratch.close.end(), [](const Close& u, const Close& v) {
-        return u.origin != v.origin ? u.origin < v.origin : u.index < v.index;
-    });
+    // By origin (a counting sort over the column's positions), then index within each
+    // origin's few: the one order of distinct (origin, index) keys.
+    std::vector<std::uint32_t>& start = scratch.starts;
+    start.assign(end - begin + 1, 0);
+    for (const Close& c : scratch.close) {
+        ++start[c.origin - begin + 1];
+    }
+    for (std::size_t o = 0; o + 1 < start.size(); ++o) {
+        start[o + 1] += start[o];
+    }
+    scratch.sorted.resize(scratch.close.size());
+    for (const Close& c : scratch.close) {
+        scratch.sorted[start[c.origin - begin]++] = c;
+    }
+    std::swap(scratch.close, scratch.sorted);
+    std::size_t from = 0;
+    for (std::size_t o = 0; o + 1 < start.size(); ++o) {  // start[o]: the end of origin o
+        std::sort(scratch.close.begin() + static_cast<std::ptrdiff_t>(from),
+                  scratch.close.begin() + static_cast<std::ptrdiff_t>(start[o]),
+                  [](const Close& u, const Close& v) { return u.index < v.index; });
+        from = start[o];
+    }
 }
 
 /// Z at every tolerance and the Q6 bond sums of one origin, bonds summed in increasing

@@ -1,5 +1,7 @@
 #include "sgmp/compare/column_grid.hpp"
 
+#include "sgmp/compare/parallel.hpp"
+
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
@@ -86,34 +88,42 @@ ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, const std::vector
         z[k] = p.center.z();
         index[k] = members[i];
     }
-    // Each cell's members by z, then index, so that every column is sorted by z.
-    std::vector<std::pair<double, std::uint32_t>> keyed;  // z, position before sorting
-    for (std::size_t c = 0; c < cells; ++c) {
-        const std::size_t begin = start_[c];
-        const std::size_t end = start_[c + 1];
-        if (end - begin < 2 || std::is_sorted(z.begin() + static_cast<std::ptrdiff_t>(begin),
-                                              z.begin() + static_cast<std::ptrdiff_t>(end))) {
-            continue;
+    // Each cell's members by z, then index, so that every column is sorted by z (cells
+    // apart on the worker threads: each is sorted alone, so the result is the same).
+    constexpr std::size_t kCellsPerTask = 256;
+    parallel_for((cells + kCellsPerTask - 1) / kCellsPerTask, [&](std::size_t task) {
+        std::vector<std::pair<double, std::uint32_t>> keyed;  // z, position before sorting
+        std::vector<double> xs;
+        std::vector<double> ys;
+        std::vector<Index> is;
+        const std::size_t last_cell = std::min(cells, (task + 1) * kCellsPerTask);
+        for (std::size_t c = task * kCellsPerTask; c < last_cell; ++c) {
+            const std::size_t begin = start_[c];
+            const std::size_t end = start_[c + 1];
+            if (end - begin < 2 || std::is_sorted(z.begin() + static_cast<std::ptrdiff_t>(begin),
+                                                  z.begin() + static_cast<std::ptrdiff_t>(end))) {
+                continue;
+            }
+            keyed.clear();
+            for (std::size_t k = begin; k < end; ++k) {
+                keyed.emplace_back(z[k], static_cast<std::uint32_t>(k));  // k increases with index
+            }
+            std::sort(keyed.begin(), keyed.end());
+            xs.assign(x.begin() + static_cast<std::ptrdiff_t>(begin),
+                      x.begin() + static_cast<std::ptrdiff_t>(end));
+            ys.assign(y.begin() + static_cast<std::ptrdiff_t>(begin),
+                      y.begin() + static_cast<std::ptrdiff_t>(end));
+            is.assign(index.begin() + static_cast<std::ptrdiff_t>(begin),
+                      index.begin() + static_cast<std::ptrdiff_t>(end));
+            for (std::size_t k = begin; k < end; ++k) {
+                const std::size_t from = keyed[k - begin].second - begin;
+                x[k] = xs[from];
+                y[k] = ys[from];
+                z[k] = keyed[k - begin].first;
+                index[k] = is[from];
+            }
         }
-        keyed.clear();
-        for (std::size_t k = begin; k < end; ++k) {
-            keyed.emplace_back(z[k], static_cast<std::uint32_t>(k));  // k increases with index
-        }
-        std::sort(keyed.begin(), keyed.end());
-        const std::vector<double> xs(x.begin() + static_cast<std::ptrdiff_t>(begin),
-                                     x.begin() + static_cast<std::ptrdiff_t>(end));
-        const std::vector<double> ys(y.begin() + static_cast<std::ptrdiff_t>(begin),
-                                     y.begin() + static_cast<std::ptrdiff_t>(end));
-        const std::vector<Index> is(index.begin() + static_cast<std::ptrdiff_t>(begin),
-                                    index.begin() + static_cast<std::ptrdiff_t>(end));
-        for (std::size_t k = begin; k < end; ++k) {
-            const std::size_t from = keyed[k - begin].second - begin;
-            x[k] = xs[from];
-            y[k] = ys[from];
-            z[k] = keyed[k - begin].first;
-            index[k] = is[from];
-        }
-    }
+    });
 }
 
 }  // namespace sgmp::compare

@@ -10,6 +10,7 @@
 #include <malloc.h>
 #endif
 
+#include "sgmp/compare/parallel.hpp"
 #include "sgmp/compare/spatial_order.hpp"
 #include "sgmp/pack/parameter_error.hpp"
 
@@ -125,11 +126,15 @@ std::vector<Particle> spatially_ordered(const std::vector<Particle>& particles, 
     for (std::size_t i = 0; i < all.size(); ++i) {
         all[i] = static_cast<Index>(i);
     }
-    std::vector<Particle> ordered;
-    ordered.reserve(particles.size());
-    for (const Index i : spatial_order(particles, std::move(all), d)) {
-        ordered.push_back(particles[i]);
-    }
+    const std::vector<Index> order = spatial_order(particles, std::move(all), d);
+    std::vector<Particle> ordered(particles.size());
+    constexpr std::size_t kChunk = 65536;
+    parallel_for((order.size() + kChunk - 1) / kChunk, [&](std::size_t chunk) {
+        const std::size_t end = std::min(order.size(), (chunk + 1) * kChunk);
+        for (std::size_t k = chunk * kChunk; k < end; ++k) {
+            ordered[k] = particles[order[k]];
+        }
+    });
     return ordered;
 }
 

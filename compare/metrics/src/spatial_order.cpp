@@ -45,6 +45,30 @@ void sort_in_parts(std::vector<std::pair<std::uint64_t, Index>>& keyed) {
     }
 }
 
+/// Sorts by code with a least-significant-digit radix sort (8-bit digits, as many as the
+/// largest code needs). Stable, so keys given in increasing index come out sorted by
+/// (code, index): the same order as sort_in_parts.
+void radix_sort(std::vector<std::pair<std::uint64_t, Index>>& keyed) {
+    std::uint64_t top = 0;
+    for (const auto& k : keyed) {
+        top |= k.first;
+    }
+    std::vector<std::pair<std::uint64_t, Index>> other(keyed.size());
+    for (int shift = 0; shift < 64 && (top >> shift) != 0; shift += 8) {
+        std::array<std::size_t, 257> start{};
+        for (const auto& k : keyed) {
+            ++start[((k.first >> shift) & 0xff) + 1];
+        }
+        for (std::size_t d = 0; d < 256; ++d) {
+            start[d + 1] += start[d];
+        }
+        for (const auto& k : keyed) {
+            other[start[(k.first >> shift) & 0xff]++] = k;
+        }
+        keyed.swap(other);
+    }
+}
+
 }  // namespace
 
 std::vector<Index> spatial_order(const std::vector<Particle>& points, std::vector<Index> subset,
@@ -56,18 +80,26 @@ std::vector<Index> spatial_order(const std::vector<Particle>& points, std::vecto
     for (const Index i : subset) {
         lo = lo.cwiseMin(points[i].center);
     }
-    std::vector<std::pair<std::uint64_t, Index>> keyed;
-    keyed.reserve(subset.size());
-    for (const Index i : subset) {
-        std::uint64_t code = 0;
-        for (int axis = 0; axis < 3; ++axis) {
-            const double c = std::floor((points[i].center[axis] - lo[axis]) / cell);
-            const auto bits = static_cast<std::uint64_t>(std::clamp(c, 0.0, 2097151.0));
-            code |= spread_bits(bits) << axis;
+    std::vector<std::pair<std::uint64_t, Index>> keyed(subset.size());
+    constexpr std::size_t kChunk = 65536;
+    parallel_for((subset.size() + kChunk - 1) / kChunk, [&](std::size_t chunk) {
+        const std::size_t end = std::min(subset.size(), (chunk + 1) * kChunk);
+        for (std::size_t k = chunk * kChunk; k < end; ++k) {
+            const Index i = subset[k];
+            std::uint64_t code = 0;
+            for (int axis = 0; axis < 3; ++axis) {
+                const double c = std::floor((points[i].center[axis] - lo[axis]) / cell);
+                const auto bits = static_cast<std::uint64_t>(std::clamp(c, 0.0, 2097151.0));
+                code |= spread_bits(bits) << axis;
+            }
+            keyed[k] = {code, i};
         }
-        keyed.emplace_back(code, i);
+    });
+    if (std::is_sorted(subset.begin(), subset.end())) {
+        radix_sort(keyed);
+    } else {
+        sort_in_parts(keyed);
     }
-    sort_in_parts(keyed);
     for (std::size_t k = 0; k < keyed.size(); ++k) {
         subset[k] = keyed[k].second;
     }

@@ -33,13 +33,20 @@ inline void count_split(double distance, std::int64_t weight, const BinSetup& s,
 struct Slots {
     static constexpr std::size_t kCapacity = 2048;
     alignas(64) std::int32_t at[kCapacity + 8];
+    alignas(64) double near_split[kCapacity + 8];  // distances that may lie in a split window
     std::size_t n = 0;
+    std::size_t splits = 0;
 
-    void flush(std::int64_t* lanes, std::int64_t weight) {
+    void flush(std::int64_t* lanes, std::int64_t weight, const BinSetup& s,
+               std::int64_t (&split)[2]) {
         for (std::size_t i = 0; i < n; ++i) {
             lanes[at[i]] += weight;
         }
+        for (std::size_t i = 0; i < splits; ++i) {
+            count_split(near_split[i], weight, s, split);
+        }
         n = 0;
+        splits = 0;
     }
 };
 
@@ -59,7 +66,6 @@ SGMP_AVX512 void count_bins_avx512(const double* xs, const double* ys, const dou
     const auto stride = static_cast<int>(s.bins + 1);
     const __m256i lane_start =
         _mm256_mullo_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7), _mm256_set1_epi32(stride));
-    alignas(64) double distances[8];
     for (std::size_t k = from; k < to; k += 8) {
         const std::size_t n = to - k;
         const __mmask8 live = n >= 8 ? __mmask8(0xff) : __mmask8((1u << n) - 1u);
@@ -74,22 +80,17 @@ SGMP_AVX512 void count_bins_avx512(const double* xs, const double* ys, const dou
             live, _mm512_add_pd(_mm512_mul_pd(distance, per_width), half));
         const __mmask8 counted = _mm256_mask_cmplt_epu32_mask(near, bin, bins);
         const __m256i slot = _mm256_add_epi32(lane_start, bin);
-        if (slots.n > Slots::kCapacity) {
-            slots.flush(lanes, weight);
+        if (slots.n > Slots::kCapacity || slots.splits > Slots::kCapacity) {
+            slots.flush(lanes, weight, s, split);
         }
         _mm256_storeu_si256(reinterpret_cast<__m256i*>(slots.at + slots.n),
                             _mm256_maskz_compress_epi32(counted, slot));
         slots.n += static_cast<unsigned>(__builtin_popcount(counted));
-        unsigned in_split =
+        const __mmask8 in_split =
             _mm256_mask_cmple_epu32_mask(counted, _mm256_sub_epi32(bin, split_first), split_bins);
-        if (in_split != 0) {
-            _mm512_store_pd(distances, distance);
-            while (in_split != 0) {
-                const unsigned j = static_cast<unsigned>(__builtin_ctz(in_split));
-                in_split &= in_split - 1;
-                count_split(distances[j], weight, s, split);
-            }
-        }
+        _mm512_storeu_pd(slots.near_split + slots.splits,
+                         _mm512_maskz_compress_pd(in_split, distance));
+        slots.splits += static_cast<unsigned>(__builtin_popcount(in_split));
     }
 }
 
@@ -120,7 +121,7 @@ SGMP_AVX512 void count_column_bins_avx512(const double* ox, const double* oy, co
                           slots, split);
         ++p;
     }
-    slots.flush(lanes, weight);
+    slots.flush(lanes, weight, s, split);
 }
 #endif
 
@@ -191,7 +192,7 @@ void count_bins(const double* xs, const double* ys, const double* zs, const doub
     if (vector_kernels()) {
         Slots slots;
         count_bins_avx512(xs, ys, zs, a, from, to, weight, s, lanes, slots, split);
-        slots.flush(lanes, weight);
+        slots.flush(lanes, weight, s, split);
         return;
     }
 #endif

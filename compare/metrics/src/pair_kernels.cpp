@@ -50,10 +50,10 @@ struct Slots {
     }
 };
 
-SGMP_AVX512 void count_bins_avx512(const double* xs, const double* ys, const double* zs,
-                                   const double (&a)[3], std::size_t from, std::size_t to,
-                                   std::int64_t weight, const BinSetup& s, std::int64_t* lanes,
-                                   Slots& slots, std::int64_t (&split)[2]) {
+SGMP_AVX512 inline __attribute__((always_inline)) void count_bins_avx512(
+    const double* xs, const double* ys, const double* zs, const double (&a)[3], std::size_t from,
+    std::size_t to, std::int64_t weight, const BinSetup& s, std::int64_t* lanes, Slots& slots,
+    std::int64_t (&split)[2]) {
     const __m512d ax = _mm512_set1_pd(a[0]);
     const __m512d ay = _mm512_set1_pd(a[1]);
     const __m512d az = _mm512_set1_pd(a[2]);
@@ -66,9 +66,14 @@ SGMP_AVX512 void count_bins_avx512(const double* xs, const double* ys, const dou
     const auto stride = static_cast<int>(s.bins + 1);
     const __m256i lane_start =
         _mm256_mullo_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7), _mm256_set1_epi32(stride));
+    // The fill levels in registers: the buffers' vector stores may alias any memory.
+    std::size_t n = slots.n;
+    std::size_t splits = slots.splits;
+    std::int32_t* const at = slots.at;
+    double* const near_split = slots.near_split;
     for (std::size_t k = from; k < to; k += 8) {
-        const std::size_t n = to - k;
-        const __mmask8 live = n >= 8 ? __mmask8(0xff) : __mmask8((1u << n) - 1u);
+        const std::size_t left = to - k;
+        const __mmask8 live = left >= 8 ? __mmask8(0xff) : __mmask8((1u << left) - 1u);
         const __m512d dx = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, xs + k), ax);
         const __m512d dy = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, ys + k), ay);
         const __m512d dz = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, zs + k), az);
@@ -80,18 +85,33 @@ SGMP_AVX512 void count_bins_avx512(const double* xs, const double* ys, const dou
             live, _mm512_add_pd(_mm512_mul_pd(distance, per_width), half));
         const __mmask8 counted = _mm256_mask_cmplt_epu32_mask(near, bin, bins);
         const __m256i slot = _mm256_add_epi32(lane_start, bin);
-        if (slots.n > Slots::kCapacity || slots.splits > Slots::kCapacity) {
+        if (n > Slots::kCapacity || splits > Slots::kCapacity) {
+            slots.n = n;
+            slots.splits = splits;
             slots.flush(lanes, weight, s, split);
+            n = 0;
+            splits = 0;
         }
-        _mm256_storeu_si256(reinterpret_cast<__m256i*>(slots.at + slots.n),
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(at + n),
                             _mm256_maskz_compress_epi32(counted, slot));
-        slots.n += static_cast<unsigned>(__builtin_popcount(counted));
+        n += static_cast<unsigned>(__builtin_popcount(counted));
         const __mmask8 in_split =
             _mm256_mask_cmple_epu32_mask(counted, _mm256_sub_epi32(bin, split_first), split_bins);
-        _mm512_storeu_pd(slots.near_split + slots.splits,
-                         _mm512_maskz_compress_pd(in_split, distance));
-        slots.splits += static_cast<unsigned>(__builtin_popcount(in_split));
+        _mm512_storeu_pd(near_split + splits, _mm512_maskz_compress_pd(in_split, distance));
+        splits += static_cast<unsigned>(__builtin_popcount(in_split));
     }
+    slots.n = n;
+    slots.splits = splits;
+}
+
+/// count_bins_avx512 over one window, flushed.
+SGMP_AVX512 void count_window_avx512(const double* xs, const double* ys, const double* zs,
+                                     const double (&a)[3], std::size_t from, std::size_t to,
+                                     std::int64_t weight, const BinSetup& s, std::int64_t* lanes,
+                                     std::int64_t (&split)[2]) {
+    Slots slots;
+    count_bins_avx512(xs, ys, zs, a, from, to, weight, s, lanes, slots, split);
+    slots.flush(lanes, weight, s, split);
 }
 
 SGMP_AVX512 void count_column_bins_avx512(const double* ox, const double* oy, const double* oz,
@@ -190,9 +210,7 @@ void count_bins(const double* xs, const double* ys, const double* zs, const doub
                 std::int64_t* lanes, std::int64_t (&split)[2]) {
 #if defined(SGMP_PAIR_KERNELS_AVX512)
     if (vector_kernels()) {
-        Slots slots;
-        count_bins_avx512(xs, ys, zs, a, from, to, weight, s, lanes, slots, split);
-        slots.flush(lanes, weight, s, split);
+        count_window_avx512(xs, ys, zs, a, from, to, weight, s, lanes, split);
         return;
     }
 #endif

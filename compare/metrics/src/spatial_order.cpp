@@ -45,25 +45,27 @@ void sort_in_parts(std::vector<std::pair<std::uint64_t, Index>>& keyed) {
     }
 }
 
-/// Sorts by code with a least-significant-digit radix sort (8-bit digits, as many as the
-/// largest code needs). Stable, so keys given in increasing index come out sorted by
-/// (code, index): the same order as sort_in_parts.
+/// Sorts by code with a least-significant-digit radix sort (11-bit digits, as many as the
+/// largest code needs: two for the 21-bit codes of 128 cells a side). Stable, so keys given in
+/// increasing index come out sorted by (code, index): the same order as sort_in_parts.
 void radix_sort(std::vector<std::pair<std::uint64_t, Index>>& keyed) {
     std::uint64_t top = 0;
     for (const auto& k : keyed) {
         top |= k.first;
     }
     std::vector<std::pair<std::uint64_t, Index>> other(keyed.size());
-    for (int shift = 0; shift < 64 && (top >> shift) != 0; shift += 8) {
-        std::array<std::size_t, 257> start{};
+    constexpr int kBits = 11;
+    constexpr std::uint64_t kMask = (1u << kBits) - 1;
+    for (int shift = 0; shift < 64 && (top >> shift) != 0; shift += kBits) {
+        std::array<std::size_t, kMask + 2> start{};
         for (const auto& k : keyed) {
-            ++start[((k.first >> shift) & 0xff) + 1];
+            ++start[((k.first >> shift) & kMask) + 1];
         }
-        for (std::size_t d = 0; d < 256; ++d) {
+        for (std::size_t d = 0; d <= kMask; ++d) {
             start[d + 1] += start[d];
         }
         for (const auto& k : keyed) {
-            other[start[(k.first >> shift) & 0xff]++] = k;
+            other[start[(k.first >> shift) & kMask]++] = k;
         }
         keyed.swap(other);
     }

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <stdexcept>
+#include <thread>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -126,8 +128,34 @@ std::vector<Particle> spatially_ordered(const std::vector<Particle>& particles, 
     for (std::size_t i = 0; i < all.size(); ++i) {
         all[i] = static_cast<Index>(i);
     }
-    const std::vector<Index> order = spatial_order(particles, std::move(all), d);
-    std::vector<Particle> ordered(particles.size());
+    // The copy's memory is mapped and zeroed (page faults: ~20 ms at 10⁶ particles) on a
+    // second thread while the order is sorted, when there is one to spare.
+    std::vector<Particle> ordered;
+    const auto allocate = [&] { ordered.resize(particles.size()); };
+    std::vector<Index> order;
+    if (thread_count() > 1) {
+        std::exception_ptr failure;
+        std::thread allocation([&] {
+            try {
+                allocate();
+            } catch (...) {
+                failure = std::current_exception();
+            }
+        });
+        try {
+            order = spatial_order(particles, std::move(all), d);
+        } catch (...) {
+            allocation.join();
+            throw;
+        }
+        allocation.join();
+        if (failure) {
+            std::rethrow_exception(failure);
+        }
+    } else {
+        order = spatial_order(particles, std::move(all), d);
+        allocate();
+    }
     constexpr std::size_t kChunk = 65536;
     parallel_for((order.size() + kChunk - 1) / kChunk, [&](std::size_t chunk) {
         const std::size_t end = std::min(order.size(), (chunk + 1) * kChunk);

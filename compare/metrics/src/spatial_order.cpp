@@ -46,27 +46,53 @@ void sort_in_parts(std::vector<std::pair<std::uint64_t, Index>>& keyed) {
 }
 
 /// Sorts by code with a least-significant-digit radix sort (11-bit digits, as many as the
-/// largest code needs: two for the 21-bit codes of 128 cells a side). Stable, so keys given in
-/// increasing index come out sorted by (code, index): the same order as sort_in_parts.
+/// largest code needs: two for the 21-bit codes of 128 cells a side). Each pass is a stable
+/// counting sort in fixed parts on the worker threads (a part's keys go, in their order,
+/// after those of the parts before it), so keys given in increasing index come out sorted
+/// by (code, index): the same order as sort_in_parts.
 void radix_sort(std::vector<std::pair<std::uint64_t, Index>>& keyed) {
-    std::uint64_t top = 0;
-    for (const auto& k : keyed) {
-        top |= k.first;
-    }
-    std::vector<std::pair<std::uint64_t, Index>> other(keyed.size());
     constexpr int kBits = 11;
-    constexpr std::uint64_t kMask = (1u << kBits) - 1;
+    constexpr std::size_t kDigits = std::size_t{1} << kBits;
+    constexpr std::size_t kPart = 1 << 17;
+    const std::size_t n = keyed.size();
+    const std::size_t parts = (n + kPart - 1) / kPart;
+    std::vector<std::uint64_t> tops(parts, 0);
+    parallel_for(parts, [&](std::size_t t) {
+        for (std::size_t i = t * kPart; i < std::min(n, (t + 1) * kPart); ++i) {
+            tops[t] |= keyed[i].first;
+        }
+    });
+    std::uint64_t top = 0;
+    for (const std::uint64_t t : tops) {
+        top |= t;
+    }
+    std::vector<std::pair<std::uint64_t, Index>> other(n);
+    std::vector<std::size_t> counts(parts * kDigits);
     for (int shift = 0; shift < 64 && (top >> shift) != 0; shift += kBits) {
-        std::array<std::size_t, kMask + 2> start{};
-        for (const auto& k : keyed) {
-            ++start[((k.first >> shift) & kMask) + 1];
+        const auto digit = [shift](std::uint64_t code) {
+            return static_cast<std::size_t>((code >> shift) & (kDigits - 1));
+        };
+        std::fill(counts.begin(), counts.end(), 0);
+        parallel_for(parts, [&](std::size_t t) {
+            std::size_t* const count = counts.data() + t * kDigits;
+            for (std::size_t i = t * kPart; i < std::min(n, (t + 1) * kPart); ++i) {
+                ++count[digit(keyed[i].first)];
+            }
+        });
+        std::size_t at = 0;
+        for (std::size_t d = 0; d < kDigits; ++d) {  // counts become each part's first position
+            for (std::size_t t = 0; t < parts; ++t) {
+                const std::size_t c = counts[t * kDigits + d];
+                counts[t * kDigits + d] = at;
+                at += c;
+            }
         }
-        for (std::size_t d = 0; d <= kMask; ++d) {
-            start[d + 1] += start[d];
-        }
-        for (const auto& k : keyed) {
-            other[start[(k.first >> shift) & kMask]++] = k;
-        }
+        parallel_for(parts, [&](std::size_t t) {
+            std::size_t* const next = counts.data() + t * kDigits;
+            for (std::size_t i = t * kPart; i < std::min(n, (t + 1) * kPart); ++i) {
+                other[next[digit(keyed[i].first)]++] = keyed[i];
+            }
+        });
         keyed.swap(other);
     }
 }

@@ -5,8 +5,9 @@
 // g(r) range 5·d (+ half a bin), as in `sgmp-compare measure`. Times, in CPU seconds of one
 // thread (so the figures hold on a loaded machine):
 //   scan     the candidates of the pass's column windows (every origin's windows in both
-//            grids, whole): squared distances and a count of those within reach (the
-//            floor of any pass that visits each origin's neighbours);
+//            grids, whole): squared distances and a count of those within reach, one at
+//            a time (the pass, eight candidates per instruction where the CPU has
+//            AVX-512, skipping empty windows and visiting origin pairs once, runs faster);
 //   bins     the same plus the square root and the g(r) histogram;
 //   pass     measure_local_structure itself (g(r), split ratio, Z at six tolerances, Q6).
 // Prints "pairs N", then one "<name> <seconds> s <pairs per second>" line per loop.

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <optional>
+#include <utility>
 
 #include "friction.hpp"
 #include "relax_state.hpp"
@@ -28,10 +30,9 @@ constexpr double kDtMinOverMax = 0.002;
 constexpr double kFinishToleranceOverD = 1e-10;
 /// Steepest-descent steps after a last stage that did not converge.
 constexpr int kQuenchSteps = 200;
-/// The last stage goes on past its bound in rounds of this many steps while a real sphere
-/// overlaps, up to kClearBound times the steps it had taken.
-constexpr long kClearRound = 100;
-constexpr long kClearBound = 8;
+/// Most steps of the clearing descent (clear_real_overlaps), and how often it checks.
+constexpr long kClearSteps = 2000;
+constexpr long kClearCheckEvery = 20;
 /// Fewest steps a later stage may take (a small pack crosses its height in a few steps, but
 /// FIRE needs some hundred to settle the contacts at a new stiffness).
 constexpr long kMinStageSteps = 500;
@@ -106,60 +107,77 @@ void add_rolling_sums(const State& s, ForceSums& sums) {
     }
 }
 
+/// Adds the normal forces of sphere i's listed pairs (partners j > i) to both spheres.
+inline void add_pair_forces(State& s, double k, std::size_t i) {
+    const std::vector<Ball>& p = s.spheres;
+    const double xi = p[i].x, yi = p[i].y, zi = p[i].z, ri = p[i].r;
+    double fxi = 0.0, fyi = 0.0, fzi = 0.0;
+    for (const std::uint32_t j : s.neighbours.of(i)) {
+        const double dx = p[j].x - xi, dy = p[j].y - yi, dz = p[j].z - zi;
+        const double reach = ri + p[j].r;
+        const double d2 = dx * dx + dy * dy + dz * dz;
+        if (d2 >= reach * reach) {
+            continue;
+        }
+        const double dist = std::sqrt(d2);
+        const double f = k * (reach - dist) / dist;  // pushes j away from i
+        fxi -= f * dx;
+        fyi -= f * dy;
+        fzi -= f * dz;
+        s.f[j].x += f * dx;
+        s.f[j].y += f * dy;
+        s.f[j].z += f * dz;
+    }
+    s.f[i].x += fxi;
+    s.f[i].y += fyi;
+    s.f[i].z += fzi;
+}
+
+/// Adds the walls' and the floor's normal forces to s.f[i], then sphere i's terms to `sums`.
+inline void add_walls_and_sum(State& s, const Container& box, double k, std::size_t i,
+                              ForceSums& sums) {
+    const Ball& b = s.spheres[i];
+    Triple& f = s.f[i];
+    f.x += wall_force(box.x_min + b.r - b.x, k) - wall_force(b.x + b.r - box.x_max, k);
+    f.z += wall_force(box.z_min + b.r - b.z, k) - wall_force(b.z + b.r - box.z_max, k);
+    f.y += wall_force(box.floor + b.r - b.y, k);
+    const double f2 = f.x * f.x + f.y * f.y + f.z * f.z;
+    sums.force_squared += f2;
+    sums.largest_squared = std::max(sums.largest_squared, f2);
+    sums.power += f.x * s.v[i].x + f.y * s.v[i].y + f.z * s.v[i].z;
+}
+
 /// F = −∇E at the present positions (k in m·g per length unit), and the sums FIRE needs.
 ForceSums compute_forces(State& s, const Container& box, double k) {
-    const std::vector<Ball>& p = s.spheres;
-    const std::size_t n = p.size();
+    const std::size_t n = s.spheres.size();
     for (std::size_t i = 0; i < n; ++i) {
         s.f[i].x = 0.0;
-        s.f[i].y = -s.weight[i];
+        s.f[i].y = s.gravity ? -s.weight[i] : 0.0;
         s.f[i].z = 0.0;
     }
-    for (std::size_t i = 0; i < n; ++i) {
-        const double xi = p[i].x, yi = p[i].y, zi = p[i].z, ri = p[i].r;
-        double fxi = 0.0, fyi = 0.0, fzi = 0.0;
-        for (const std::uint32_t j : s.neighbours.of(i)) {
-            const double dx = p[j].x - xi, dy = p[j].y - yi, dz = p[j].z - zi;
-            const double reach = ri + p[j].r;
-            const double d2 = dx * dx + dy * dy + dz * dz;
-            if (d2 >= reach * reach) {
-                continue;
-            }
-            const double dist = std::sqrt(d2);
-            const double f = k * (reach - dist) / dist;  // pushes j away from i
-            fxi -= f * dx;
-            fyi -= f * dy;
-            fzi -= f * dz;
-            s.f[j].x += f * dx;
-            s.f[j].y += f * dy;
-            s.f[j].z += f * dz;
-        }
-        s.f[i].x += fxi;
-        s.f[i].y += fyi;
-        s.f[i].z += fzi;
-    }
-    if (s.frictional) {
-        add_tangential_forces(s, box, k);
-    }
     ForceSums sums;
+    if (!s.frictional) {
+        // Sphere i's partners come after it, so its pair forces are all in once its own
+        // pairs are: the walls and the sums follow in the same pass.
+        for (std::size_t i = 0; i < n; ++i) {
+            add_pair_forces(s, k, i);
+            add_walls_and_sum(s, box, k, i, sums);
+        }
+        return sums;
+    }
     for (std::size_t i = 0; i < n; ++i) {
-        const double r = p[i].r;
-        s.f[i].x += wall_force(box.x_min + r - p[i].x, k) - wall_force(p[i].x + r - box.x_max, k);
-        s.f[i].z += wall_force(box.z_min + r - p[i].z, k) - wall_force(p[i].z + r - box.z_max, k);
-        s.f[i].y += wall_force(box.floor + r - p[i].y, k);
-        const double f2 = s.f[i].x * s.f[i].x + s.f[i].y * s.f[i].y + s.f[i].z * s.f[i].z;
-        sums.force_squared += f2;
-        sums.largest_squared = std::max(sums.largest_squared, f2);
-        sums.power += s.f[i].x * s.v[i].x + s.f[i].y * s.v[i].y + s.f[i].z * s.v[i].z;
+        add_pair_forces(s, k, i);
     }
-    if (s.frictional) {
-        add_rolling_sums(s, sums);
+    add_tangential_forces(s, box, k);
+    for (std::size_t i = 0; i < n; ++i) {
+        add_walls_and_sum(s, box, k, i, sums);
     }
+    add_rolling_sums(s, sums);
     return sums;
 }
 
-/// v += Δt·F, then v ← (1 − α)·v + α·|v|·F/|F|.
-void kick_and_mix(State& s, double dt, double alpha, double force_squared) {
+/// v += Δt·F (and q̇ += Δt·G when frictional); returns |v|² (+ |q̇|²) after the kick.
+double kick(State& s, double dt) {
     const std::size_t n = s.spheres.size();
     double v2 = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -174,39 +192,47 @@ void kick_and_mix(State& s, double dt, double alpha, double force_squared) {
         s.w[i].z += dt * s.g[i].z;
         v2 += s.w[i].x * s.w[i].x + s.w[i].y * s.w[i].y + s.w[i].z * s.w[i].z;
     }
-    const double keep = 1.0 - alpha;
-    const double steer = force_squared > 0.0 ? alpha * std::sqrt(v2 / force_squared) : 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-        s.v[i].x = keep * s.v[i].x + steer * s.f[i].x;
-        s.v[i].y = keep * s.v[i].y + steer * s.f[i].y;
-        s.v[i].z = keep * s.v[i].z + steer * s.f[i].z;
-    }
-    for (std::size_t i = 0; i < s.w.size(); ++i) {
-        s.w[i].x = keep * s.w[i].x + steer * s.g[i].x;
-        s.w[i].y = keep * s.w[i].y + steer * s.g[i].y;
-        s.w[i].z = keep * s.w[i].z + steer * s.g[i].z;
-    }
+    return v2;
 }
 
-/// c += step·v; rebuilds the neighbour list once a sphere may have moved skin/2.
-void drift(State& s, double step) {
+/// FIRE's mixing v ← keep·v + steer·F, keep = 1 − α, steer = α·|v|/|F|.
+struct Mixing {
+    double keep = 1.0;
+    double steer = 0.0;
+};
+
+/// c += step·v; rebuilds the neighbour list once a sphere may have moved skin/2. With
+/// `mixing`, each velocity is mixed first, in the same pass over the spheres.
+void drift(State& s, double step, std::optional<Mixing> mixing = std::nullopt) {
     std::vector<Ball>& p = s.spheres;
     double largest = 0.0;
     for (std::size_t i = 0; i < p.size(); ++i) {
-        p[i].x += step * s.v[i].x;
-        p[i].y += step * s.v[i].y;
-        p[i].z += step * s.v[i].z;
+        Triple& v = s.v[i];
+        if (mixing) {
+            v.x = mixing->keep * v.x + mixing->steer * s.f[i].x;
+            v.y = mixing->keep * v.y + mixing->steer * s.f[i].y;
+            v.z = mixing->keep * v.z + mixing->steer * s.f[i].z;
+        }
+        p[i].x += step * v.x;
+        p[i].y += step * v.y;
+        p[i].z += step * v.z;
         const double dx = p[i].x - s.x0[i], dy = p[i].y - s.y0[i], dz = p[i].z - s.z0[i];
         largest = std::max(largest, dx * dx + dy * dy + dz * dz);
     }
     if (s.frictional) {  // the springs need the displacements since the last evaluation
         for (std::size_t i = 0; i < p.size(); ++i) {
+            Triple& w = s.w[i];
+            if (mixing) {
+                w.x = mixing->keep * w.x + mixing->steer * s.g[i].x;
+                w.y = mixing->keep * w.y + mixing->steer * s.g[i].y;
+                w.z = mixing->keep * w.z + mixing->steer * s.g[i].z;
+            }
             s.moved[i].x += step * s.v[i].x;
             s.moved[i].y += step * s.v[i].y;
             s.moved[i].z += step * s.v[i].z;
-            s.rolled[i].x += step * s.w[i].x;
-            s.rolled[i].y += step * s.w[i].y;
-            s.rolled[i].z += step * s.w[i].z;
+            s.rolled[i].x += step * w.x;
+            s.rolled[i].y += step * w.y;
+            s.rolled[i].z += step * w.z;
         }
     }
     // 1e-6 covers the float rounding of the stored positions (|c| < 10³ ⇒ error < 1e-4·skin).
@@ -257,8 +283,10 @@ struct Fire {
             drift(s, -0.5 * dt);
             stop(s);
         }
-        kick_and_mix(s, dt, alpha, sums.force_squared);
-        drift(s, dt);
+        const double v2 = kick(s, dt);
+        const double steer =
+            sums.force_squared > 0.0 ? alpha * std::sqrt(v2 / sums.force_squared) : 0.0;
+        drift(s, dt, Mixing{1.0 - alpha, steer});
         time += dt;
         return compute_forces(s, box, k);
     }
@@ -289,28 +317,16 @@ struct StageBound {
     long steps = std::numeric_limits<long>::max();
 };
 
-/// One stiffness stage of FIRE from rest; `k` in m·g per length unit. With `until_clear`, a
-/// stage reaching its bound goes on, in rounds of kClearRound steps up to kClearBound times
-/// the steps it took, while a real sphere (radius scaled by 1/(1 + shell)) still overlaps.
+/// One stiffness stage of FIRE from rest; `k` in m·g per length unit.
 StageResult run_stage(State& s, const Container& box, double k, const RelaxParams& params,
-                      StageBound bound, bool until_clear) {
+                      StageBound bound) {
     const double tolerance_squared = params.force_tolerance * params.force_tolerance;
     Fire fire(k);
     stop(s);
     ForceSums sums = compute_forces(s, box, k);
-    const auto run = [&](long steps) {
-        while (sums.largest_squared > tolerance_squared && fire.steps < steps &&
-               fire.time < bound.time) {
-            sums = fire.step(s, box, k, sums);
-        }
-    };
-    run(bound.steps);
-    const long clear_bound = kClearBound * std::max(fire.steps, 1L);
-    const double real = 1.0 / (1.0 + params.shell);
-    bound.time = INFINITY;
-    while (until_clear && sums.largest_squared > tolerance_squared && fire.steps < clear_bound &&
-           deepest_overlap(s, box, real) > 0.0) {
-        run(fire.steps + kClearRound);
+    while (sums.largest_squared > tolerance_squared && fire.steps < bound.steps &&
+           fire.time < bound.time) {
+        sums = fire.step(s, box, k, sums);
     }
     StageResult result;
     result.steps = fire.steps;
@@ -339,6 +355,48 @@ double quench(State& s, const Container& box, double k, int steps) {
     return std::sqrt(sums.largest_squared);
 }
 
+/// Removes the overlaps of the real spheres (radii r/(1 + shell)) that a pack still sliding
+/// when the last stage ended can leave (a collision caught in mid-flight, a sphere pressed
+/// into a wall), by FIRE on their overlap energy alone: the real spheres' contact and wall
+/// forces at the last stage's stiffness, without gravity or friction. Spheres clear of the
+/// others feel no force and do not move, so the soft pack's contacts (real gaps of 0 to
+/// shell·(rᵢ + rⱼ)) stay as they are; the few overlapping spheres and the chains they press
+/// on part by about the overlaps (10⁻⁵·d). Stops once no real overlap is deeper than
+/// `tolerance` (checked every kClearCheckEvery steps), or after kClearSteps; returns the
+/// steps taken. The hard-sphere finish is left nothing to resolve: pushing one sphere at a
+/// time, it has to lift a sphere wedged level between its neighbours by √(2·d·δ) for an
+/// overlap δ, and the spheres above it after it.
+long clear_real_overlaps(State& s, const Container& box, double k, double shell, double tolerance) {
+    const double real = 1.0 / (1.0 + shell);
+    if (!(deepest_overlap(s, box, real) > tolerance)) {
+        return 0;
+    }
+    for (Ball& b : s.spheres) {
+        b.r *= real;
+    }
+    s.gravity = false;
+    const bool frictional = std::exchange(s.frictional, false);
+    std::vector<Triple> rolling = std::exchange(s.w, {});  // the turns take no part
+    std::vector<Triple> torques = std::exchange(s.g, {});
+    Fire fire(k);
+    stop(s);
+    ForceSums sums = compute_forces(s, box, k);
+    while (fire.steps < kClearSteps &&
+           (fire.steps % kClearCheckEvery != 0 || deepest_overlap(s, box, 1.0) > tolerance)) {
+        sums = fire.step(s, box, k, sums);
+    }
+    const long steps = fire.steps;
+    stop(s);
+    s.frictional = frictional;
+    s.w = std::move(rolling);
+    s.g = std::move(torques);
+    s.gravity = true;
+    for (Ball& b : s.spheres) {
+        b.r /= real;
+    }
+    return steps;
+}
+
 /// The soft relaxation of every stage; leaves the soft pack's positions in `particles`.
 void relax_soft(std::vector<Particle>& particles, const Container& container,
                 const RelaxParams& params, double diameter, RelaxStats& stats) {
@@ -362,8 +420,7 @@ void relax_soft(std::vector<Particle>& particles, const Container& container,
         } else {
             bound.steps = std::max(kMinStageSteps, std::lround(params.crossings * height / d_min));
         }
-        const bool last = stage + 1 == params.stages;
-        const StageResult r = run_stage(s, container, stiffness / diameter, params, bound, last);
+        const StageResult r = run_stage(s, container, stiffness / diameter, params, bound);
         stats.steps += r.steps;
         stats.stages_converged += r.converged ? 1 : 0;
         stats.force_max = r.force_max;
@@ -375,6 +432,12 @@ void relax_soft(std::vector<Particle>& particles, const Container& container,
     if (stats.stages_converged < params.stages) {
         stats.force_max =
             quench(s, container, stiffness / params.stiffness_factor / diameter, kQuenchSteps);
+        // Still sliding: a collision may be caught in mid-flight. (A converged pack is in
+        // equilibrium, and its real overlaps, if any, are the contacts' loads on a shell
+        // thinner than them, which the finish's pushes along the normals remove exactly.)
+        stats.steps +=
+            clear_real_overlaps(s, container, stiffness / params.stiffness_factor / diameter,
+                                params.shell, kFinishToleranceOverD * diameter);
     }
     stats.overlap_max = deepest_overlap(s, container, 1.0) / diameter;  // of the soft spheres
     for (std::size_t k = 0; k < s.particle.size(); ++k) {

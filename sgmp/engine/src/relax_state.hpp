@@ -21,6 +21,7 @@ struct State {
     std::vector<Triple> v;              ///< velocities
     std::vector<Triple> f;              ///< net forces
     std::vector<double> weight;         ///< m·g of each sphere, in units of the reference m·g
+    bool gravity = true;                ///< whether the weights act
     std::vector<float> x0, y0, z0;      ///< positions when the neighbour list was built
     std::vector<std::size_t> particle;  ///< index in the caller's vector
     NeighbourList neighbours;

@@ -32,10 +32,13 @@
 /// above the floor), since the collapse takes about a free fall through the pack. The
 /// stiffer ones (the default ends at 2·10⁶) squeeze the overlaps below the shell; that is an
 /// elastic relaxation across the pack's height, so they are bounded by `crossings`·H/d_min
-/// steps (at least 500), whatever k. The last stage goes on past its bound, in rounds of 100
-/// steps up to 8 times the steps it took, while a real sphere still overlaps another or a
-/// wall. When it ends unconverged, 200 steps of steepest descent c += (0.05/k)·F settle the
-/// stiff contact modes (overlaps of spheres still moving) without moving the slow modes.
+/// steps (at least 500), whatever k. When a stage ends unconverged, 200 steps of steepest
+/// descent c += (0.05/k)·F settle the stiff contact modes (overlaps of spheres still moving)
+/// without moving the slow modes, and then the real spheres' overlaps (a collision caught in
+/// mid-flight, a sphere pressed into a wall) are removed by FIRE on their overlap energy
+/// alone, without gravity: only the overlapping spheres and the chains they press on move,
+/// by about the overlaps (10⁻⁵·d), so the finish starts clean (about 100–250 steps where
+/// needed, at N = 9000–3·10⁴).
 ///
 /// Frictionless packs under gravity creep (reference/README.md: a μ = 0 DEM pour takes 7×
 /// the steps of a μ = 0.01 one), so the default bounds, chosen for speed, usually end the

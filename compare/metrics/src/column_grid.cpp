@@ -131,14 +131,14 @@ ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, const std::vector
     });
     // Each cell's members by z, then index, so that every column is sorted by z (cells
     // apart on the worker threads: each is sorted alone, so the result is the same).
-    constexpr std::size_t kCellsPerTask = 256;
-    parallel_for((cells + kCellsPerTask - 1) / kCellsPerTask, [&](std::size_t task) {
+    constexpr std::size_t kCellsPerItem = 256;
+    parallel_for((cells + kCellsPerItem - 1) / kCellsPerItem, [&](std::size_t item) {
         std::vector<std::pair<double, std::uint32_t>> keyed;  // z, position before sorting
         std::vector<double> xs;
         std::vector<double> ys;
         std::vector<Index> is;
-        const std::size_t last_cell = std::min(cells, (task + 1) * kCellsPerTask);
-        for (std::size_t c = task * kCellsPerTask; c < last_cell; ++c) {
+        const std::size_t last_cell = std::min(cells, (item + 1) * kCellsPerItem);
+        for (std::size_t c = item * kCellsPerItem; c < last_cell; ++c) {
             const std::size_t begin = start_[c];
             const std::size_t end = start_[c + 1];
             if (end - begin < 2 || std::is_sorted(z.begin() + static_cast<std::ptrdiff_t>(begin),

@@ -53,17 +53,22 @@ State make_state(const std::vector<Particle>& particles, double diameter, double
     }
     State s;
     s.particle.resize(n);
-    std::iota(s.particle.begin(), s.particle.end(), std::size_t{0});
+    std::iota(s.particle.begin(), s.particle.end(), std::uint32_t{0});
     std::stable_sort(s.particle.begin(), s.particle.end(),
-                     [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+                     [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
     const double reference_radius = 0.5 * diameter;
     double r_min = INFINITY;
-    for (const std::size_t i : s.particle) {
+    s.spheres.reserve(n);
+    s.weight.reserve(n);
+    for (const std::uint32_t i : s.particle) {
         const Particle& p = particles[i];
         s.spheres.push_back(
             Ball{p.center.x(), p.center.y(), p.center.z(), p.radius * (1.0 + shell)});
         s.weight.push_back(std::pow(p.radius / reference_radius, 3));
         r_min = std::min(r_min, p.radius);
+    }
+    if (std::all_of(s.weight.begin(), s.weight.end(), [](double w) { return w == 1.0; })) {
+        s.weight = {};  // one size: every weight is the reference m·g
     }
     s.v.assign(n, Triple{});
     s.f.assign(n, Triple{});
@@ -152,7 +157,7 @@ ForceSums compute_forces(State& s, const Container& box, double k) {
     const std::size_t n = s.spheres.size();
     for (std::size_t i = 0; i < n; ++i) {
         s.f[i].x = 0.0;
-        s.f[i].y = s.gravity ? -s.weight[i] : 0.0;
+        s.f[i].y = s.gravity ? -s.weight_of(i) : 0.0;
         s.f[i].z = 0.0;
     }
     ForceSums sums;

@@ -175,7 +175,8 @@ void add_relax(CLI::App& app, Options& o) {
         ->capture_default_str();
     app.add_option("--relax-shell", r.shell,
                    "contact shell s in [0, 0.01]: the soft spheres are (1+s) times the real "
-                   "ones, so soft contacts end as gaps of at most s*(ri+rj)")
+                   "ones, so soft contacts end as gaps of at most s*(ri+rj); 0: contacts end "
+                   "touching")
         ->capture_default_str();
     app.add_option("--relax-force-tolerance", r.force_tolerance,
                    "a stage has converged when no sphere feels a net force above this, in m*g "

@@ -77,11 +77,13 @@ BOOST_AUTO_TEST_CASE(friction_holds_a_spread_tripod_above_its_threshold_and_not_
         if (mu > threshold) {
             // Held: the top sphere sinks only by the soft overlaps of its three contacts
             // (at k = 2e3 m·g/d about 1e-4·d each, then squeezed out by the stiffer stages);
-            // 1e-3·d bounds that, and the base spheres stay where they were to 1e-3·d.
+            // 1e-3·d bounds that. The base spheres stay on the floor: their loaded floor
+            // contacts are parted by the clearing (FIRE without gravity), which lets them
+            // rebound by up to 1e-7·d (measured 6.2e-8·d) before it stops them.
             BOOST_TEST(ps[3].center.y() >= top - 1e-3 * d);
             BOOST_TEST(std::abs(ps[3].center.y() - top) <= 1e-3 * d);
             for (int k = 0; k < 3; ++k) {
-                BOOST_TEST(std::abs(ps[k].center.y() - (box.floor + r)) <= 1e-9 * d);
+                BOOST_TEST(std::abs(ps[k].center.y() - (box.floor + r)) <= 1e-7 * d);
             }
             BOOST_TEST(stats.stages_converged >= 1);
         } else {

@@ -58,11 +58,12 @@ BOOST_AUTO_TEST_CASE(one_sphere_comes_to_rest_on_the_floor) {
         BOOST_TEST(stats.stages_converged == params.stages);
         // Soft equilibrium: the floor carries the weight, k·δ = m·g, so the soft sphere of
         // radius (1 + s)·r sinks by δ = d/k_last. Its residual force (≤ 1e-4 m·g) moves it by
-        // at most 1e-4·d/k_last ≈ 5e-11·d; 1e-10·d allows for that. With s = 0 the finish
-        // lifts the overlap away exactly.
+        // at most 1e-4·d/k_last ≈ 5e-11·d; 1e-10·d allows for that. With s = 0 the real
+        // sphere overlaps the floor by δ, and the clearing (FIRE without gravity) parts them:
+        // its inertia leaves the sphere up to 1e-9·d above touching (measured 2.0e-10·d).
         const double soft = box.floor + (1.0 + shell) * r - d / last_stiffness(params);
         const double expected = std::max(soft, box.floor + r);
-        BOOST_TEST(std::abs(ps[0].center.y() - expected) <= 1e-10 * d);
+        BOOST_TEST(std::abs(ps[0].center.y() - expected) <= (shell > 0.0 ? 1e-10 : 1e-9) * d);
         // Frictionless floor: nothing pushes sideways.
         BOOST_TEST(ps[0].center.x() == 0.1);
         BOOST_TEST(ps[0].center.z() == -0.1);
@@ -83,9 +84,10 @@ BOOST_AUTO_TEST_CASE(two_spheres_wedge_between_the_walls_at_the_analytic_height)
     BOOST_TEST(stats.stages_converged == params.stages);
     const double dx = box.x_max - box.x_min - 2.0 * r;
     const double upper = box.floor + r + std::sqrt(d * d - dx * dx);
-    // The soft overlaps (≈ 2 m·g/k_last ≈ 1e-6·d) are pushed out by the finish along the
-    // contact normals to 1e-10·d; 1e-9·d is the invariant's tolerance.
-    const double tolerance = 1e-9 * d;
+    // The soft overlaps (≈ 2 m·g/k_last ≈ 1e-6·d) are parted by the clearing (FIRE without
+    // gravity), whose inertia leaves the spheres a little past touching: measured 3.1e-9·d;
+    // 1e-8·d is 1 % of the overlaps it parts.
+    const double tolerance = 1e-8 * d;
     BOOST_TEST(std::abs(ps[0].center.x() - (box.x_max - r)) <= tolerance);
     BOOST_TEST(std::abs(ps[0].center.y() - (box.floor + r)) <= tolerance);
     BOOST_TEST(std::abs(ps[1].center.x() - (box.x_min + r)) <= tolerance);
@@ -112,9 +114,10 @@ BOOST_AUTO_TEST_CASE(a_sphere_settles_into_the_pocket_of_four_corner_spheres) {
     const double h = std::sqrt(2.0) * c;
     const double top = box.floor + r + std::sqrt(d * d - h * h);
     // Centred: the residual force (≤ 1e-4 m·g) on the top sphere displaces it sideways by
-    // about 1e-4·d/k_last per contact, far below 1e-9·d; its height is then set by the
-    // finish's projections onto the four contacts (1e-10·d), within the invariant's 1e-9·d.
-    const double tolerance = 1e-9 * d;
+    // about 1e-4·d/k_last per contact, far below 1e-9·d. Its four loaded contacts (≈ 1e-6·d
+    // deep) are parted by the clearing, without gravity: the bottom spheres rebound off the
+    // floor by up to 6e-8·d (measured) before FIRE stops them, so heights hold to 1e-7·d.
+    const double tolerance = 1e-7 * d;
     BOOST_TEST(std::abs(ps[4].center.x()) <= tolerance);
     BOOST_TEST(std::abs(ps[4].center.z()) <= tolerance);
     BOOST_TEST(std::abs(ps[4].center.y() - top) <= tolerance);
@@ -292,7 +295,7 @@ BOOST_AUTO_TEST_CASE(the_header_records_the_relaxation_and_what_it_did) {
     BOOST_TEST(m.get_number("relax_stiffness").value_or(0) == 3e3);
     BOOST_TEST(m.get_number("relax_stiffness_factor").value_or(0) == 10.0);
     BOOST_TEST(m.get_number("relax_stages").value_or(0) == 4.0);
-    BOOST_TEST(m.get_number("relax_shell").value_or(0) == 3e-4);
+    BOOST_TEST(m.get_number("relax_shell").value_or(-1) == 0.0);
     BOOST_TEST(m.get_number("relax_force_tolerance").value_or(0) == 1e-4);
     BOOST_TEST(m.get_number("relax_time").value_or(0) == 5.0);
     BOOST_TEST(m.get_number("relax_crossings").value_or(0) == 40.0);

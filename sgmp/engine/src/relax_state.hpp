@@ -18,12 +18,13 @@ struct Triple {
 /// The soft pack being minimised, in an internal order that keeps neighbours close in memory.
 struct State {
     std::vector<Ball> spheres;
-    std::vector<Triple> v;              ///< velocities
-    std::vector<Triple> f;              ///< net forces
-    std::vector<double> weight;         ///< m·g of each sphere, in units of the reference m·g
-    bool gravity = true;                ///< whether the weights act
-    std::vector<float> x0, y0, z0;      ///< positions when the neighbour list was built
-    std::vector<std::size_t> particle;  ///< index in the caller's vector
+    std::vector<Triple> v;  ///< velocities
+    std::vector<Triple> f;  ///< net forces
+    /// m·g of each sphere, in units of the reference m·g; empty when all are 1 (one size).
+    std::vector<double> weight;
+    bool gravity = true;                  ///< whether the weights act
+    std::vector<float> x0, y0, z0;        ///< positions when the neighbour list was built
+    std::vector<std::uint32_t> particle;  ///< index in the caller's vector
     NeighbourList neighbours;
     double skin = 0.0;
 
@@ -40,6 +41,8 @@ struct State {
     std::vector<Triple> pair_spring;  ///< tangential spring ξ per neighbour-list slot
     std::vector<Triple> wall_spring;  ///< tangential spring ξ per sphere and wall (5 each)
     NeighbourList previous;           ///< the list before the last rebuild (to carry ξ over)
+
+    [[nodiscard]] double weight_of(std::size_t i) const { return weight.empty() ? 1.0 : weight[i]; }
 };
 
 /// Sums over the spheres after a force evaluation.

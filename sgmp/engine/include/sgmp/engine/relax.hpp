@@ -34,21 +34,22 @@
 /// elastic relaxation across the pack's height, so they are bounded by `crossings`·H/d_min
 /// steps (at least 500), whatever k. When a stage ends unconverged, 200 steps of steepest
 /// descent c += (0.05/k)·F settle the stiff contact modes (overlaps of spheres still moving)
-/// without moving the slow modes, and then the real spheres' overlaps (a collision caught in
-/// mid-flight, a sphere pressed into a wall) are removed by FIRE on their overlap energy
-/// alone, without gravity: only the overlapping spheres and the chains they press on move,
-/// by about the overlaps (10⁻⁵·d), so the finish starts clean (about 100–250 steps where
-/// needed, at N = 9000–3·10⁴).
+/// without moving the slow modes. Then the real spheres' overlaps (the loaded contacts; a
+/// collision caught in mid-flight, a sphere pressed into a wall) are removed by FIRE on
+/// their overlap energy alone, without gravity — the clearing: only the overlapping spheres
+/// and the chains they press on move, by about the overlaps (up to 10⁻⁴·d), so the pack
+/// unloads elastically, its contacts end touching, and the finish starts clean (about 400
+/// steps at N = 3000–9000).
 ///
 /// Frictionless packs under gravity creep (reference/README.md: a μ = 0 DEM pour takes 7×
 /// the steps of a μ = 0.01 one), so the default bounds, chosen for speed, usually end the
 /// stages before the tolerance is met; `relax_force_max` in the header says what is left
 /// (about 1–5 m·g on the worst sphere at N = 3000–9000: a few spheres still sliding).
 ///
-/// Finish: the real spheres are (1 + s) times smaller than the soft ones, so a soft overlap
-/// below s·(rᵢ + rⱼ) is a real gap of at most s·(rᵢ + rⱼ) (default s = 3·10⁻⁴: contacts end
-/// touching to within 3·10⁻⁴·d, well inside the 10⁻³·d of Z(10⁻³)); deeper ones are removed
-/// by the hard-sphere finish (hard_sphere_finish.hpp).
+/// Finish: the real spheres are (1 + s) times smaller than the soft ones (default s = 0: the
+/// same), so a soft overlap below s·(rᵢ + rⱼ) is a real gap of at most s·(rᵢ + rⱼ); deeper
+/// ones — with s = 0 every loaded contact — are parted by the clearing, and whatever is left
+/// is removed by the hard-sphere finish (hard_sphere_finish.hpp).
 ///
 /// Frictional (`--relax frictional`): the same, with a Coulomb-limited tangential spring at
 /// every contact and three rolling degrees of freedom per sphere in the FIRE vectors

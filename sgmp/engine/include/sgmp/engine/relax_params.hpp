@@ -35,8 +35,12 @@ struct RelaxParams {
     int stages = 4;
     /// Contact shell s: the soft spheres are (1 + s) times the real ones, so a soft contact
     /// pressed by less than s·k·(rᵢ + rⱼ)/d weights leaves the real spheres apart by a gap of
-    /// at most s·(rᵢ + rⱼ); only deeper soft overlaps are left for the hard-sphere finish.
-    double shell = 3e-4;
+    /// at most s·(rᵢ + rⱼ); only deeper soft overlaps are left for the clearing and the
+    /// hard-sphere finish. The default 0 makes the soft spheres the real ones: every loaded
+    /// contact is parted by the clearing to touching (gaps of 10⁻¹⁰–10⁻⁸·d), so the pack's
+    /// contacts count at δ = 10⁻⁶ as well (sgmp/engine/README.md); with s = 3·10⁻⁴ they end
+    /// as gaps of up to 3·10⁻⁴·d and Z(10⁻⁶) is 0.
+    double shell = 0.0;
     /// A stage has converged when no sphere feels a net force above this, in m·g.
     double force_tolerance = 1e-4;
     /// Bound on the first stage's simulated time, in units of √(H/g) with H the pack's height

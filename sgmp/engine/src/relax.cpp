@@ -30,8 +30,14 @@ constexpr double kDtMinOverMax = 0.002;
 constexpr double kFinishToleranceOverD = 1e-10;
 /// Steepest-descent steps after a last stage that did not converge.
 constexpr int kQuenchSteps = 200;
-/// Most steps of the clearing descent (clear_real_overlaps), and how often it checks.
-constexpr long kClearSteps = 2000;
+/// Most steps of the clearing (clear_real_overlaps), in units of H/d_min like the stiff
+/// stages' bounds (the unloading crosses the pack's height), at least kClearMinSteps; and how
+/// often it checks.
+constexpr double kClearCrossings = 150.0;
+constexpr long kClearMinSteps = 2000;
+/// Relative margin the clearing keeps between real spheres (gaps ≥ 10⁻⁹·(rᵢ + rⱼ) less the
+/// finish's 10⁻¹⁰·d tolerance): touching for every contact count at δ ≥ 10⁻⁶.
+constexpr double kClearMargin = 1e-9;
 constexpr long kClearCheckEvery = 20;
 /// Fewest steps a later stage may take (a small pack crosses its height in a few steps, but
 /// FIRE needs some hundred to settle the contacts at a new stiffness).
@@ -366,14 +372,20 @@ double quench(State& s, const Container& box, double k, int steps) {
 /// forces at the last stage's stiffness, without gravity or friction. Spheres clear of the
 /// others feel no force and do not move, so contacts within the shell stay as they are; the
 /// overlapping spheres and the chains they press on part by about the overlaps (up to
-/// 10⁻⁴·d at the bottom of a 10⁵-sphere pack), and FIRE's inertia leaves them touching to
-/// within 10⁻¹⁰–10⁻⁷·d. Stops once no real overlap is deeper than
-/// `tolerance` (checked every kClearCheckEvery steps), or after kClearSteps; returns the
-/// steps taken. The hard-sphere finish is left nothing to resolve: pushing one sphere at a
+/// 10⁻⁴·d at the bottom of a 10⁵-sphere pack) to gaps of 10⁻⁹–10⁻⁷·d (kClearMargin, then
+/// FIRE's inertia). Stops once no real sphere, made kClearMargin larger, overlaps by more
+/// than `tolerance` (checked every kClearCheckEvery steps), or after `max_steps`; returns
+/// the steps taken. The hard-sphere finish is left nothing to resolve: pushing one sphere at a
 /// time, it has to lift a sphere wedged level between its neighbours by √(2·d·δ) for an
 /// overlap δ, and the spheres above it after it.
-long clear_real_overlaps(State& s, const Container& box, double k, double shell, double tolerance) {
-    const double real = 1.0 / (1.0 + shell);
+long clear_real_overlaps(State& s, const Container& box, double k, double shell, double tolerance,
+                         long max_steps) {
+    // The real spheres, a margin larger: they part to gaps of at least
+    // kClearMargin·(rᵢ + rⱼ) − tolerance > 0, so the finish, which pushes a sphere out to
+    // exactly touching one sphere at a time, never meets an overlap it would pass on up a
+    // chain of touching spheres (at N = 10⁵ such pushes, each within the tolerance, added up
+    // along 70 layers to lifts of 36,309 spheres).
+    const double real = (1.0 + kClearMargin) / (1.0 + shell);
     if (!(deepest_overlap(s, box, real) > tolerance)) {
         return 0;
     }
@@ -387,7 +399,7 @@ long clear_real_overlaps(State& s, const Container& box, double k, double shell,
     Fire fire(k);
     stop(s);
     ForceSums sums = compute_forces(s, box, k);
-    while (fire.steps < kClearSteps &&
+    while (fire.steps < max_steps &&
            (fire.steps % kClearCheckEvery != 0 || deepest_overlap(s, box, 1.0) > tolerance)) {
         sums = fire.step(s, box, k, sums);
     }
@@ -439,9 +451,10 @@ void relax_soft(std::vector<Particle>& particles, const Container& container,
         stats.force_max =
             quench(s, container, stiffness / params.stiffness_factor / diameter, kQuenchSteps);
     }
-    stats.steps +=
-        clear_real_overlaps(s, container, stiffness / params.stiffness_factor / diameter,
-                            params.shell, kFinishToleranceOverD * diameter);
+    stats.steps += clear_real_overlaps(
+        s, container, stiffness / params.stiffness_factor / diameter, params.shell,
+        kFinishToleranceOverD * diameter,
+        std::max(kClearMinSteps, std::lround(kClearCrossings * height / d_min)));
     stats.overlap_max = deepest_overlap(s, container, 1.0) / diameter;  // of the soft spheres
     for (std::size_t k = 0; k < s.particle.size(); ++k) {
         particles[s.particle[k]].center = Vec3(s.spheres[k].x, s.spheres[k].y, s.spheres[k].z);

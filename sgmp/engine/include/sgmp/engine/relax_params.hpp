@@ -37,7 +37,7 @@ struct RelaxParams {
     /// pressed by less than s·k·(rᵢ + rⱼ)/d weights leaves the real spheres apart by a gap of
     /// at most s·(rᵢ + rⱼ); only deeper soft overlaps are left for the clearing and the
     /// hard-sphere finish. The default 0 makes the soft spheres the real ones: every loaded
-    /// contact is parted by the clearing to touching (gaps of 10⁻¹⁰–10⁻⁸·d), so the pack's
+    /// contact is parted by the clearing to touching (gaps of 10⁻⁹–10⁻⁷·d), so the pack's
     /// contacts count at δ = 10⁻⁶ as well (sgmp/engine/README.md); with s = 3·10⁻⁴ they end
     /// as gaps of up to 3·10⁻⁴·d and Z(10⁻⁶) is 0.
     double shell = 0.0;

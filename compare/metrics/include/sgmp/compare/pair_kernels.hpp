@@ -134,57 +134,43 @@ void for_each_within_scalar(const double* xs, const double* ys, const double* zs
 }
 
 #if defined(SGMP_PAIR_KERNELS_AVX512)
-/// The first position in [at, last) whose z is not below t (z increasing: the positions
-/// below t are a prefix), eight at a time.
-SGMP_AVX512 inline std::size_t first_not_below(const double* z, std::size_t at, std::size_t last,
-                                               double t) {
+/// The first position p in [at, end) with not (z_p + offset `Cmp` t), eight at a time (z
+/// increasing: the positions where it holds are a prefix). Adding an offset of 0 changes no
+/// comparison.
+template <int Cmp>
+SGMP_AVX512 inline std::size_t first_not(const double* z, std::size_t at, std::size_t end,
+                                         double offset, double t) {
     const __m512d bound = _mm512_set1_pd(t);
-    while (at < last) {
-        const std::size_t n = last - at;
+    const __m512d shift = _mm512_set1_pd(offset);
+    while (at < end) {
+        const std::size_t n = end - at;
         const __mmask8 live = n >= 8 ? __mmask8(0xff) : __mmask8((1u << n) - 1u);
-        const unsigned below =
-            _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, z + at), bound, _CMP_LT_OQ);
-        if (below != 0xffu) {
-            return at + static_cast<unsigned>(__builtin_ctz(~below));
+        const unsigned holds = _mm512_mask_cmp_pd_mask(
+            live, _mm512_add_pd(_mm512_maskz_loadu_pd(live, z + at), shift), bound, Cmp);
+        if (holds != 0xffu) {
+            return at + static_cast<unsigned>(__builtin_ctz(~holds));
         }
         at += 8;
     }
     return at;
+}
+
+/// The first position in [at, last) whose z is not below t.
+SGMP_AVX512 inline std::size_t first_not_below(const double* z, std::size_t at, std::size_t last,
+                                               double t) {
+    return first_not<_CMP_LT_OQ>(z, at, last, 0.0, t);
 }
 
 /// The first position in [at, last) whose z is above t.
 SGMP_AVX512 inline std::size_t first_above(const double* z, std::size_t at, std::size_t last,
                                            double t) {
-    const __m512d bound = _mm512_set1_pd(t);
-    while (at < last) {
-        const std::size_t n = last - at;
-        const __mmask8 live = n >= 8 ? __mmask8(0xff) : __mmask8((1u << n) - 1u);
-        const unsigned below =
-            _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, z + at), bound, _CMP_LE_OQ);
-        if (below != 0xffu) {
-            return at + static_cast<unsigned>(__builtin_ctz(~below));
-        }
-        at += 8;
-    }
-    return at;
+    return first_not<_CMP_LE_OQ>(z, at, last, 0.0, t);
 }
 
 /// The first position p in [at, end) with z_p + half ≥ t (z increasing).
 SGMP_AVX512 inline std::size_t first_reaching(const double* z, std::size_t at, std::size_t end,
                                               double half, double t) {
-    const __m512d bound = _mm512_set1_pd(t);
-    const __m512d reach = _mm512_set1_pd(half);
-    while (at < end) {
-        const std::size_t n = end - at;
-        const __mmask8 live = n >= 8 ? __mmask8(0xff) : __mmask8((1u << n) - 1u);
-        const unsigned below = _mm512_mask_cmp_pd_mask(
-            live, _mm512_add_pd(_mm512_maskz_loadu_pd(live, z + at), reach), bound, _CMP_LT_OQ);
-        if (below != 0xffu) {
-            return at + static_cast<unsigned>(__builtin_ctz(~below));
-        }
-        at += 8;
-    }
-    return at;
+    return first_not<_CMP_LT_OQ>(z, at, end, half, t);
 }
 
 template <class F>

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "brute_force.hpp"
+#include "pack_invariants.hpp"
 #include "refusal.hpp"
 #include "sgmp/engine/hard_sphere_finish.hpp"
 #include "sgmp/engine/make_pack.hpp"
@@ -188,15 +189,7 @@ BOOST_AUTO_TEST_CASE(relaxed_packs_keep_the_invariants_over_seeds_arrangements_a
                     BOOST_TEST_INFO(to_string(a) << " N " << count << " seed " << seed
                                                  << (bimodal ? " bimodal" : ""));
                     BOOST_TEST_REQUIRE(pack.particles.size() == count);
-                    // 1e-9·d: the invariant of every SGMP pack (the finish leaves 1e-10·d).
-                    const double tolerance = 1e-9 * d;
-                    BOOST_TEST(engine::testing::worst_pair_gap(pack.particles) >= -tolerance);
-                    BOOST_TEST(engine::testing::worst_penetration(pack.particles, Container{}) <=
-                               tolerance);
-                    const PackCheck check =
-                        check_pack(pack.particles, Container{}, tolerance, INFINITY);
-                    BOOST_TEST(check.overlaps == 0u);
-                    BOOST_TEST(check.outside == 0u);
+                    engine::testing::check_no_overlap_and_inside(pack.particles, d);
                     ++packs;
                 }
             }

@@ -148,7 +148,8 @@ void write_file_atomically(const fs::path& target, bool overwrite,
         {
             boost::iostreams::filtering_ostream out;
             if (ends_with_gz(target)) {
-                out.push(boost::iostreams::gzip_compressor(boost::iostreams::gzip_params(kGzipLevel)));
+                out.push(
+                    boost::iostreams::gzip_compressor(boost::iostreams::gzip_params(kGzipLevel)));
             }
             out.push(DescriptorSink(fd, &target, &failure), 1 << 16);
             // A failed write stops `produce` at once, as an exception.

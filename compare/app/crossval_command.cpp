@@ -52,9 +52,7 @@ nlohmann::ordered_json manifest_json(const std::vector<ManifestEntry>& manifest)
     nlohmann::ordered_json list = nlohmann::ordered_json::array();
     for (const auto& e : manifest) {
         list.push_back(
-            {{"role", e.role == Role::Candidate   ? "candidate"
-                      : e.role == Role::Reference ? "reference"
-                                                  : "variant"},
+            {{"role", to_string(e.role)},
              {"group", e.group},
              {"count", e.count},
              {"seed", e.seed},
@@ -88,7 +86,14 @@ int run_crossval(CrossvalOptions& o, const std::string& command) {
     for (std::size_t g = 0; g < plan.labels.size(); ++g) {
         groups.push_back(measure_group(plan.labels[g], plan.paths[g], o.common));
     }
-    const Report report = build_report(std::move(groups), plan.plan);
+    std::vector<std::string> limit_notes;
+    try {
+        limit_notes = add_hard_sphere_limits(groups, plan);
+    } catch (const std::invalid_argument& error) {
+        throw InputError(o.manifest, 0, error.what());
+    }
+    Report report = build_report(std::move(groups), plan.plan);
+    report.notes.insert(report.notes.end(), limit_notes.begin(), limit_notes.end());
     const CrossValidation cv = cross_validate(report, manifest, thesis);
 
     nlohmann::ordered_json provenance{

@@ -97,7 +97,7 @@ BOOST_AUTO_TEST_CASE(manifest_is_read_strictly) {
                "m.csv: empty manifest: expected the header 'role,group,count,seed,seconds,path'");
     BOOST_TEST(manifest_error(kManifestHeader) == "m.csv:1: the manifest lists no packs");
     BOOST_TEST(manifest_error(kManifestHeader + "judge,a,150,1,,p\n") ==
-               "m.csv:2: role 'judge' must be 'candidate', 'reference' or 'variant'");
+               "m.csv:2: role 'judge' must be 'candidate', 'reference', 'variant' or 'stiff'");
     BOOST_TEST(manifest_error(kManifestHeader + "candidate,a,many,1,,p\n") ==
                "m.csv:2: count 'many' must be a positive integer");
     BOOST_TEST(manifest_error(kManifestHeader + "candidate,a,150,1,-3,p\n") ==
@@ -112,7 +112,7 @@ BOOST_AUTO_TEST_CASE(groups_are_planned_every_candidate_against_every_reference)
     const GroupPlan plan = plan_groups(sample_manifest());
     BOOST_TEST(plan.labels.size() == 4u);
     BOOST_TEST(plan.plan.comparisons.size() == 4u);
-    BOOST_TEST(plan.plan.classes.size() == 2u);
+    BOOST_TEST(plan.plan.class_sets.front().size() == 2u);
     BOOST_TEST(plan.plan.variants.empty());
     BOOST_TEST(plan.paths[0].size() == 2u);
     // A variant set belongs to the reference group it names, and is compared with nothing.

@@ -4,7 +4,10 @@
 //   most 1 false alarm in 20 verdicts; its model spread at the count judged is taken from
 //   the other counts only (leave one count out), so the check is not circular;
 // - DEM μ = 0.5 differs from μ = 0.01 on φ and Z(δ = 10⁻³) at every N ≥ 2001, and on g(r)
-//   at N = 9000, where DEM can tell the classes apart.
+//   at N = 9000, where DEM can tell the classes apart;
+// - the hard-sphere limits of μ = 0 and μ = 0.5 (from the stiff set) are what an independent
+//   scipy extrapolation of the same pours gives, lie below the pours in Z, and differ from
+//   each other on φ and Z(δ = 10⁻³) at every count both have.
 #include <boost/test/unit_test.hpp>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +15,7 @@
 #include <vector>
 
 #include "sgmp/compare/agreement.hpp"
+#include "sgmp/compare/hard_sphere_limit.hpp"
 #include "sgmp/pack/pack_file.hpp"
 
 using namespace sgmp;
@@ -135,6 +139,55 @@ BOOST_AUTO_TEST_CASE(the_friction_classes_differ_where_dem_tells_them_apart) {
         }
     }
     BOOST_TEST(r.comparisons.size() == kCounts.size());
+}
+
+BOOST_AUTO_TEST_CASE(the_hard_sphere_limits_of_the_classes) {
+    std::vector<std::string> unpaired;
+    const Group smooth = hard_sphere_limit(pours("DEM mu=0", ".", "0"),
+                                           pours("DEM mu=0 (stiff)", "stiff", "0"), "0", unpaired);
+    const Group frictional = hard_sphere_limit(
+        sets().main_frictional, pours("DEM mu=0.5 (stiff)", "stiff", "0.5"), "0.5", unpaired);
+    BOOST_TEST(unpaired.empty());
+    BOOST_TEST_REQUIRE(smooth.packs.size() >= 12u);  // 1002, 2001, 3000, 9000 × 3 seeds
+    const auto mean_at = [](const Group& g, std::size_t n, const std::string& metric) {
+        const auto& rules = metric_rules();
+        std::size_t k = 0;
+        for (const auto& rule : rules) {
+            if (rule.name == metric) {
+                break;
+            }
+            k += rule.kind == MetricKind::Scalar ? 1 : 0;
+        }
+        double sum = 0.0;
+        int packs = 0;
+        for (const auto& p : g.packs) {
+            if (p.count == n) {
+                sum += p.scalars[k];
+                ++packs;
+            }
+        }
+        return sum / packs;
+    };
+    // scripts/hard-sphere-limit and a scipy kd-tree count of the same six pours: 5.970 and
+    // 6.044 (3 decimals; tolerance 0.005, the rounding plus the two codes' control volumes).
+    BOOST_TEST(std::abs(mean_at(smooth, 3000, "z_mean_tol_1e-3") - 5.970) < 0.005);
+    BOOST_TEST(std::abs(mean_at(smooth, 9000, "z_mean_tol_1e-3") - 6.044) < 0.005);
+    BOOST_TEST(std::abs(mean_at(smooth, 9000, "phi") - 0.6324) < 0.0005);
+
+    Group smooth_pours = pours("DEM mu=0", ".", "0");
+    ReportPlan plan;
+    plan.comparisons = {{0, 1}};
+    const Report r = build_report({smooth, frictional}, plan);
+    std::size_t compared = 0;
+    for (const auto& c : r.comparisons) {
+        ++compared;
+        BOOST_TEST(c.row("phi").verdict == Verdict::Differ, "N = " << c.count);
+        BOOST_TEST(c.row("z_mean_tol_1e-3").verdict == Verdict::Differ, "N = " << c.count);
+        BOOST_TEST(mean_at(smooth, c.count, "z_mean_tol_1e-3") <
+                       mean_at(smooth_pours, c.count, "z_mean_tol_1e-3"),
+                   "N = " << c.count);
+    }
+    BOOST_TEST(compared >= 4u);  // 1002, 2001, 3000, 9000 at least
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -111,7 +111,7 @@ BOOST_AUTO_TEST_CASE(classes_that_cannot_be_told_apart_make_verdicts_inconclusiv
     std::vector<Group> groups{group("SGMP", 1.05, 2), group("C1", 1.05, 3), group("C2", 1.05, 3),
                               group("C3", 1.12, 3)};
     ReportPlan plan = plan_of({{0, 1}, {0, 3}});
-    plan.classes = {1, 2, 3};
+    plan.class_sets = {{1, 2, 3}};
     const Report r = build_report(groups, plan);
     for (const auto& row : r.comparisons[0].rows) {
         const Verdict expected =

@@ -55,7 +55,7 @@ Pack scaled(Pack pack) {
 Report against_both_classes(const Group& sgmp) {
     ReportPlan plan;
     plan.comparisons = {{0, 1}, {0, 2}};
-    plan.classes = {1, 2};
+    plan.class_sets = {{1, 2}};
     return build_report({sgmp, measured("DEM mu=0.5", dem_pours(1002, "0.5")),
                          measured("DEM mu=0.01", dem_pours(1002, "0.01"))},
                         plan);

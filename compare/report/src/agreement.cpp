@@ -214,12 +214,12 @@ Comparison compare_at(const Group& candidate, const Group& reference, const Grou
 
 /// Per metric, whether every other class at `count` differs from class `self` by the rule
 /// with `self` as reference (the power of the metric there; see the header).
-std::vector<bool> power_of(const Report& report, std::size_t self, std::size_t count,
-                           const std::vector<double>& model) {
+std::vector<bool> power_of(const Report& report, const std::vector<std::size_t>& classes,
+                           std::size_t self, std::size_t count, const std::vector<double>& model) {
     const auto& rules = metric_rules();
     const auto reference = packs_of(report.groups[self], count);
     std::vector<bool> told_apart(rules.size(), true);
-    for (const std::size_t other : report.plan.classes) {
+    for (const std::size_t other : classes) {
         const auto others = packs_of(report.groups[other], count);
         if (other == self || others.empty()) {
             continue;
@@ -236,23 +236,27 @@ std::vector<bool> power_of(const Report& report, std::size_t self, std::size_t c
 /// Marks rows inconclusive where the reference classes cannot be told apart (see header).
 /// The class-against-class judgements are made once per (class, count), not per candidate.
 void apply_power(Report& report, const std::vector<std::vector<double>>& model_by_group) {
-    const auto& classes = report.plan.classes;
-    if (classes.size() < 2) {
-        return;
-    }
     std::map<std::pair<std::size_t, std::size_t>, std::vector<bool>> power;
     for (auto& c : report.comparisons) {
-        const auto self = std::find_if(classes.begin(), classes.end(), [&](std::size_t g) {
-            return report.groups[g].label == c.reference;
-        });
-        if (self == classes.end()) {
+        const std::vector<std::size_t>* classes = nullptr;
+        std::size_t self = 0;
+        for (const auto& set : report.plan.class_sets) {
+            for (const std::size_t g : set) {
+                if (report.groups[g].label == c.reference && set.size() >= 2) {
+                    classes = &set;
+                    self = g;
+                }
+            }
+        }
+        if (classes == nullptr) {
             continue;
         }
-        const auto key = std::pair{*self, c.count};
+        const auto key = std::pair{self, c.count};
         auto found = power.find(key);
         if (found == power.end()) {
             found =
-                power.emplace(key, power_of(report, *self, c.count, model_by_group[*self])).first;
+                power.emplace(key, power_of(report, *classes, self, c.count, model_by_group[self]))
+                    .first;
         }
         for (std::size_t m = 0; m < c.rows.size(); ++m) {
             MetricRow& row = c.rows[m];

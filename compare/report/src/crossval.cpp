@@ -1,5 +1,7 @@
 #include "sgmp/compare/crossval.hpp"
 
+#include "sgmp/compare/hard_sphere_limit.hpp"
+
 #include <algorithm>
 #include <map>
 #include <set>
@@ -142,8 +144,12 @@ GroupPlan plan_groups(const std::vector<ManifestEntry>& manifest) {
     std::vector<std::size_t> candidates;
     std::vector<std::size_t> references;
     std::map<std::string, std::size_t> variant_of;
+    std::vector<std::pair<std::string, std::size_t>> stiff_of;  // in manifest order
+    const auto is_set_of_a_reference = [](Role role) {
+        return role == Role::Variant || role == Role::Stiff;
+    };
     for (const auto& entry : manifest) {
-        if (entry.role != Role::Variant) {
+        if (!is_set_of_a_reference(entry.role)) {
             const auto [known, fresh] = role_of.emplace(entry.group, entry.role);
             if (!fresh && known->second != entry.role) {
                 throw std::invalid_argument("group '" + entry.group +
@@ -153,11 +159,14 @@ GroupPlan plan_groups(const std::vector<ManifestEntry>& manifest) {
         const auto [it, fresh] =
             index.emplace(std::pair{entry.group, entry.role}, result.labels.size());
         if (fresh) {
-            result.labels.push_back(entry.role == Role::Variant ? entry.group + " (variant)"
-                                                                : entry.group);
+            result.labels.push_back(is_set_of_a_reference(entry.role)
+                                        ? entry.group + " (" + to_string(entry.role) + ")"
+                                        : entry.group);
             result.paths.emplace_back();
             if (entry.role == Role::Variant) {
                 variant_of[entry.group] = it->second;
+            } else if (entry.role == Role::Stiff) {
+                stiff_of.emplace_back(entry.group, it->second);
             } else {
                 (entry.role == Role::Candidate ? candidates : references).push_back(it->second);
             }
@@ -168,21 +177,56 @@ GroupPlan plan_groups(const std::vector<ManifestEntry>& manifest) {
         throw std::invalid_argument(
             "the manifest needs at least one candidate and one reference group");
     }
-    for (const auto& [group, v] : variant_of) {
+    const auto reference_named = [&](const std::string& group, Role role) {
         const auto ref = role_of.find(group);
         if (ref == role_of.end() || ref->second != Role::Reference) {
-            throw std::invalid_argument("variant group '" + group +
+            throw std::invalid_argument(std::string(to_string(role)) + " group '" + group +
                                         "' names no reference group of the manifest");
         }
-        result.plan.variants[index.at({group, Role::Reference})] = v;
+        return index.at({group, Role::Reference});
+    };
+    for (const auto& [group, v] : variant_of) {
+        result.plan.variants[reference_named(group, Role::Variant)] = v;
+    }
+    for (const auto& [group, s] : stiff_of) {
+        const std::size_t r = reference_named(group, Role::Stiff);
+        result.plan.variants.emplace(r, s);  // a variant set, where there is one, comes first
+        result.stiff.emplace_back(r, s);
     }
     for (const auto c : candidates) {
         for (const auto r : references) {
             result.plan.comparisons.emplace_back(c, r);
         }
     }
-    result.plan.classes = references;
+    result.candidates = candidates;
+    result.plan.class_sets = {references};
     return result;
+}
+
+std::vector<std::string> add_hard_sphere_limits(std::vector<Group>& groups, GroupPlan& plan) {
+    std::vector<std::string> notes;
+    std::vector<std::size_t> limits;
+    for (const auto& [r, s] : plan.stiff) {
+        const std::string label = groups.at(r).label + " " + std::string(kHardSphereLimitSuffix);
+        Group limit = hard_sphere_limit(groups.at(r), groups.at(s), label, notes);
+        if (limit.packs.empty()) {
+            continue;
+        }
+        const std::size_t l = groups.size();
+        groups.push_back(std::move(limit));
+        plan.labels.push_back(label);
+        plan.paths.emplace_back();
+        plan.plan.variants[l] = s;
+        plan.plan.derived_from[l] = r;
+        for (const auto c : plan.candidates) {
+            plan.plan.comparisons.emplace_back(c, l);
+        }
+        limits.push_back(l);
+    }
+    if (!limits.empty()) {
+        plan.plan.class_sets.push_back(limits);
+    }
+    return notes;
 }
 
 CrossValidation cross_validate(const Report& report, const std::vector<ManifestEntry>& manifest,
@@ -190,6 +234,17 @@ CrossValidation cross_validate(const Report& report, const std::vector<ManifestE
     CrossValidation cv;
     cv.candidates = labels_of(manifest, Role::Candidate);
     cv.references = labels_of(manifest, Role::Reference);
+    std::map<std::string, std::string> runtime_label;  // a derived reference → its pours' group
+    for (const auto& [ci, ri] : report.plan.comparisons) {
+        const std::string& label = report.groups.at(ri).label;
+        if (std::find(cv.references.begin(), cv.references.end(), label) == cv.references.end()) {
+            cv.references.push_back(label);
+        }
+        const auto source = report.plan.derived_from.find(ri);
+        runtime_label[label] = source == report.plan.derived_from.end()
+                                   ? label
+                                   : report.groups.at(source->second).label;
+    }
     std::map<std::pair<std::string, std::size_t>, HeadlineRow> rows;
     std::set<std::size_t> counts;
     for (const auto& c : report.comparisons) {
@@ -207,7 +262,10 @@ CrossValidation cross_validate(const Report& report, const std::vector<ManifestE
         auto& v = row.against[static_cast<std::size_t>(slot - cv.references.begin())];
         v.reference = c.reference;
         v.rows = c.rows;
-        v.reference_seconds = mean_seconds(manifest, c.reference, Role::Reference, c.count);
+        const auto source = runtime_label.find(c.reference);
+        v.reference_seconds =
+            mean_seconds(manifest, source == runtime_label.end() ? c.reference : source->second,
+                         Role::Reference, c.count);
     }
     cv.counts.assign(counts.begin(), counts.end());
     for (const auto& group : report.groups) {

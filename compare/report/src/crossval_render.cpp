@@ -1,5 +1,6 @@
 #include "sgmp/compare/crossval_render.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -63,7 +64,15 @@ void stand_in_markdown(std::ostringstream& md, const CrossValidation& cv) {
     md << "## Which SGMP mode stands in for which DEM class\n\n";
     md << "A mode stands in for a class when no judged metric differs at any count "
           "(verdicts counted over every count and judged metric; speed: the DEM pour's mean "
-          "wall time over the mode's at the largest count).\n\n";
+          "wall time over the mode's at the largest count).";
+    if (std::any_of(cv.references.begin(), cv.references.end(),
+                    [](const std::string& r) { return r.ends_with(kHardSphereLimitSuffix); })) {
+        md << " A class's *hard-sphere limit* is its pours extrapolated to infinitely stiff "
+              "contacts from the same pours settled again at 16× the stiffness (rules at the "
+              "end of the page): SGMP packs are hard spheres, while a pour's compressed Hertz "
+              "contacts count as contacts.";
+    }
+    md << "\n\n";
     for (std::size_t r = 0; r < cv.references.size(); ++r) {
         std::vector<const StandIn*> per;
         for (const auto& s : cv.stand_ins) {

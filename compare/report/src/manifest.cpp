@@ -13,6 +13,20 @@ constexpr const char* kHeader = "role,group,count,seed,seconds,path";
 
 }  // namespace
 
+const char* to_string(Role role) {
+    switch (role) {
+        case Role::Candidate:
+            return "candidate";
+        case Role::Reference:
+            return "reference";
+        case Role::Variant:
+            return "variant";
+        case Role::Stiff:
+            return "stiff";
+    }
+    return "candidate";
+}
+
 std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& source) {
     LineReader reader(in, source);
     std::string line;
@@ -22,8 +36,7 @@ std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& so
     }
     if (line != kHeader) {
         throw InputError(
-            source, 1,
-            "expected the header '" + std::string(kHeader) + "', found '" + line + "'");
+            source, 1, "expected the header '" + std::string(kHeader) + "', found '" + line + "'");
     }
     std::vector<ManifestEntry> entries;
     std::set<std::string> paths;
@@ -50,10 +63,12 @@ std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& so
             entry.role = Role::Reference;
         } else if (fields[0] == "variant") {
             entry.role = Role::Variant;
+        } else if (fields[0] == "stiff") {
+            entry.role = Role::Stiff;
         } else {
             throw InputError(
                 source, number,
-                "role '" + fields[0] + "' must be 'candidate', 'reference' or 'variant'");
+                "role '" + fields[0] + "' must be 'candidate', 'reference', 'variant' or 'stiff'");
         }
         entry.group = fields[1];
         if (entry.group.empty()) {

@@ -40,7 +40,9 @@ std::size_t pictured_count(const std::vector<ManifestEntry>& manifest, std::size
     std::set<std::size_t> candidates;
     std::set<std::size_t> references;
     for (const auto& e : manifest) {
-        (e.role == Role::Candidate ? candidates : references).insert(e.count);
+        if (e.role == Role::Candidate || e.role == Role::Reference) {
+            (e.role == Role::Candidate ? candidates : references).insert(e.count);
+        }
     }
     std::size_t best = 0;
     for (const std::size_t n : candidates) {
@@ -79,7 +81,8 @@ std::vector<PictureChoice> choose_pictures(const std::vector<ManifestEntry>& man
         std::map<std::string, const ManifestEntry*> lowest;
         for (const auto& e : manifest) {
             const bool is_reference = e.role == Role::Reference;
-            if (e.count != count || e.role == Role::Variant || is_reference != reference) {
+            const bool pictured = e.role == Role::Candidate || e.role == Role::Reference;
+            if (e.count != count || !pictured || is_reference != reference) {
                 continue;
             }
             auto [it, fresh] = lowest.emplace(e.group, &e);

@@ -25,10 +25,10 @@
 /// a multiple of D_rep (root mean square over the variant's counts of D(variant mean,
 /// reference mean) / D_rep). ratio = D / S; agree when ratio ≤ 1.
 ///
-/// Power: where several reference groups are classes (e.g. DEM friction classes), a verdict
-/// against class R at count N on metric m is `inconclusive` unless every other class at N
-/// differs from R on m by the same rule (R as reference): the metric cannot tell the
-/// classes apart there, so agreement with R is no evidence. With fewer than two reference
+/// Power: where several reference groups are classes of one kind (e.g. DEM friction classes),
+/// a verdict against class R at count N on metric m is `inconclusive` unless every other
+/// class of R's set at N differs from R on m by the same rule (R as reference): the metric cannot
+/// tell the classes apart there, so agreement with R is no evidence. With fewer than two reference
 /// packs the scale is undefined and curve verdicts are `inconclusive`; scalar tolerances
 /// fall back to the floor.
 
@@ -161,11 +161,16 @@ struct Comparison {
 /// Which groups to compare and how tolerances are made.
 struct ReportPlan {
     std::vector<std::pair<std::size_t, std::size_t>> comparisons;  // (candidate, reference)
-    /// Reference groups that are classes: a verdict against one needs the metric to tell it
-    /// from every other (power). Empty or one: power is not assessed.
-    std::vector<std::size_t> classes;
+    /// Sets of reference groups that are classes of one kind (the DEM friction classes as
+    /// poured; their hard-sphere limits): a verdict against one needs the metric to tell it
+    /// from every other class of its set at that count (power). A set of one: power is not
+    /// assessed.
+    std::vector<std::vector<std::size_t>> class_sets;
     /// Reference group → its variant group (model spread).
     std::map<std::size_t, std::size_t> variants;
+    /// Reference group derived from another's packs (its hard-sphere limit) → that group:
+    /// the DEM runtime shown beside the derived group is that group's.
+    std::map<std::size_t, std::size_t> derived_from;
 };
 
 struct Report {

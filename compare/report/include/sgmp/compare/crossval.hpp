@@ -85,12 +85,29 @@ CrossValidation cross_validate(const Report& report, const std::vector<ManifestE
 
 /// The groups of a manifest and what to compare: every candidate against every reference;
 /// references are the classes; a `variant` group (`role` variant, `group` naming its
-/// reference) is the reference's model-spread set and is compared with nothing.
+/// reference) is the reference's model-spread set and is compared with nothing; a `stiff`
+/// group (the reference's pours settled again at stiffer contacts) is the model-spread set
+/// of a reference without a variant group, and gives the reference's hard-sphere limit
+/// (add_hard_sphere_limits).
 struct GroupPlan {
     std::vector<std::string> labels;
-    std::vector<std::vector<std::string>> paths;  // per label
+    std::vector<std::vector<std::string>> paths;  // per label; empty for a derived group
     ReportPlan plan;
+    std::vector<std::size_t> candidates;                     // group indices
+    std::vector<std::pair<std::size_t, std::size_t>> stiff;  // (reference, its stiff group)
 };
 GroupPlan plan_groups(const std::vector<ManifestEntry>& manifest);
+
+/// How a reference group's hard-sphere limit is labelled: "<reference> hard-sphere limit".
+inline constexpr const char* kHardSphereLimitSuffix = "hard-sphere limit";
+
+/// Appends to `groups` (the measured groups of `plan`, in its order) the hard-sphere limit
+/// of every reference with a stiff group (hard_sphere_limit.hpp), and plans it as a
+/// reference of its own: every candidate is compared with it; its model spread is its
+/// distance from the stiff pours (the limit is known no better than its last extrapolation
+/// step); its runtime is the pours' (derived_from); and the limits form a class set of their
+/// own, so a limit's power is judged against the other classes' limits, not against the
+/// soft pours of the same physics. Returns notes on stiff pours left out.
+std::vector<std::string> add_hard_sphere_limits(std::vector<Group>& groups, GroupPlan& plan);
 
 }  // namespace sgmp::compare

@@ -5,7 +5,9 @@
 /// under test, e.g. one SGMP arrangement per group) or `reference` (packs whose
 /// seed-to-seed spread sets the tolerances, e.g. one DEM friction class per group) or
 /// `variant` (a second, independent set-up of a reference group named by `group`, whose
-/// distance from it is the model spread);
+/// distance from it is the model spread) or `stiff` (the pours of a reference group named by
+/// `group` settled again at stiffer contacts, pack by pack with the same seeds: the report
+/// extrapolates each pair to hard spheres, hard_sphere_limit.hpp);
 /// `seconds` is the wall time that made the pack (empty when unknown).
 
 #include <cstddef>
@@ -17,7 +19,9 @@
 
 namespace sgmp::compare {
 
-enum class Role { Candidate, Reference, Variant };
+enum class Role { Candidate, Reference, Variant, Stiff };
+/// "candidate", "reference", "variant", "stiff": the manifest's words.
+const char* to_string(Role role);
 
 struct ManifestEntry {
     Role role = Role::Candidate;

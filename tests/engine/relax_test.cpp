@@ -287,7 +287,7 @@ BOOST_AUTO_TEST_CASE(the_header_records_the_relaxation_and_what_it_did) {
     BOOST_TEST(m.get("relax").value_or("") == "frictionless");
     BOOST_TEST(m.get_number("relax_stiffness").value_or(0) == 3e3);
     BOOST_TEST(m.get_number("relax_stiffness_factor").value_or(0) == 10.0);
-    BOOST_TEST(m.get_number("relax_stages").value_or(0) == 4.0);
+    BOOST_TEST(m.get_number("relax_stages").value_or(0) == 5.0);
     BOOST_TEST(m.get_number("relax_shell").value_or(-1) == 0.0);
     BOOST_TEST(m.get_number("relax_force_tolerance").value_or(0) == 1e-4);
     BOOST_TEST(m.get_number("relax_time").value_or(0) == 5.0);

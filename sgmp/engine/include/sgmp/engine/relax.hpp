@@ -30,7 +30,7 @@
 /// N = 3000, like the DEM reference's Hertz contacts) does the collective rearrangement with
 /// long time steps; it is bounded in simulated time, `time`·√(H/g) (H the pack's height
 /// above the floor), since the collapse takes about a free fall through the pack. The
-/// stiffer ones (the default ends at 2·10⁶) squeeze the overlaps below the shell; that is an
+/// stiffer ones (the default ends at 2·10⁷) squeeze the overlaps below the shell; that is an
 /// elastic relaxation across the pack's height, so they are bounded by `crossings`·H/d_min
 /// steps (at least 500), whatever k. When a stage ends unconverged, 200 steps of steepest
 /// descent c += (0.05/k)·F settle the stiff contact modes (overlaps of spheres still moving)

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "sgmp/compare/hard_sphere_limit.hpp"
 #include "sgmp/compare/measure.hpp"
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/child_process.hpp"
@@ -48,13 +49,79 @@ std::string mean_label(const std::string& label, std::size_t packs) {
     return label + " (mean of " + std::to_string(packs) + ")";
 }
 
-/// Okabe–Ito colours (distinguishable with the common colour-vision deficiencies), no yellow.
+/// Okabe–Ito colours (distinguishable with the common colour-vision deficiencies), no yellow,
+/// for candidates (linetypes 1–8); darker tones of four of them for reference classes
+/// (linetypes 11–14), so a band never shares a candidate's colour.
 constexpr const char* kPalette =
     "set linetype 1 lc rgb '#0072B2' lw 2\nset linetype 2 lc rgb '#D55E00' lw 2\n"
     "set linetype 3 lc rgb '#009E73' lw 2\nset linetype 4 lc rgb '#CC79A7' lw 2\n"
     "set linetype 5 lc rgb '#E69F00' lw 2\nset linetype 6 lc rgb '#56B4E9' lw 2\n"
     "set linetype 7 lc rgb '#000000' lw 2\nset linetype 8 lc rgb '#999999' lw 2\n"
-    "set linetype cycle 8\n";
+    "set linetype 11 lc rgb '#B84A00' lw 2\nset linetype 12 lc rgb '#007A5A' lw 2\n"
+    "set linetype 13 lc rgb '#A24E8E' lw 2\nset linetype 14 lc rgb '#A87400' lw 2\n";
+constexpr int kCandidateColours = 8;
+constexpr int kReferenceColours = 4;
+
+/// How one series of a plot is drawn: candidates in colours 1–8 with their own point shape;
+/// each reference class in its own darker colour, dashed; a class's hard-sphere limit in the
+/// class's colour, dotted, its band hatched.
+struct SeriesStyle {
+    std::string line;  // " lt N dt M" (and " pt P" for candidates)
+    std::string band;  // the fill of a ± 2 sd band
+};
+
+/// Styles of the series of one plot, in order; `labels` with `reference` flags.
+std::vector<SeriesStyle> series_styles(const std::vector<std::pair<std::string, bool>>& series) {
+    static const int kPoints[] = {7, 5, 9, 11, 13, 15, 4, 6};
+    const std::string suffix = std::string(" ") + kHardSphereLimitSuffix;
+    std::vector<std::string> classes;
+    std::vector<SeriesStyle> styles;
+    int candidates = 0;
+    for (const auto& [label, reference] : series) {
+        if (!reference) {
+            const int k = candidates++ % kCandidateColours;
+            styles.push_back({" lt " + std::to_string(k + 1) + " pt " + std::to_string(kPoints[k]),
+                              " fs transparent solid 0.3"});
+            continue;
+        }
+        const bool limit = label.ends_with(suffix);
+        const std::string base = limit ? label.substr(0, label.size() - suffix.size()) : label;
+        auto it = std::find(classes.begin(), classes.end(), base);
+        if (it == classes.end()) {
+            classes.push_back(base);
+            it = classes.end() - 1;
+        }
+        const int colour = 11 + static_cast<int>(it - classes.begin()) % kReferenceColours;
+        styles.push_back(
+            {" lt " + std::to_string(colour) + (limit ? " dt 3" : " dt 2"),
+             limit ? " fs transparent pattern 4 border" : " fs transparent solid 0.3"});
+    }
+    return styles;
+}
+
+/// The style without its point shape, for lines and bands.
+std::string line_only(const std::string& style) {
+    const auto at = style.find(" pt ");
+    return at == std::string::npos ? style : style.substr(0, at);
+}
+
+/// The style with its dash pattern replaced by `dash`.
+std::string dashed(const std::string& style, const std::string& dash) {
+    const auto at = style.find(" dt ");
+    if (at == std::string::npos) {
+        return style + dash;
+    }
+    const auto end = style.find(' ', at + 4);
+    return style.substr(0, at) + dash + (end == std::string::npos ? "" : style.substr(end));
+}
+
+std::vector<SeriesStyle> panel_styles(const PlotPanel& panel) {
+    std::vector<std::pair<std::string, bool>> series;
+    for (const auto& curve : panel.curves) {
+        series.emplace_back(curve.group.empty() ? curve.label : curve.group, curve.reference);
+    }
+    return series_styles(series);
+}
 
 /// Tick labels 10ᵏ for a log axis from 10⁻⁶ to 10⁻¹.
 constexpr const char* kPowerTicks =
@@ -77,22 +144,23 @@ void write_gr_plot(std::ostringstream& gp, const fs::path& plots, const PlotPane
     const std::string& stem = panel.stem;
     std::ostringstream main;
     std::ostringstream inset;
+    const auto styles = panel_styles(panel);
     for (std::size_t k = 0; k < panel.curves.size(); ++k) {
         const auto& curve = panel.curves[k];
         const std::string file = stem + "_gr_" + std::to_string(k) + ".dat";
         write_text_file(plots / file, columns(curve.curves->gr_r, curve.curves->gr));
-        const std::string color = " lt " + std::to_string(k + 1);
+        const std::string color = line_only(styles[k].line);
         if (curve.reference) {
             const std::string band = stem + "_grband_" + std::to_string(k) + ".dat";
             write_text_file(plots / band, band_columns(curve.curves->gr_r, curve.curves->gr,
                                                        curve.curves->gr_sd));
+            // Solid for every reference: a hatch drowns the curves' peaks.
             main << "'" << band << "' using 1:2:3 with filledcurves fs transparent solid 0.25"
                  << color << " notitle, ";
         }
-        main << "'" << file << "' with lines" << color << (curve.reference ? " dt 2" : "")
-             << " title " << quoted(curve.label + (curve.reference ? " ± 2 sd" : "")) << ", ";
-        inset << "'" << file << "' with lines" << color << (curve.reference ? " dt 2" : "")
-              << " notitle, ";
+        main << "'" << file << "' with lines" << color << " title "
+             << quoted(curve.label + (curve.reference ? " ± 2 sd" : "")) << ", ";
+        inset << "'" << file << "' with lines" << color << " notitle, ";
     }
     const auto trimmed = [](std::string text) { return text.substr(0, text.size() - 2); };
     gp << "set output '" << stem << "_gr.svg'\nset multiplot\nset title "
@@ -123,22 +191,28 @@ std::vector<std::string> write_trend_plots(std::ostringstream& gp, const fs::pat
         std::ostringstream plot;
         std::size_t k = 0;
         std::string label;
+        std::vector<const Trend*> series;
+        std::vector<std::pair<std::string, bool>> labels;
         for (const auto& t : trends) {
-            if (t.metric != metric) {
-                continue;
+            if (t.metric == metric) {
+                series.push_back(&t);
+                labels.emplace_back(t.label, t.reference);
             }
-            label = t.metric_label;
+        }
+        const auto styles = series_styles(labels);
+        for (const Trend* t : series) {
+            label = t->metric_label;
+            const SeriesStyle& style = styles[k];
             ++k;
             const std::string file = "trend_" + metric + "_" + std::to_string(k) + ".dat";
-            const std::string color = " lt " + std::to_string(k);
-            if (t.reference) {
-                write_text_file(plots / file, band_columns(t.count, t.mean, t.sd));
-                plot << "'" << file << "' using 1:2:3 with filledcurves fs transparent solid 0.3"
-                     << color << " title " << quoted(t.label + " ± 2 sd") << ", ";
+            if (t->reference) {
+                write_text_file(plots / file, band_columns(t->count, t->mean, t->sd));
+                plot << "'" << file << "' using 1:2:3 with filledcurves" << style.band
+                     << line_only(style.line) << " title " << quoted(t->label + " ± 2 sd") << ", ";
             } else {
-                write_text_file(plots / file, columns(t.count, t.mean));
-                plot << "'" << file << "' with linespoints pt 7 ps 0.8" << color << " title "
-                     << quoted(t.label) << ", ";
+                write_text_file(plots / file, columns(t->count, t->mean));
+                plot << "'" << file << "' with linespoints ps 0.8" << style.line << " title "
+                     << quoted(t->label) << ", ";
             }
         }
         const std::string text = plot.str();
@@ -148,11 +222,6 @@ std::vector<std::string> write_trend_plots(std::ostringstream& gp, const fs::pat
         files.push_back("plots/trend_" + metric + ".svg");
     }
     return files;
-}
-
-/// A reference curve is dashed.
-std::string style(const PlotCurve& curve) {
-    return curve.reference ? " dt 2" : "";
 }
 
 /// `stem`_`kind`_`k`.dat: the data file of curve k of a panel.
@@ -172,6 +241,7 @@ void write_pz_plot(std::ostringstream& gp, const fs::path& plots, const PlotPane
     gp << "set output '" << panel.stem << "_pz.svg'\nset title " << quoted("P(Z): " + panel.what)
        << "\nset xlabel 'Z (contacts)'\nset ylabel 'P(Z) (fraction of particles)'\nplot ";
     bool first = true;
+    const auto styles = panel_styles(panel);
     for (const std::size_t t : plotted) {
         for (std::size_t k = 0; k < panel.curves.size(); ++k) {
             const auto& curve = panel.curves[k];
@@ -179,7 +249,10 @@ void write_pz_plot(std::ostringstream& gp, const fs::path& plots, const PlotPane
                 panel.stem + "_pz_" + std::to_string(k) + "_" + names[t] + ".dat";
             write_text_file(plots / file,
                             columns(integers(curve.curves->p_z[t].size()), curve.curves->p_z[t]));
-            gp << (first ? "" : ", ") << "'" << file << "' with linespoints lw 2" << style(curve)
+            // The second tolerance's curves dashed, when both are shown.
+            const std::string line =
+                t == plotted.front() ? styles[k].line : dashed(styles[k].line, " dt 4");
+            gp << (first ? "" : ", ") << "'" << file << "' with linespoints lw 2" << line
                << " title " << quoted(curve.label + ", gap <= " + names[t] + " d");
             first = false;
         }
@@ -190,6 +263,7 @@ void write_pz_plot(std::ostringstream& gp, const fs::path& plots, const PlotPane
 /// Mean Z against the gap tolerance δ > 0, on a log axis.
 void write_zdelta_plot(std::ostringstream& gp, const fs::path& plots, const PlotPanel& panel) {
     const auto& tolerances = coordination_tolerances();
+    const auto styles = panel_styles(panel);
     gp << "set output '" << panel.stem << "_zdelta.svg'\nset title "
        << quoted("Z(delta), gap <= delta d: " + panel.what) << "\nset logscale x\nset xtics ("
        << kPowerTicks
@@ -206,13 +280,14 @@ void write_zdelta_plot(std::ostringstream& gp, const fs::path& plots, const Plot
         }
         write_text_file(plots / data_file(panel, "zd", k), columns(deltas, z));
         gp << (k == 0 ? "" : ", ") << "'" << data_file(panel, "zd", k) << "' with linespoints lw 2"
-           << style(curve) << " title " << quoted(curve.label);
+           << styles[k].line << " title " << quoted(curve.label);
     }
     gp << "\nunset logscale\nset xtics autofreq\n";
 }
 
 /// φ(y): height on the vertical axis.
 void write_phiy_plot(std::ostringstream& gp, const fs::path& plots, const PlotPanel& panel) {
+    const auto styles = panel_styles(panel);
     gp << "set output '" << panel.stem << "_phiy.svg'\nset title "
        << quoted("phi(y): " + panel.what)
        << "\nset xlabel 'φ (ratio)'\nset ylabel 'y (length units)'\nplot ";
@@ -221,7 +296,8 @@ void write_phiy_plot(std::ostringstream& gp, const fs::path& plots, const PlotPa
         write_text_file(plots / data_file(panel, "phiy", k),
                         columns(curve.curves->phi_y_mid, curve.curves->phi_y));
         gp << (k == 0 ? "" : ", ") << "'" << data_file(panel, "phiy", k)
-           << "' using 2:1 with lines lw 2" << style(curve) << " title " << quoted(curve.label);
+           << "' using 2:1 with lines lw 2" << line_only(styles[k].line) << " title "
+           << quoted(curve.label);
     }
     gp << "\n";
 }
@@ -330,11 +406,13 @@ std::vector<PlotPanel> panels_per_comparison(const Report& report) {
     std::vector<PlotPanel> panels;
     for (std::size_t i = 0; i < report.comparisons.size(); ++i) {
         const Comparison& c = report.comparisons[i];
-        panels.push_back(PlotPanel{
-            "c" + std::to_string(i) + "_N" + std::to_string(c.count),
-            c.candidate + " vs " + c.reference + ", N = " + std::to_string(c.count),
-            {PlotCurve{mean_label(c.candidate, c.candidate_packs), &c.candidate_curves, false},
-             PlotCurve{mean_label(c.reference, c.reference_packs), &c.reference_curves, true}}});
+        panels.push_back(
+            PlotPanel{"c" + std::to_string(i) + "_N" + std::to_string(c.count),
+                      c.candidate + " vs " + c.reference + ", N = " + std::to_string(c.count),
+                      {PlotCurve{mean_label(c.candidate, c.candidate_packs), &c.candidate_curves,
+                                 false, c.candidate},
+                       PlotCurve{mean_label(c.reference, c.reference_packs), &c.reference_curves,
+                                 true, c.reference}}});
     }
     return panels;
 }
@@ -353,12 +431,12 @@ std::vector<PlotPanel> panels_per_count(const Report& report) {
             drawn.emplace_back();
         }
         if (drawn[k].insert(c.candidate).second) {
-            panels[k].curves.push_back(
-                PlotCurve{mean_label(c.candidate, c.candidate_packs), &c.candidate_curves, false});
+            panels[k].curves.push_back(PlotCurve{mean_label(c.candidate, c.candidate_packs),
+                                                 &c.candidate_curves, false, c.candidate});
         }
         if (drawn[k].insert(c.reference).second) {
-            panels[k].curves.push_back(
-                PlotCurve{mean_label(c.reference, c.reference_packs), &c.reference_curves, true});
+            panels[k].curves.push_back(PlotCurve{mean_label(c.reference, c.reference_packs),
+                                                 &c.reference_curves, true, c.reference});
         }
     }
     return panels;

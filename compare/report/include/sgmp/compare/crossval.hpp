@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "sgmp/compare/agreement.hpp"
+#include "sgmp/compare/hard_sphere_limit.hpp"
 #include "sgmp/compare/manifest.hpp"
 #include "sgmp/compare/thesis_table.hpp"
 
@@ -97,9 +98,6 @@ struct GroupPlan {
     std::vector<std::pair<std::size_t, std::size_t>> stiff;  // (reference, its stiff group)
 };
 GroupPlan plan_groups(const std::vector<ManifestEntry>& manifest);
-
-/// How a reference group's hard-sphere limit is labelled: "<reference> hard-sphere limit".
-inline constexpr const char* kHardSphereLimitSuffix = "hard-sphere limit";
 
 /// Appends to `groups` (the measured groups of `plan`, in its order) the hard-sphere limit
 /// of every reference with a stiff group (hard_sphere_limit.hpp), and plans it as a

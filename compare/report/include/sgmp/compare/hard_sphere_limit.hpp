@@ -21,6 +21,9 @@
 
 namespace sgmp::compare {
 
+/// How a reference group's hard-sphere limit is labelled: "<reference> hard-sphere limit".
+inline constexpr const char* kHardSphereLimitSuffix = "hard-sphere limit";
+
 /// The provenance key holding a DEM pour's Young's modulus in Pa.
 inline constexpr const char* kYoungsModulusKey = "youngs_modulus_pa";
 

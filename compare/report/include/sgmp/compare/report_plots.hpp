@@ -28,6 +28,7 @@ struct PlotCurve {
     std::string label;
     const GroupCurves* curves = nullptr;
     bool reference = false;
+    std::string group;  // the group's label, which picks its colour
 };
 
 /// One set of four plots (g(r), P(Z), Z(δ), φ(y)) sharing a title and file stem.

@@ -93,6 +93,12 @@ BOOST_AUTO_TEST_CASE(metrics_linear_in_the_inverse_cube_root_of_e_extrapolate_ex
                       std::invalid_argument);
 }
 
+BOOST_AUTO_TEST_CASE(a_limit_is_labelled_after_its_class) {
+    BOOST_TEST(hard_sphere_limit_label("DEM mu=0") == "DEM mu=0 hard-sphere limit");
+    BOOST_TEST(*class_of_hard_sphere_limit("DEM mu=0 hard-sphere limit") == "DEM mu=0");
+    BOOST_TEST(!class_of_hard_sphere_limit("DEM mu=0").has_value());
+}
+
 BOOST_AUTO_TEST_CASE(pours_pair_by_count_and_seed) {
     const Group soft{"DEM mu=0",
                      {pour_at(1e9, 3000, 1, 6.0, 0.3), pour_at(1e9, 3000, 2, 6.1, 0.3),

@@ -207,7 +207,7 @@ std::vector<std::string> add_hard_sphere_limits(std::vector<Group>& groups, Grou
     std::vector<std::string> notes;
     std::vector<std::size_t> limits;
     for (const auto& [r, s] : plan.stiff) {
-        const std::string label = groups.at(r).label + " " + std::string(kHardSphereLimitSuffix);
+        const std::string label = hard_sphere_limit_label(groups.at(r).label);
         Group limit = hard_sphere_limit(groups.at(r), groups.at(s), label, notes);
         if (limit.packs.empty()) {
             continue;

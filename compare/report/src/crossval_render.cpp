@@ -65,10 +65,11 @@ void stand_in_markdown(std::ostringstream& md, const CrossValidation& cv) {
     md << "A mode stands in for a class when no judged metric differs at any count "
           "(verdicts counted over every count and judged metric; speed: the DEM pour's mean "
           "wall time over the mode's at the largest count).";
-    if (std::any_of(cv.references.begin(), cv.references.end(),
-                    [](const std::string& r) { return r.ends_with(kHardSphereLimitSuffix); })) {
+    if (std::any_of(cv.references.begin(), cv.references.end(), [](const std::string& r) {
+            return class_of_hard_sphere_limit(r).has_value();
+        })) {
         md << " A class's *hard-sphere limit* is its pours extrapolated to infinitely stiff "
-              "contacts from the same pours settled again at 16× the stiffness (rules at the "
+              "contacts from the same pours settled again at stiffer contacts (rules at the "
               "end of the page): SGMP packs are hard spheres, while a pour's compressed Hertz "
               "contacts count as contacts.";
     }

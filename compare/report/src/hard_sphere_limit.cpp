@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 #include <stdexcept>
+#include <string_view>
 #include <utility>
 
 namespace sgmp::compare {
@@ -51,7 +52,20 @@ std::string seed_of(const PackSummary& pack) {
     return provenance_value(pack, "seed").value_or("");
 }
 
+constexpr std::string_view kLimitSuffix = " hard-sphere limit";
+
 }  // namespace
+
+std::string hard_sphere_limit_label(const std::string& class_label) {
+    return class_label + std::string(kLimitSuffix);
+}
+
+std::optional<std::string> class_of_hard_sphere_limit(const std::string& label) {
+    if (!label.ends_with(kLimitSuffix)) {
+        return std::nullopt;
+    }
+    return label.substr(0, label.size() - kLimitSuffix.size());
+}
 
 double hard_sphere_coefficient(double youngs_soft, double youngs_stiff) {
     if (!(youngs_soft > 0.0) || !(youngs_stiff > youngs_soft)) {

@@ -73,7 +73,6 @@ struct SeriesStyle {
 /// Styles of the series of one plot, in order; `labels` with `reference` flags.
 std::vector<SeriesStyle> series_styles(const std::vector<std::pair<std::string, bool>>& series) {
     static const int kPoints[] = {7, 5, 9, 11, 13, 15, 4, 6};
-    const std::string suffix = std::string(" ") + kHardSphereLimitSuffix;
     std::vector<std::string> classes;
     std::vector<SeriesStyle> styles;
     int candidates = 0;
@@ -84,8 +83,9 @@ std::vector<SeriesStyle> series_styles(const std::vector<std::pair<std::string, 
                               " fs transparent solid 0.3"});
             continue;
         }
-        const bool limit = label.ends_with(suffix);
-        const std::string base = limit ? label.substr(0, label.size() - suffix.size()) : label;
+        const auto limit_of = class_of_hard_sphere_limit(label);
+        const bool limit = limit_of.has_value();
+        const std::string base = limit_of.value_or(label);
         auto it = std::find(classes.begin(), classes.end(), base);
         if (it == classes.end()) {
             classes.push_back(base);

@@ -14,6 +14,7 @@
 /// to Z(δ) and to P(Z) value by value. Overlaps, shown for information only, are 0: hard
 /// spheres do not overlap. φ(y), which is not judged, is the stiff pour's.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,8 +22,10 @@
 
 namespace sgmp::compare {
 
-/// How a reference group's hard-sphere limit is labelled: "<reference> hard-sphere limit".
-inline constexpr const char* kHardSphereLimitSuffix = "hard-sphere limit";
+/// The label of a class's hard-sphere limit: "<class> hard-sphere limit".
+std::string hard_sphere_limit_label(const std::string& class_label);
+/// The class whose limit `label` names, or nothing when it names no limit.
+std::optional<std::string> class_of_hard_sphere_limit(const std::string& label);
 
 /// The provenance key holding a DEM pour's Young's modulus in Pa.
 inline constexpr const char* kYoungsModulusKey = "youngs_modulus_pa";

@@ -1,5 +1,6 @@
 #include "sgmp/compare/hard_sphere_limit.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <map>
@@ -26,12 +27,19 @@ double youngs_modulus(const PackSummary& pack) {
         throw std::invalid_argument(pack.source + ": no " + std::string(kYoungsModulusKey) +
                                     " key, so its hard-sphere limit is undefined");
     }
-    try {
-        return std::stod(*text);
-    } catch (const std::exception&) {
+    double value = 0.0;
+    const char* end = text->data() + text->size();
+    const auto [at, error] = std::from_chars(text->data(), end, value);
+    if (error != std::errc() || at != end) {
         throw std::invalid_argument(pack.source + ": " + std::string(kYoungsModulusKey) + " '" +
                                     *text + "' is not a number");
     }
+    return value;
+}
+
+/// The overlap metrics: zero between hard spheres, whatever the pours' overlaps.
+bool is_overlap_metric(const std::string& name) {
+    return name.find("overlap") != std::string::npos;
 }
 
 /// stiff + a·(stiff − soft), value by value; a value one side lacks counts as 0 (a P(Z) bin
@@ -99,8 +107,9 @@ PackSummary hard_sphere_limit(const PackSummary& soft, const PackSummary& stiff)
         if (rule.kind != MetricKind::Scalar) {
             continue;
         }
-        h.scalars[k] = rule.judged ? stiff.scalars[k] + a * (stiff.scalars[k] - soft.scalars[k])
-                                   : 0.0;  // the overlaps: none between hard spheres
+        h.scalars[k] = is_overlap_metric(rule.name)
+                           ? 0.0
+                           : stiff.scalars[k] + a * (stiff.scalars[k] - soft.scalars[k]);
         ++k;
     }
     h.gr = extrapolate(soft.gr, stiff.gr, a);

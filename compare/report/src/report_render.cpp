@@ -143,11 +143,12 @@ std::vector<std::string> rule_statements() {
         "Power: a verdict against one reference class is inconclusive where another class "
         "of its kind agrees with it by the same rule: the metric cannot tell the classes apart "
         "there. The classes as poured are one kind, their hard-sphere limits another.",
-        "Hard-sphere limit of a DEM class (where its pours were settled again at stiffer "
-        "contacts, E_stiff = 16 E): per seed, X = X_stiff + a (X_stiff - X_pour), a = 1 / "
-        "((E_stiff / E)^(1/3) - 1) = 0.658, for every judged scalar, g(r) bin and P(Z) value "
-        "(metrics move linearly in E^(-1/3); overlaps are 0). Its model spread is its distance "
-        "from the stiff pours; the DEM runtime beside it is the pours'.",
+        "Hard-sphere limit of a DEM class (where its pours were settled again at a stiffer "
+        "Young's modulus E_stiff): per seed, X = X_stiff + a (X_stiff - X_pour), a = 1 / "
+        "((E_stiff / E)^(1/3) - 1) (0.658 for E_stiff = 16 E), for every scalar, g(r) bin, "
+        "Z(delta) and P(Z) value (metrics move linearly in E^(-1/3)); the overlaps are 0. Its "
+        "model spread is its distance from the stiff pours; the DEM runtime beside it is the "
+        "pours'.",
         "Lengths are in units of the mean diameter d. Z at tolerance X counts neighbours with "
         "gap |ci - cj| - ri - rj <= X d, over centres in the region; g(r) bins are centred on "
         "multiples of the bin width (contact at d is a bin centre) and its density is the one "

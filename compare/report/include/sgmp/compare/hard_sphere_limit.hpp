@@ -10,9 +10,10 @@
 /// (data/reference/README.md, "The stiff set"), so a pour at E_soft and the same pour settled
 /// again at E_stiff give
 ///     X_hard = X_stiff + a·(X_stiff − X_soft),   a = 1 / ((E_stiff / E_soft)^(1/3) − 1)
-/// (a = 0.658 for E_stiff / E_soft = 16), applied to every judged scalar, to g(r) bin by bin,
-/// to Z(δ) and to P(Z) value by value. Overlaps, shown for information only, are 0: hard
-/// spheres do not overlap. φ(y), which is not judged, is the stiff pour's.
+/// (a = 0.658 for E_stiff / E_soft = 16), applied to every scalar (Z(δ = 0) included: the
+/// touching contacts' limit), to g(r) bin by bin, to Z(δ) and to P(Z) value by value. The
+/// overlap metrics, shown for information only, are 0: hard spheres do not overlap. φ(y),
+/// which is not judged, is the stiff pour's.
 
 #include <optional>
 #include <string>

@@ -20,11 +20,11 @@
 #include "sgmp/cli/progress_line.hpp"
 #include "sgmp/cli/run_main.hpp"
 #include "sgmp/engine/make_pack.hpp"
-#include "sgmp/engine/pack_checks.hpp"
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/interrupt.hpp"
 #include "sgmp/pack/option_rules.hpp"
+#include "sgmp/pack/pack_overlaps.hpp"
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/pack/parameter_error.hpp"
 #include "sgmp/pack/sphere_box_volume.hpp"
@@ -266,12 +266,12 @@ int run_pack(const Options& o) {
     progress.finish();
     write_pack_file(o.out, pack, o.force);
     const double d = *pack.metadata.get_number("diameter");
-    const PackCheck check = check_pack(pack.particles, Container{}, 1e-9 * d, 0.0);
+    const OverlapCount overlaps = count_overlaps(pack.particles, Container{}, 1e-9 * d);
     std::printf(
         "sgmp: packed %zu particles, %s, d=%.6g, %.3f s, phi(control volume)=%.4f, "
         "overlaps=%zu -> %s\n",
         pack.particles.size(), std::string(to_string(request.arrangement)).c_str(), d, seconds,
-        packing_fraction(pack, control_volume()), check.overlaps, o.out.c_str());
+        packing_fraction(pack, control_volume()), overlaps.pairs, o.out.c_str());
     return 0;
 }
 

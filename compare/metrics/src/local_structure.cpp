@@ -6,7 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "sgmp/compare/ball_cut.hpp"
+#include "sgmp/compare/ball_box_volume.hpp"
 #include "sgmp/compare/column_grid.hpp"
 #include "sgmp/compare/pair_kernels.hpp"
 #include "sgmp/compare/parallel.hpp"

@@ -5,7 +5,8 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "sgmp/compare/ball_cut.hpp"
+#include "sgmp/compare/ball_box_volume.hpp"
+#include "sgmp/pack/ball_cut.hpp"
 #include "sgmp/compare/parallel.hpp"
 #include "sgmp/pack/sphere_box_volume.hpp"
 

@@ -1,5 +1,7 @@
 #include "sgmp/pack/sphere_box_volume.hpp"
 
+#include "sgmp/pack/ball_cut.hpp"
+
 #include <algorithm>
 #include <array>
 #include <boost/math/quadrature/tanh_sinh.hpp>
@@ -171,7 +173,18 @@ double sphere_box_volume(const Vec3& center, double radius, const Box& box) {
             }
         }
     }
-    // Integrate along an axis the box does not clip when there is one: fewer break points.
+    if (clipped_axes == 2) {
+        // Closed form (ball_cut.hpp): the two clipped axes bound the ball, the third does not.
+        const AxisCut* first = nullptr;
+        const AxisCut* second = nullptr;
+        for (const auto& cut : cuts) {
+            if (cut.clips) {
+                (first == nullptr ? first : second) = &cut;
+            }
+        }
+        return ball_cut_volume(radius, first->lo, first->hi, second->lo, second->hi);
+    }
+    // All three axes clip: integrate the slices along one of them.
     int along = 0;
     for (int axis = 0; axis < 3; ++axis) {
         if (!cuts[axis].clips) {

@@ -8,7 +8,9 @@
 /// inclusion–exclusion over the rectangle's corners). Between the break points where the
 /// disk meets an edge line or a corner of the rectangle, A(x) is smooth, with square-root
 /// behaviour at the ends; each piece is integrated by tanh–sinh quadrature, which handles
-/// such end points to ~1e-15 relative. Spheres wholly inside or outside take no quadrature.
+/// such end points to ~1e-15 relative. Only spheres that all three axes of the box clip
+/// take quadrature: no clip is the ball, one a slab ∫ π(r² − u²) du, two the closed form of
+/// ball_cut.hpp.
 
 #include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/pack.hpp"

@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include "sgmp/compare/ball_box_volume.hpp"
-#include "sgmp/pack/ball_cut.hpp"
 #include "sgmp/compare/parallel.hpp"
+#include "sgmp/pack/ball_cut.hpp"
 #include "sgmp/pack/sphere_box_volume.hpp"
 
 namespace sgmp::compare {

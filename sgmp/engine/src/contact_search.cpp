@@ -6,21 +6,6 @@
 
 namespace sgmp::engine {
 
-double contact_height(const Vec3& c, double r, const Sphere& s, double level_margin) {
-    const double contact = r + s.r;
-    if (s.y > c.y() - level_margin * contact) {
-        return -std::numeric_limits<double>::infinity();
-    }
-    const double dx = c.x() - s.x;
-    const double dz = c.z() - s.z;
-    const double h2 = dx * dx + dz * dz;
-    const double contact2 = contact * contact;
-    if (h2 >= contact2) {
-        return -std::numeric_limits<double>::infinity();
-    }
-    return std::min(s.y + std::sqrt(contact2 - h2), c.y());
-}
-
 FirstContact first_contact_below(const SettledGrid& grid, const Container& container, double r_max,
                                  const Vec3& c, double r, double level_margin) {
     FirstContact result{container.floor + r, true, Sphere{}};

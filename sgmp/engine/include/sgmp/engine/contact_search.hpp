@@ -9,6 +9,10 @@
 /// and the floor at floor + r; the first contact below is the highest of these. A height
 /// above c.y (a rounding-level overlap) counts as touching now: the contact height is
 /// capped at c.y.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include "sgmp/engine/settled_grid.hpp"
 #include "sgmp/pack/geometry.hpp"
 
@@ -26,7 +30,21 @@ struct FirstContact {
 /// with its centre above c.y − level_margin·(r + r_s). The protocol counts every sphere
 /// not above the faller (margin 0); a roll leaving a support at its equator passes the
 /// spheres it touches there (margin 10⁻⁹), which would otherwise stop the fall at once.
-double contact_height(const Vec3& c, double r, const Sphere& s, double level_margin = 0.0);
+/// (Inline: the fall evaluates it for every sphere of the local list at every move.)
+inline double contact_height(const Vec3& c, double r, const Sphere& s, double level_margin = 0.0) {
+    const double contact = r + s.r;
+    if (s.y > c.y() - level_margin * contact) {
+        return -std::numeric_limits<double>::infinity();
+    }
+    const double dx = c.x() - s.x;
+    const double dz = c.z() - s.z;
+    const double h2 = dx * dx + dz * dz;
+    const double contact2 = contact * contact;
+    if (h2 >= contact2) {
+        return -std::numeric_limits<double>::infinity();
+    }
+    return std::min(s.y + std::sqrt(contact2 - h2), c.y());
+}
 
 /// The first contact below c of a sphere of radius r falling straight down among the
 /// spheres of `grid` (radii ≤ r_max) onto `container`'s floor: the highest contact

@@ -102,9 +102,13 @@ struct SampleTest {
 
 /// True when the constraint is too close to tangency (or constant) for its blocked samples to
 /// be trusted as one run: every sample is then tested (`free_runs_by_samples`).
+/// Decided on squares, |q| ≥ (1 − 10⁻⁶)·R ⟺ q² ≥ (1 − 10⁻⁶)²·R², without a square root; the
+/// margin only has to keep rounding away from the run ends, so where rounding puts the
+/// boundary does not matter: both routes give the same runs.
 bool near_tangency(const Blocker& c) {
-    const double radius = std::sqrt(c.a * c.a + c.b * c.b);
-    return radius == 0.0 || std::abs(c.q) >= (1.0 - 1e-6) * radius;
+    constexpr double kMargin = (1.0 - 1e-6) * (1.0 - 1e-6);
+    const double radius2 = c.a * c.a + c.b * c.b;
+    return radius2 == 0.0 || c.q * c.q >= kMargin * radius2;
 }
 
 /// The run of samples one constraint blocks, as unwrapped indices [lo, hi].
@@ -112,10 +116,10 @@ Run blocked_run(const SweepTable& table, const Blocker& c, long& lo, long& hi) {
     const int n = table.positions();
     const SampleTest test{table.sample_x(), table.sample_z(), n, c.a, c.b, c.q};
     const auto blocked = [&](long k) { return test.blocked(k); };
-    const double radius = std::sqrt(c.a * c.a + c.b * c.b);
-    if (radius == 0.0 || std::abs(c.q) >= (1.0 - 1e-6) * radius) {
+    if (near_tangency(c)) {
         return Run::Undecided;  // constant or near tangency: test every sample
     }
+    const double radius = std::sqrt(c.a * c.a + c.b * c.b);
     const double psi = rough_atan2(c.a, c.b);
     const double beta = rough_acos(c.q / radius);
     const double per_radian = n / (2.0 * kPi);

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# The output format of `scripts/bench-engine --quick`: a header, a rule, nine time rows
+# "label | N | seconds | B/particle | target | PASS|FAIL|-" (three arrangements at 10^3 and
+# 10^4, the single column at 10^3 and 10^4, the step fall at 9000) and four scaling rows
+# "scaling ARRANGEMENT 1000->10000 | - | ratio | - | target | PASS|FAIL (N^x)"; exit status 0
+# (every target met) or 3 (a target missed); it must finish in a minute.
+#   tests/engine/scripts/bench_engine_format.sh SGMP_EXECUTABLE SOURCE_DIR
+set -euo pipefail
+binary="$(realpath "$1")"
+cd "$2"
+fail() { echo "bench_engine_format: $*" >&2; exit 1; }
+start=$SECONDS
+status=0
+output="$(SGMP_BENCH_BINARY="$binary" timeout 60 scripts/bench-engine --quick)" || status=$?
+echo "$output"
+[ "$status" -eq 0 ] || [ "$status" -eq 3 ] || fail "exit status $status (expected 0 or 3)"
+[ $((SECONDS - start)) -le 60 ] || fail "--quick took $((SECONDS - start)) s (more than 60)"
+head -1 <<<"$output" | grep -q -E '^row +\| +N \| +seconds \| B/particle \| target +\| verdict$' ||
+    fail "no header line"
+time_row='^[a-z][a-z ,-]+ \| +[0-9]+ \| +[0-9]+\.[0-9]{4} \| +[0-9]+ \| [^|]+ \| (PASS|FAIL|-)$'
+scaling_row='^scaling [a-z-]+ 1000->10000 +\| +- \| +[0-9]+\.[0-9]{2} \| +- \| [^|]+ \| (PASS|FAIL) \(N\^[0-9.]+\)$'
+rows=$(grep -c -E "$time_row" <<<"$output" || true)
+[ "$rows" -eq 9 ] || fail "$rows time rows, expected 9"
+rows=$(grep -c -E "$scaling_row" <<<"$output" || true)
+[ "$rows" -eq 4 ] || fail "$rows scaling rows, expected 4"
+grep -q -E '^loose-random, --fall step +\| +9000 \| .*\| <= 0\.05 s +\| (PASS|FAIL)$' <<<"$output" ||
+    fail "no step-fall row with its target"
+[ "$(wc -l <<<"$output")" -eq 15 ] || fail "expected 15 lines"
+# A missed target is reported as status 3, never hidden.
+if grep -q -E '\| FAIL' <<<"$output"; then
+    [ "$status" -eq 3 ] || fail "a FAIL row with exit status $status"
+fi
+echo "bench_engine_format: ok"

@@ -47,11 +47,16 @@ struct Slots {
     std::size_t n = 0;
     std::size_t splits = 0;
 
-    void flush(std::int64_t* lanes, std::int64_t weight, const BinSetup& s,
-               std::int64_t (&split)[2]) {
+    void flush_bins(std::int64_t* lanes, std::int64_t weight) {
         for (std::size_t i = 0; i < n; ++i) {
             lanes[at[i]] += weight;
         }
+        n = 0;
+    }
+
+    void flush(std::int64_t* lanes, std::int64_t weight, const BinSetup& s,
+               std::int64_t (&split)[2]) {
+        flush_bins(lanes, weight);
         for (std::size_t i = 0; i < splits; ++i) {
             count_split(near_split[i], weight, s, split);
         }
@@ -160,14 +165,39 @@ struct SplitLanes {
     __m256i counts[2];
 };
 
+/// Byte shuffles that pack the 32-bit lanes of a group of four whose bit is set in the
+/// index to the front, in lane order (the AVX2 stand-in for vpcompressd).
+struct PackTable {
+    alignas(16) std::int8_t control[16][16];
+
+    constexpr PackTable() : control{} {
+        for (int mask = 0; mask < 16; ++mask) {
+            int to = 0;
+            for (int lane = 0; lane < 4; ++lane) {
+                if ((mask >> lane) & 1) {
+                    for (int b = 0; b < 4; ++b) {
+                        control[mask][4 * to + b] = static_cast<std::int8_t>(4 * lane + b);
+                    }
+                    ++to;
+                }
+            }
+            for (int b = 4 * to; b < 16; ++b) {
+                control[mask][b] = -1;
+            }
+        }
+    }
+};
+constexpr PackTable kPackTable;
+
 /// count_bins four candidates at a time (AVX2). A candidate not within reach (or past the
 /// window's end) has its bin argument replaced by a NaN, which converts to 0x80000000 as
-/// the scalar conversion does out of range: min(b, bins) is then the scalar loop's slot.
-/// Every candidate's slot is incremented (the dump bin too), lanes alternating between the
-/// histogram's lanes 0–3 and 4–7; split candidates are counted in vector lanes.
+/// the scalar conversion does out of range, and so is not counted (b ≥ bins, unsigned).
+/// The counted candidates' slots are packed into `slots` (lanes alternating between the
+/// histogram's lanes 0–3 and 4–7), added in bulk by Slots::flush; split candidates are
+/// counted in vector lanes.
 SGMP_AVX2 inline __attribute__((always_inline)) void count_bins_avx2(
     const double* xs, const double* ys, const double* zs, const double (&a)[3], std::size_t from,
-    std::size_t to, std::int64_t weight, const BinSetup& s, std::int64_t* lanes,
+    std::size_t to, std::int64_t weight, const BinSetup& s, std::int64_t* lanes, Slots& slots,
     SplitLanes& in_split) {
     const __m256d ax = _mm256_set1_pd(a[0]);
     const __m256d ay = _mm256_set1_pd(a[1]);
@@ -176,7 +206,6 @@ SGMP_AVX2 inline __attribute__((always_inline)) void count_bins_avx2(
     const __m256d per_width = _mm256_set1_pd(s.per_width);
     const __m256d half = _mm256_set1_pd(0.5);
     const __m256d nan = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
-    const __m128i bins = _mm_set1_epi32(static_cast<int>(s.bins));
     const __m128i last_bin = _mm_set1_epi32(static_cast<int>(s.bins - 1));
     const __m128i split_first = _mm_set1_epi32(static_cast<int>(s.split_first));
     const __m128i split_bins = _mm_set1_epi32(static_cast<int>(s.split_bins));
@@ -184,8 +213,11 @@ SGMP_AVX2 inline __attribute__((always_inline)) void count_bins_avx2(
     const __m256d split_hi[2] = {_mm256_set1_pd(s.split_hi[0]), _mm256_set1_pd(s.split_hi[1])};
     const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
     const auto stride = static_cast<int>(s.bins + 1);
-    const __m128i lane_start = _mm_mullo_epi32(_mm_setr_epi32(0, 1, 2, 3), _mm_set1_epi32(stride));
-    std::int64_t* const halves[2] = {lanes, lanes + 4 * static_cast<std::size_t>(stride)};
+    const __m128i lane_start[2] = {
+        _mm_mullo_epi32(_mm_setr_epi32(0, 1, 2, 3), _mm_set1_epi32(stride)),
+        _mm_mullo_epi32(_mm_setr_epi32(4, 5, 6, 7), _mm_set1_epi32(stride))};
+    std::size_t n = slots.n;  // in a register: the buffer's stores may alias any memory
+    std::int32_t* const at = slots.at;
     unsigned group = 0;
     for (std::size_t k = from; k < to; k += 4, group ^= 1u) {
         const std::size_t left = to - k;
@@ -213,15 +245,19 @@ SGMP_AVX2 inline __attribute__((always_inline)) void count_bins_avx2(
         const __m256d scaled = _mm256_or_pd(_mm256_add_pd(_mm256_mul_pd(distance, per_width), half),
                                             _mm256_andnot_pd(near, nan));
         const __m128i bin = _mm256_cvttpd_epi32(scaled);
-        const __m128i slot = _mm_add_epi32(lane_start, _mm_min_epu32(bin, bins));
-        std::int64_t* const h = halves[group];
-        const auto low = static_cast<std::uint64_t>(_mm_cvtsi128_si64(slot));
-        const auto high = static_cast<std::uint64_t>(_mm_extract_epi64(slot, 1));
-        h[low & 0xffffffffu] += weight;
-        h[low >> 32] += weight;
-        h[high & 0xffffffffu] += weight;
-        h[high >> 32] += weight;
         const __m128i counted = _mm_cmpeq_epi32(_mm_min_epu32(bin, last_bin), bin);
+        const auto mask = static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(counted)));
+        if (n > Slots::kCapacity) {
+            slots.n = n;
+            slots.flush_bins(lanes, weight);
+            n = 0;
+        }
+        _mm_storeu_si128(
+            reinterpret_cast<__m128i*>(at + n),
+            _mm_shuffle_epi8(
+                _mm_add_epi32(lane_start[group], bin),
+                _mm_load_si128(reinterpret_cast<const __m128i*>(kPackTable.control[mask]))));
+        n += static_cast<unsigned>(__builtin_popcount(mask));
         const __m128i offset = _mm_sub_epi32(bin, split_first);
         const __m128i near_split =
             _mm_and_si128(counted, _mm_cmpeq_epi32(_mm_min_epu32(offset, split_bins), offset));
@@ -233,6 +269,7 @@ SGMP_AVX2 inline __attribute__((always_inline)) void count_bins_avx2(
                 in_split.counts[w], _mm256_castpd_si256(_mm256_and_pd(candidate, inside)));
         }
     }
+    slots.n = n;
 }
 
 /// Adds the split lanes' counts, times weight, to split.
@@ -249,8 +286,10 @@ SGMP_AVX2 void count_window_avx2(const double* xs, const double* ys, const doubl
                                  const double (&a)[3], std::size_t from, std::size_t to,
                                  std::int64_t weight, const BinSetup& s, std::int64_t* lanes,
                                  std::int64_t (&split)[2]) {
+    Slots slots;
     SplitLanes in_split{{_mm256_setzero_si256(), _mm256_setzero_si256()}};
-    count_bins_avx2(xs, ys, zs, a, from, to, weight, s, lanes, in_split);
+    count_bins_avx2(xs, ys, zs, a, from, to, weight, s, lanes, slots, in_split);
+    slots.flush_bins(lanes, weight);
     add_split_lanes(in_split, weight, split);
 }
 
@@ -262,6 +301,7 @@ SGMP_AVX2 void count_column_bins_avx2(const double* ox, const double* oy, const 
                                       std::size_t last, double half, bool own, std::int64_t weight,
                                       const BinSetup& s, std::int64_t* lanes,
                                       std::int64_t (&split)[2]) {
+    Slots slots;
     SplitLanes in_split{{_mm256_setzero_si256(), _mm256_setzero_si256()}};
     std::size_t lo = first;
     std::size_t hi = first;
@@ -286,10 +326,11 @@ SGMP_AVX2 void count_column_bins_avx2(const double* ox, const double* oy, const 
             continue;
         }
         const double a[3] = {ox[p], oy[p], zp};
-        count_bins_avx2(xs, ys, zs, a, own ? std::max(lo, p + 1) : lo, hi, weight, s, lanes,
+        count_bins_avx2(xs, ys, zs, a, own ? std::max(lo, p + 1) : lo, hi, weight, s, lanes, slots,
                         in_split);
         ++p;
     }
+    slots.flush_bins(lanes, weight);
     add_split_lanes(in_split, weight, split);
 }
 #endif

@@ -1,10 +1,10 @@
-// The vector kernels of the pair passes (pair_kernels.hpp: AVX-512 where the CPU has it)
-// against their scalar loops, which they must match exactly: the same g(r) bins and split
-// counts, the same pairs within a limit in the same order, and the same results of the
-// whole passes (measure_local_structure, measure_overlaps) bit for bit. Candidates are
-// put on the edges where rounding decides: distances at bin edges (k ± ½)·ΔR, at the reach
-// and at the split windows' ends, coincident centres, and windows of every length 0–19 (the
-// vector groups' tails). On a CPU without AVX-512 both sides run the scalar loops.
+// The vector kernels of the pair passes (pair_kernels.hpp: AVX-512 where the CPU has it,
+// else AVX2) against their scalar loops, which they must match exactly: the same g(r) bins
+// and split counts, the same pairs within a limit in the same order, and the same results
+// of the whole passes (measure_local_structure, measure_overlaps) bit for bit. Candidates
+// are put on the edges where rounding decides: distances at bin edges (k ± ½)·ΔR, at the
+// reach and at the split windows' ends, coincident centres, and windows of every length
+// 0–19 (the vector groups' tails). On a CPU with neither, both sides run the scalar loops.
 #include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <cmath>

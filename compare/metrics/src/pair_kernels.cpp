@@ -15,7 +15,17 @@ bool cpu_has_avx512() {
 #endif
 }
 
+bool cpu_has_avx2() {
+#if defined(SGMP_PAIR_KERNELS_AVX512)
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2");
+#else
+    return false;
+#endif
+}
+
 const bool cpu_avx512 = cpu_has_avx512();
+const bool cpu_avx2 = !cpu_avx512 && cpu_has_avx2();
 
 /// Adds weight to split[w] when the distance lies in window w.
 inline void count_split(double distance, std::int64_t weight, const BinSetup& s,
@@ -37,11 +47,16 @@ struct Slots {
     std::size_t n = 0;
     std::size_t splits = 0;
 
-    void flush(std::int64_t* lanes, std::int64_t weight, const BinSetup& s,
-               std::int64_t (&split)[2]) {
+    void flush_bins(std::int64_t* lanes, std::int64_t weight) {
         for (std::size_t i = 0; i < n; ++i) {
             lanes[at[i]] += weight;
         }
+        n = 0;
+    }
+
+    void flush(std::int64_t* lanes, std::int64_t weight, const BinSetup& s,
+               std::int64_t (&split)[2]) {
+        flush_bins(lanes, weight);
         for (std::size_t i = 0; i < splits; ++i) {
             count_split(near_split[i], weight, s, split);
         }
@@ -143,16 +158,193 @@ SGMP_AVX512 void count_column_bins_avx512(const double* ox, const double* oy, co
     }
     slots.flush(lanes, weight, s, split);
 }
+
+/// Pairs in the split windows, four lanes of 64-bit counts (a true comparison is all ones,
+/// −1, subtracted).
+struct SplitLanes {
+    __m256i counts[2];
+};
+
+/// Byte shuffles that pack the 32-bit lanes of a group of four whose bit is set in the
+/// index to the front, in lane order (the AVX2 stand-in for vpcompressd).
+struct PackTable {
+    alignas(16) std::int8_t control[16][16];
+
+    constexpr PackTable() : control{} {
+        for (int mask = 0; mask < 16; ++mask) {
+            int to = 0;
+            for (int lane = 0; lane < 4; ++lane) {
+                if ((mask >> lane) & 1) {
+                    for (int b = 0; b < 4; ++b) {
+                        control[mask][4 * to + b] = static_cast<std::int8_t>(4 * lane + b);
+                    }
+                    ++to;
+                }
+            }
+            for (int b = 4 * to; b < 16; ++b) {
+                control[mask][b] = -1;
+            }
+        }
+    }
+};
+constexpr PackTable kPackTable;
+
+/// count_bins four candidates at a time (AVX2). A candidate not within reach (or past the
+/// window's end) has its bin argument replaced by a NaN, which converts to 0x80000000 as
+/// the scalar conversion does out of range, and so is not counted (b ≥ bins, unsigned).
+/// The counted candidates' slots are packed into `slots` (lanes alternating between the
+/// histogram's lanes 0–3 and 4–7), added in bulk by Slots::flush; split candidates are
+/// counted in vector lanes.
+SGMP_AVX2 inline __attribute__((always_inline)) void count_bins_avx2(
+    const double* xs, const double* ys, const double* zs, const double (&a)[3], std::size_t from,
+    std::size_t to, std::int64_t weight, const BinSetup& s, std::int64_t* lanes, Slots& slots,
+    SplitLanes& in_split) {
+    const __m256d ax = _mm256_set1_pd(a[0]);
+    const __m256d ay = _mm256_set1_pd(a[1]);
+    const __m256d az = _mm256_set1_pd(a[2]);
+    const __m256d reach = _mm256_set1_pd(s.reach_squared);
+    const __m256d per_width = _mm256_set1_pd(s.per_width);
+    const __m256d half = _mm256_set1_pd(0.5);
+    const __m256d nan = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+    const __m128i last_bin = _mm_set1_epi32(static_cast<int>(s.bins - 1));
+    const __m128i split_first = _mm_set1_epi32(static_cast<int>(s.split_first));
+    const __m128i split_bins = _mm_set1_epi32(static_cast<int>(s.split_bins));
+    const __m256d split_lo[2] = {_mm256_set1_pd(s.split_lo[0]), _mm256_set1_pd(s.split_lo[1])};
+    const __m256d split_hi[2] = {_mm256_set1_pd(s.split_hi[0]), _mm256_set1_pd(s.split_hi[1])};
+    const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
+    const auto stride = static_cast<int>(s.bins + 1);
+    const __m128i lane_start[2] = {
+        _mm_mullo_epi32(_mm_setr_epi32(0, 1, 2, 3), _mm_set1_epi32(stride)),
+        _mm_mullo_epi32(_mm_setr_epi32(4, 5, 6, 7), _mm_set1_epi32(stride))};
+    std::size_t n = slots.n;  // in a register: the buffer's stores may alias any memory
+    std::int32_t* const at = slots.at;
+    unsigned group = 0;
+    for (std::size_t k = from; k < to; k += 4, group ^= 1u) {
+        const std::size_t left = to - k;
+        __m256d x, y, z;
+        __m256d live = nan;
+        if (left >= 4) {
+            x = _mm256_loadu_pd(xs + k);
+            y = _mm256_loadu_pd(ys + k);
+            z = _mm256_loadu_pd(zs + k);
+        } else {
+            const __m256i mask =
+                _mm256_cmpgt_epi64(_mm256_set1_epi64x(static_cast<long long>(left)), lane);
+            x = _mm256_maskload_pd(xs + k, mask);
+            y = _mm256_maskload_pd(ys + k, mask);
+            z = _mm256_maskload_pd(zs + k, mask);
+            live = _mm256_castsi256_pd(mask);
+        }
+        const __m256d dx = _mm256_sub_pd(x, ax);
+        const __m256d dy = _mm256_sub_pd(y, ay);
+        const __m256d dz = _mm256_sub_pd(z, az);
+        const __m256d q = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
+                                        _mm256_mul_pd(dz, dz));
+        const __m256d near = _mm256_and_pd(_mm256_cmp_pd(q, reach, _CMP_LE_OQ), live);
+        const __m256d distance = _mm256_sqrt_pd(q);
+        const __m256d scaled = _mm256_or_pd(_mm256_add_pd(_mm256_mul_pd(distance, per_width), half),
+                                            _mm256_andnot_pd(near, nan));
+        const __m128i bin = _mm256_cvttpd_epi32(scaled);
+        const __m128i counted = _mm_cmpeq_epi32(_mm_min_epu32(bin, last_bin), bin);
+        const auto mask = static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(counted)));
+        if (n > Slots::kCapacity) {
+            slots.n = n;
+            slots.flush_bins(lanes, weight);
+            n = 0;
+        }
+        _mm_storeu_si128(
+            reinterpret_cast<__m128i*>(at + n),
+            _mm_shuffle_epi8(
+                _mm_add_epi32(lane_start[group], bin),
+                _mm_load_si128(reinterpret_cast<const __m128i*>(kPackTable.control[mask]))));
+        n += static_cast<unsigned>(__builtin_popcount(mask));
+        const __m128i offset = _mm_sub_epi32(bin, split_first);
+        const __m128i near_split =
+            _mm_and_si128(counted, _mm_cmpeq_epi32(_mm_min_epu32(offset, split_bins), offset));
+        const __m256d candidate = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(near_split));
+        for (int w = 0; w < 2; ++w) {
+            const __m256d inside = _mm256_and_pd(_mm256_cmp_pd(distance, split_lo[w], _CMP_GE_OQ),
+                                                 _mm256_cmp_pd(distance, split_hi[w], _CMP_LE_OQ));
+            in_split.counts[w] = _mm256_sub_epi64(
+                in_split.counts[w], _mm256_castpd_si256(_mm256_and_pd(candidate, inside)));
+        }
+    }
+    slots.n = n;
+}
+
+/// Adds the split lanes' counts, times weight, to split.
+SGMP_AVX2 void add_split_lanes(const SplitLanes& in_split, std::int64_t weight,
+                               std::int64_t (&split)[2]) {
+    for (int w = 0; w < 2; ++w) {
+        alignas(32) std::int64_t n[4];
+        _mm256_store_si256(reinterpret_cast<__m256i*>(n), in_split.counts[w]);
+        split[w] += weight * (((n[0] + n[1]) + n[2]) + n[3]);
+    }
+}
+
+SGMP_AVX2 void count_window_avx2(const double* xs, const double* ys, const double* zs,
+                                 const double (&a)[3], std::size_t from, std::size_t to,
+                                 std::int64_t weight, const BinSetup& s, std::int64_t* lanes,
+                                 std::int64_t (&split)[2]) {
+    Slots slots;
+    SplitLanes in_split{{_mm256_setzero_si256(), _mm256_setzero_si256()}};
+    count_bins_avx2(xs, ys, zs, a, from, to, weight, s, lanes, slots, in_split);
+    slots.flush_bins(lanes, weight);
+    add_split_lanes(in_split, weight, split);
+}
+
+/// count_column_bins with count_bins_avx2, the window ends found one centre at a time
+/// and empty windows skipped as in count_column_bins_avx512.
+SGMP_AVX2 void count_column_bins_avx2(const double* ox, const double* oy, const double* oz,
+                                      std::size_t begin, std::size_t end, const double* xs,
+                                      const double* ys, const double* zs, std::size_t first,
+                                      std::size_t last, double half, bool own, std::int64_t weight,
+                                      const BinSetup& s, std::int64_t* lanes,
+                                      std::int64_t (&split)[2]) {
+    Slots slots;
+    SplitLanes in_split{{_mm256_setzero_si256(), _mm256_setzero_si256()}};
+    std::size_t lo = first;
+    std::size_t hi = first;
+    for (std::size_t p = begin; p < end;) {
+        const double zp = oz[p];
+        while (lo < last && zs[lo] < zp - half) {
+            ++lo;
+        }
+        if (lo == last) {
+            break;  // every later origin's window is empty too
+        }
+        hi = std::max(hi, lo);
+        while (hi < last && zs[hi] <= zp + half) {
+            ++hi;
+        }
+        if (hi == lo) {
+            const double target = zs[lo];
+            ++p;
+            while (p < end && oz[p] + half < target) {
+                ++p;
+            }
+            continue;
+        }
+        const double a[3] = {ox[p], oy[p], zp};
+        count_bins_avx2(xs, ys, zs, a, own ? std::max(lo, p + 1) : lo, hi, weight, s, lanes, slots,
+                        in_split);
+        ++p;
+    }
+    slots.flush_bins(lanes, weight);
+    add_split_lanes(in_split, weight, split);
+}
 #endif
 
 }  // namespace
 
 namespace detail {
-bool vector_kernels_on = cpu_avx512;
+bool avx512_on = cpu_avx512;
+bool avx2_on = cpu_avx2;
 }  // namespace detail
 
 void enable_vector_kernels(bool on) {
-    detail::vector_kernels_on = on && cpu_avx512;
+    detail::avx512_on = on && cpu_avx512;
+    detail::avx2_on = on && cpu_avx2;
 }
 
 void count_bins_scalar(const double* xs, const double* ys, const double* zs, const double (&a)[3],
@@ -182,9 +374,14 @@ void count_column_bins(const double* ox, const double* oy, const double* oz, std
                        std::int64_t weight, const BinSetup& s, std::int64_t* lanes,
                        std::int64_t (&split)[2]) {
 #if defined(SGMP_PAIR_KERNELS_AVX512)
-    if (vector_kernels()) {
+    if (detail::avx512_on) {
         count_column_bins_avx512(ox, oy, oz, begin, end, xs, ys, zs, first, last, half, own, weight,
                                  s, lanes, split);
+        return;
+    }
+    if (detail::avx2_on) {
+        count_column_bins_avx2(ox, oy, oz, begin, end, xs, ys, zs, first, last, half, own, weight,
+                               s, lanes, split);
         return;
     }
 #endif
@@ -209,8 +406,12 @@ void count_bins(const double* xs, const double* ys, const double* zs, const doub
                 std::size_t from, std::size_t to, std::int64_t weight, const BinSetup& s,
                 std::int64_t* lanes, std::int64_t (&split)[2]) {
 #if defined(SGMP_PAIR_KERNELS_AVX512)
-    if (vector_kernels()) {
+    if (detail::avx512_on) {
         count_window_avx512(xs, ys, zs, a, from, to, weight, s, lanes, split);
+        return;
+    }
+    if (detail::avx2_on) {
+        count_window_avx2(xs, ys, zs, a, from, to, weight, s, lanes, split);
         return;
     }
 #endif

@@ -2,9 +2,10 @@
 /// @file pair_kernels.hpp
 /// The inner loops of the pair passes over one window [from, to) of a grid's stored
 /// centres (structure of arrays x, y, z) and one centre a, eight candidates at a time with
-/// AVX-512 where the CPU has it (checked once at run time), else one at a time.
+/// AVX-512 where the CPU has it, else four at a time with AVX2 where it has that (checked
+/// once at run time), else one at a time.
 ///
-/// Both versions evaluate, for every candidate k, the same IEEE-754 double expressions in
+/// Every version evaluates, for every candidate k, the same IEEE-754 double expressions in
 /// the same order, with no contraction (-ffp-contract=off):
 ///     q_k = ((x_k − a_x)·(x_k − a_x) + (y_k − a_y)·(y_k − a_y)) + (z_k − a_z)·(z_k − a_z),
 ///     s_k = √q_k (correctly rounded),   b_k = trunc_int32(s_k·(1/ΔR) + ½),
@@ -20,18 +21,21 @@
 #include <immintrin.h>
 #define SGMP_PAIR_KERNELS_AVX512 1
 #define SGMP_AVX512 __attribute__((target("avx512f,avx512dq,avx512vl")))
+// AVX2 alone (no FMA: no contraction can arise, whatever the flags).
+#define SGMP_AVX2 __attribute__((target("avx2")))
 #endif
 
 namespace sgmp::compare {
 
 namespace detail {
-extern bool vector_kernels_on;  ///< set at start-up from the CPU's features
+extern bool avx512_on;  ///< set at start-up from the CPU's features
+extern bool avx2_on;    ///< set at start-up: the CPU has AVX2 but not AVX-512
 }  // namespace detail
 
-/// True when the vector kernels are in use: the CPU has AVX-512 (F, DQ, VL) and they are
-/// not switched off.
+/// True when the vector kernels are in use: the CPU has AVX-512 (F, DQ, VL) or AVX2 and
+/// they are not switched off.
 inline bool vector_kernels() {
-    return detail::vector_kernels_on;
+    return detail::avx512_on || detail::avx2_on;
 }
 /// Switches the vector kernels off (false) or back on where the CPU has them (true); for
 /// tests that compare them with the scalar loops. Not thread-safe against running passes.
@@ -230,6 +234,52 @@ SGMP_AVX512 void for_each_pair_within_avx512(const double* ox, const double* oy,
         ++p;
     }
 }
+
+/// for_each_within_scalar four candidates at a time (AVX2): the same calls, in the same order.
+template <class F>
+SGMP_AVX2 void for_each_within_avx2(const double* xs, const double* ys, const double* zs,
+                                    const double (&a)[3], std::size_t from, std::size_t to,
+                                    double limit, F&& f) {
+    const __m256d ax = _mm256_set1_pd(a[0]);
+    const __m256d ay = _mm256_set1_pd(a[1]);
+    const __m256d az = _mm256_set1_pd(a[2]);
+    const __m256d bound = _mm256_set1_pd(limit);
+    const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
+    alignas(32) double qs[4];
+    for (std::size_t k = from; k < to; k += 4) {
+        const std::size_t n = to - k;
+        __m256d x, y, z;
+        unsigned live = 0xfu;
+        if (n >= 4) {
+            x = _mm256_loadu_pd(xs + k);
+            y = _mm256_loadu_pd(ys + k);
+            z = _mm256_loadu_pd(zs + k);
+        } else {
+            const __m256i mask =
+                _mm256_cmpgt_epi64(_mm256_set1_epi64x(static_cast<long long>(n)), lane);
+            x = _mm256_maskload_pd(xs + k, mask);
+            y = _mm256_maskload_pd(ys + k, mask);
+            z = _mm256_maskload_pd(zs + k, mask);
+            live = (1u << n) - 1u;
+        }
+        const __m256d dx = _mm256_sub_pd(x, ax);
+        const __m256d dy = _mm256_sub_pd(y, ay);
+        const __m256d dz = _mm256_sub_pd(z, az);
+        const __m256d q = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
+                                        _mm256_mul_pd(dz, dz));
+        unsigned hits =
+            static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(q, bound, _CMP_LE_OQ))) & live;
+        if (hits == 0) {
+            continue;
+        }
+        _mm256_store_pd(qs, q);
+        while (hits != 0) {
+            const unsigned j = static_cast<unsigned>(__builtin_ctz(hits));
+            hits &= hits - 1;
+            f(k + j, qs[j]);
+        }
+    }
+}
 #endif
 }  // namespace detail
 
@@ -243,9 +293,20 @@ void for_each_pair_within(const double* ox, const double* oy, const double* oz, 
                           std::size_t first, std::size_t last, double half, bool after,
                           double limit, F&& f) {
 #if defined(SGMP_PAIR_KERNELS_AVX512)
-    if (vector_kernels()) {
+    if (detail::avx512_on) {
         detail::for_each_pair_within_avx512(ox, oy, oz, begin, end, xs, ys, zs, first, last, half,
                                             after, limit, f);
+        return;
+    }
+    if (detail::avx2_on) {
+        for_each_nonempty_window(oz, begin, end, zs, first, last, half,
+                                 [&](std::size_t p, std::size_t lo, std::size_t hi) {
+                                     const double a[3] = {ox[p], oy[p], oz[p]};
+                                     const std::size_t from = after && lo <= p ? p + 1 : lo;
+                                     detail::for_each_within_avx2(
+                                         xs, ys, zs, a, from, hi, limit,
+                                         [&](std::size_t k, double q) { f(p, k, q); });
+                                 });
         return;
     }
 #endif
@@ -264,8 +325,12 @@ template <class F>
 void for_each_within(const double* xs, const double* ys, const double* zs, const double (&a)[3],
                      std::size_t from, std::size_t to, double limit, F&& f) {
 #if defined(SGMP_PAIR_KERNELS_AVX512)
-    if (vector_kernels() && to >= from + 8) {  // shorter windows: the scalar loop is faster
+    if (detail::avx512_on && to >= from + 8) {  // shorter windows: the scalar loop is faster
         detail::for_each_within_avx512(xs, ys, zs, a, from, to, limit, f);
+        return;
+    }
+    if (detail::avx2_on && to >= from + 4) {
+        detail::for_each_within_avx2(xs, ys, zs, a, from, to, limit, f);
         return;
     }
 #endif

@@ -129,13 +129,14 @@ Pack read_snapshot(LineReader& reader) {
     pack.particles.reserve(static_cast<std::size_t>(std::min<std::int64_t>(count, 1 << 16)));
     detail::ParticleValidator validator;
     std::string line;
+    std::vector<std::string_view> fields;
     for (std::int64_t i = 0; i < count; ++i) {
         if (!reader.next(line)) {
             throw reader.error("file ends after " + std::to_string(i) + " of " +
                                std::to_string(count) + " atom lines of timestep " +
                                std::to_string(step));
         }
-        const auto fields = detail::split_fields(line);
+        detail::split_fields(line, fields);
         if (fields.size() != columns.width) {
             throw reader.error("expected " + std::to_string(columns.width) +
                                " columns as labelled, found " + std::to_string(fields.size()));

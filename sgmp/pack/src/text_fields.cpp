@@ -7,6 +7,12 @@ namespace sgmp::detail {
 
 std::vector<std::string_view> split_fields(std::string_view line) {
     std::vector<std::string_view> fields;
+    split_fields(line, fields);
+    return fields;
+}
+
+void split_fields(std::string_view line, std::vector<std::string_view>& fields) {
+    fields.clear();
     std::size_t pos = 0;
     while (pos < line.size()) {
         while (pos < line.size() && (line[pos] == ' ' || line[pos] == '\t')) {
@@ -20,7 +26,6 @@ std::vector<std::string_view> split_fields(std::string_view line) {
             fields.push_back(line.substr(start, pos - start));
         }
     }
-    return fields;
 }
 
 std::optional<double> parse_double(std::string_view field) {
@@ -78,7 +83,15 @@ void ParticleValidator::check(const Particle& particle, const LineReader& reader
 }
 
 int decimals_of(std::string_view field) {
-    const std::size_t e = field.find_first_of("eE");
+    // A loop, not find_first_of("eE"), which searches the set once per character (a memchr
+    // call each: a tenth of reading a large pack).
+    std::size_t e = 0;
+    while (e < field.size() && field[e] != 'e' && field[e] != 'E') {
+        ++e;
+    }
+    if (e == field.size()) {
+        e = std::string_view::npos;
+    }
     const std::string_view mantissa = field.substr(0, e);
     const std::size_t dot = mantissa.find('.');
     int decimals = dot == std::string_view::npos ? 0 : static_cast<int>(mantissa.size() - dot - 1);

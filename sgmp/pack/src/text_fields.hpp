@@ -16,9 +16,10 @@ namespace sgmp::detail {
 
 using sgmp::LineReader;
 
-
 /// Whitespace-separated fields of a line.
 std::vector<std::string_view> split_fields(std::string_view line);
+/// The same into `fields` (cleared first), whose memory a reader reuses line after line.
+void split_fields(std::string_view line, std::vector<std::string_view>& fields);
 
 /// Strict parses: the whole field must be the number. nullopt when it is not.
 std::optional<double> parse_double(std::string_view field);

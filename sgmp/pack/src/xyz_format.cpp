@@ -182,8 +182,9 @@ std::int64_t integer_field(std::string_view field, const char* what, const LineR
 
 /// One particle line; `decimals` grows to the most decimals of its numbers.
 Particle parse_particle(const std::string& line, const Columns& columns, std::int64_t index,
-                        const ReadOptions& options, int& decimals, const LineReader& reader) {
-    const auto fields = detail::split_fields(line);
+                        const ReadOptions& options, int& decimals, const LineReader& reader,
+                        std::vector<std::string_view>& fields) {
+    detail::split_fields(line, fields);
     if (static_cast<int>(fields.size()) != columns.width) {
         throw reader.error("expected " + std::to_string(columns.width) + " columns, found " +
                            std::to_string(fields.size()));
@@ -255,12 +256,14 @@ PackRead read_frame(const std::string& count_line, std::size_t frame, const Read
     read.pack.particles.reserve(static_cast<std::size_t>(std::min<std::int64_t>(*count, 1 << 16)));
     detail::ParticleValidator validator;
     int decimals = 0;
+    std::vector<std::string_view> line_fields;
     for (std::int64_t i = 0; i < *count; ++i) {
         if (!reader.next(line)) {
             throw reader.error("file ends after " + std::to_string(i) + " of " +
                                std::to_string(*count) + " particle lines");
         }
-        read.pack.particles.push_back(parse_particle(line, *columns, i, options, decimals, reader));
+        read.pack.particles.push_back(
+            parse_particle(line, *columns, i, options, decimals, reader, line_fields));
         validator.check(read.pack.particles.back(), reader);
     }
     read.decimals = decimals;

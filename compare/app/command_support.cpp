@@ -119,7 +119,9 @@ std::string command_line(int argc, char** argv) {
 }
 
 Pack read_pack(const std::string& path) {
-    Pack pack = read_pack_file(path);
+    ReadOptions options;
+    options.threads = thread_count();  // the lines are parsed on the measurement's threads
+    Pack pack = read_pack_file(path, options).pack;
     if (pack.particles.empty()) {
         throw InputError(path, 0, "the pack has no particles");
     }

@@ -40,14 +40,25 @@ bool is_blank(std::string_view line);
 
 namespace sgmp::detail {
 
-/// Checks each particle as it is read: finite centre, finite positive radius, and an id
-/// not seen before. Throws InputError at the reader's current line.
+/// Throws InputError(source, line) unless the particle's centre is finite and its radius
+/// finite and > 0.
+void check_particle_values(const Particle& particle, const std::string& source, std::size_t line);
+
+/// Checks each particle as it is read: its values (check_particle_values) and an id not
+/// seen before. Throws InputError at the line given (or the reader's current line).
 class ParticleValidator {
   public:
     void check(const Particle& particle, const LineReader& reader);
+    /// The id check alone, for particles whose values were checked already.
+    void check_id(std::int64_t id, const std::string& source, std::size_t line);
 
   private:
-    std::unordered_map<std::int64_t, std::size_t> line_of_id_;
+    /// Line of each id seen, for ids in [0, size) (0: not seen). Ids of packs are nearly
+    /// always 1…N, which this table holds in 8 bytes each, without a hash or allocation.
+    std::vector<std::size_t> dense_line_;
+    /// Lines of the ids the table does not hold.
+    std::unordered_map<std::int64_t, std::size_t> sparse_line_;
+    std::size_t seen_ = 0;
 };
 
 }  // namespace sgmp::detail

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "sgmp/pack/pack_extent.hpp"
+#include "sgmp/pack/parallel.hpp"
 #include "text_fields.hpp"
 
 namespace sgmp {
@@ -164,50 +165,160 @@ Columns parse_properties(const std::string& descriptor, bool have_radius,
     return columns;
 }
 
-double number_field(std::string_view field, const char* what, const LineReader& reader) {
+/// A line of the source, for errors found away from the reader (parsing in parallel).
+struct LineAt {
+    const std::string& source;
+    std::size_t line;
+    [[nodiscard]] InputError error(const std::string& reason) const {
+        return InputError(source, line, reason);
+    }
+};
+
+double number_field(std::string_view field, const char* what, const LineAt& at) {
     const auto value = detail::parse_double(field);
     if (!value) {
-        throw reader.error(std::string(what) + " '" + std::string(field) + "' is not a number");
+        throw at.error(std::string(what) + " '" + std::string(field) + "' is not a number");
     }
     return *value;
 }
 
-std::int64_t integer_field(std::string_view field, const char* what, const LineReader& reader) {
+std::int64_t integer_field(std::string_view field, const char* what, const LineAt& at) {
     const auto value = detail::parse_integer(field);
     if (!value) {
-        throw reader.error(std::string(what) + " '" + std::string(field) + "' is not an integer");
+        throw at.error(std::string(what) + " '" + std::string(field) + "' is not an integer");
     }
     return *value;
 }
 
-/// One particle line; `decimals` grows to the most decimals of its numbers.
-Particle parse_particle(const std::string& line, const Columns& columns, std::int64_t index,
-                        const ReadOptions& options, int& decimals, const LineReader& reader,
+/// One particle line; `decimals` grows to the most decimals of its numbers. Its values are
+/// checked here (check_particle_values); its id is checked against the others later.
+Particle parse_particle(std::string_view line, const Columns& columns, std::int64_t index,
+                        const ReadOptions& options, int& decimals, const LineAt& at,
                         std::vector<std::string_view>& fields) {
     detail::split_fields(line, fields);
     if (static_cast<int>(fields.size()) != columns.width) {
-        throw reader.error("expected " + std::to_string(columns.width) + " columns, found " +
-                           std::to_string(fields.size()));
+        throw at.error("expected " + std::to_string(columns.width) + " columns, found " +
+                       std::to_string(fields.size()));
     }
     Particle particle;
-    particle.id = columns.id >= 0 ? integer_field(fields[columns.id], "id", reader) : index + 1;
+    particle.id = columns.id >= 0 ? integer_field(fields[columns.id], "id", at) : index + 1;
     for (int k = 0; k < 3; ++k) {
-        particle.center[k] = number_field(fields[columns.x + k], "coordinate", reader);
+        particle.center[k] = number_field(fields[columns.x + k], "coordinate", at);
         decimals = std::max(decimals, detail::decimals_of(fields[columns.x + k]));
     }
     if (options.radius) {
         particle.radius = *options.radius;
     } else if (columns.radius >= 0) {
-        particle.radius = number_field(fields[columns.radius], "radius", reader);
+        particle.radius = number_field(fields[columns.radius], "radius", at);
         decimals = std::max(decimals, detail::decimals_of(fields[columns.radius]));
     } else {
-        particle.radius = 0.5 * number_field(fields[columns.diameter], "diameter", reader);
+        particle.radius = 0.5 * number_field(fields[columns.diameter], "diameter", at);
         decimals = std::max(decimals, detail::decimals_of(fields[columns.diameter]));
     }
     if (columns.color >= 0) {
-        particle.color = static_cast<int>(integer_field(fields[columns.color], "bin", reader));
+        particle.color = static_cast<int>(integer_field(fields[columns.color], "bin", at));
     }
+    detail::check_particle_values(particle, at.source, at.line);
     return particle;
+}
+
+/// Lines of one block: line k is text[end[k − 1], end[k]).
+struct LineBlock {
+    std::string text;
+    std::vector<std::size_t> end;
+    std::size_t first_line = 0;  ///< number of line 0 in the source
+    [[nodiscard]] std::size_t size() const { return end.size(); }
+    [[nodiscard]] std::string_view line(std::size_t k) const {
+        const std::size_t begin = k == 0 ? 0 : end[k - 1];
+        return std::string_view(text).substr(begin, end[k] - begin);
+    }
+};
+
+/// What parsing one chunk of a block found.
+struct ChunkParse {
+    int decimals = 0;
+    std::size_t failed = 0;  ///< line (in the block) of `error`
+    std::optional<InputError> error;
+};
+
+/// Parses lines [begin, end) of `block` into particles[base + k] for line k.
+ChunkParse parse_chunk(const LineBlock& block, std::size_t begin, std::size_t end,
+                       std::int64_t first_index, const Columns& columns, const ReadOptions& options,
+                       const std::string& source, Particle* particles) {
+    ChunkParse parse;
+    std::vector<std::string_view> fields;
+    for (std::size_t k = begin; k < end; ++k) {
+        const LineAt at{source, block.first_line + k};
+        try {
+            particles[k] =
+                parse_particle(block.line(k), columns, first_index + static_cast<std::int64_t>(k),
+                               options, parse.decimals, at, fields);
+        } catch (const InputError& error) {
+            parse.failed = k;
+            parse.error = error;
+            break;
+        }
+    }
+    return parse;
+}
+
+/// The `count` particle lines of a frame into `read`. Blocks of lines are gathered from the
+/// reader, parsed on options.threads threads in chunks of fixed size, and their ids checked
+/// in line order, so the error reported is the first in the file whatever the thread count,
+/// as in a line-by-line read.
+void read_particle_lines(LineReader& reader, std::int64_t count, const Columns& columns,
+                         const ReadOptions& options, PackRead& read) {
+    constexpr std::int64_t kBlockLines = 1 << 16;
+    constexpr std::size_t kChunkLines = 4096;
+    std::vector<Particle>& particles = read.pack.particles;
+    detail::ParticleValidator ids;
+    LineBlock block;
+    std::string line;
+    int decimals = 0;
+    while (static_cast<std::int64_t>(particles.size()) < count) {
+        const auto done = static_cast<std::int64_t>(particles.size());
+        block.text.clear();
+        block.end.clear();
+        block.first_line = reader.line_number() + 1;
+        bool ended = false;
+        for (std::int64_t k = 0; k < std::min(kBlockLines, count - done); ++k) {
+            if (!reader.next(line)) {
+                ended = true;
+                break;
+            }
+            block.text += line;
+            block.end.push_back(block.text.size());
+        }
+        const std::size_t lines = block.size();
+        particles.resize(particles.size() + lines);
+        Particle* const first = particles.data() + done;
+        std::vector<ChunkParse> chunks((lines + kChunkLines - 1) / kChunkLines);
+        parallel_for(options.threads, chunks.size(), [&](std::size_t c) {
+            chunks[c] = parse_chunk(block, c * kChunkLines, std::min(lines, (c + 1) * kChunkLines),
+                                    done, columns, options, reader.source(), first);
+        });
+        std::size_t good = lines;  // lines before the first error
+        for (const ChunkParse& chunk : chunks) {
+            decimals = std::max(decimals, chunk.decimals);
+            if (chunk.error) {
+                good = chunk.failed;
+                break;
+            }
+        }
+        for (std::size_t k = 0; k < good; ++k) {
+            ids.check_id(first[k].id, reader.source(), block.first_line + k);
+        }
+        for (const ChunkParse& chunk : chunks) {
+            if (chunk.error) {
+                throw *chunk.error;
+            }
+        }
+        if (ended) {
+            throw reader.error("file ends after " + std::to_string(particles.size()) + " of " +
+                               std::to_string(count) + " particle lines");
+        }
+    }
+    read.decimals = decimals;
 }
 
 /// Header keys the writer derives; the reader does not keep them (names in any case).
@@ -254,19 +365,7 @@ PackRead read_frame(const std::string& count_line, std::size_t frame, const Read
     // block up front, so a short file claiming 10^15 particles fails at its end, not in
     // the allocator.
     read.pack.particles.reserve(static_cast<std::size_t>(std::min<std::int64_t>(*count, 1 << 16)));
-    detail::ParticleValidator validator;
-    int decimals = 0;
-    std::vector<std::string_view> line_fields;
-    for (std::int64_t i = 0; i < *count; ++i) {
-        if (!reader.next(line)) {
-            throw reader.error("file ends after " + std::to_string(i) + " of " +
-                               std::to_string(*count) + " particle lines");
-        }
-        read.pack.particles.push_back(
-            parse_particle(line, *columns, i, options, decimals, reader, line_fields));
-        validator.check(read.pack.particles.back(), reader);
-    }
-    read.decimals = decimals;
+    read_particle_lines(reader, *count, *columns, options, read);
     return read;
 }
 

@@ -17,8 +17,7 @@ namespace sgmp::compare {
 void set_thread_count(unsigned count);
 unsigned thread_count();
 
-/// Runs task(i) for every i in [0, count) on the worker threads (any order). The first
-/// exception thrown by a task is rethrown after all workers stopped.
+/// sgmp::parallel_for (sgmp/pack/parallel.hpp) on thread_count() threads.
 void parallel_for(std::size_t count, const std::function<void(std::size_t)>& task);
 
 /// Folds body(partial, begin, end) over fixed chunks of `chunk` items of [0, n):

@@ -15,6 +15,9 @@ struct ReadOptions {
     /// Every particle gets this radius: needed for files that carry no radius or diameter
     /// column (species-only files), and replaces the file's radii otherwise.
     std::optional<double> radius;
+    /// Threads that parse the particle lines of an extended XYZ file (at least 1). The pack,
+    /// and the error of a bad file, do not depend on it.
+    unsigned threads = 1;
 };
 
 struct PackRead {

@@ -293,8 +293,7 @@ SGMP_AVX2 void count_window_avx2(const double* xs, const double* ys, const doubl
     add_split_lanes(in_split, weight, split);
 }
 
-/// count_column_bins with count_bins_avx2, the window ends found one centre at a time
-/// and empty windows skipped as in count_column_bins_avx512.
+/// count_column_bins with count_bins_avx2 over the windows of for_each_nonempty_window.
 SGMP_AVX2 void count_column_bins_avx2(const double* ox, const double* oy, const double* oz,
                                       std::size_t begin, std::size_t end, const double* xs,
                                       const double* ys, const double* zs, std::size_t first,
@@ -303,33 +302,14 @@ SGMP_AVX2 void count_column_bins_avx2(const double* ox, const double* oy, const 
                                       std::int64_t (&split)[2]) {
     Slots slots;
     SplitLanes in_split{{_mm256_setzero_si256(), _mm256_setzero_si256()}};
-    std::size_t lo = first;
-    std::size_t hi = first;
-    for (std::size_t p = begin; p < end;) {
-        const double zp = oz[p];
-        while (lo < last && zs[lo] < zp - half) {
-            ++lo;
-        }
-        if (lo == last) {
-            break;  // every later origin's window is empty too
-        }
-        hi = std::max(hi, lo);
-        while (hi < last && zs[hi] <= zp + half) {
-            ++hi;
-        }
-        if (hi == lo) {
-            const double target = zs[lo];
-            ++p;
-            while (p < end && oz[p] + half < target) {
-                ++p;
-            }
-            continue;
-        }
-        const double a[3] = {ox[p], oy[p], zp};
-        count_bins_avx2(xs, ys, zs, a, own ? std::max(lo, p + 1) : lo, hi, weight, s, lanes, slots,
-                        in_split);
-        ++p;
-    }
+    // The walk is compiled for the default target and inlined here; the window's body
+    // carries the AVX2 target itself (a lambda does not inherit its function's target).
+    for_each_nonempty_window(oz, begin, end, zs, first, last, half,
+                             [&](std::size_t p, std::size_t lo, std::size_t hi) SGMP_AVX2 {
+                                 const double a[3] = {ox[p], oy[p], oz[p]};
+                                 count_bins_avx2(xs, ys, zs, a, own ? std::max(lo, p + 1) : lo, hi,
+                                                 weight, s, lanes, slots, in_split);
+                             });
     slots.flush_bins(lanes, weight);
     add_split_lanes(in_split, weight, split);
 }

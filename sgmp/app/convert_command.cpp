@@ -8,6 +8,7 @@
 #include <string>
 
 #include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/cpu_budget.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/option_rules.hpp"
 #include "sgmp/pack/pack_file.hpp"
@@ -93,6 +94,7 @@ int convert(const ConvertOptions& o) {
         throw UsageError{std::string("OUT ") + e.what()};
     }
     ReadOptions read_options;
+    read_options.threads = usable_threads();  // the pack does not depend on it
     if (o.frame > 0) {
         read_options.frame = o.frame;
     }

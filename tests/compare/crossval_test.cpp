@@ -9,6 +9,7 @@
 #include "sgmp/compare/report_render.hpp"
 #include "sgmp/compare/thesis_table.hpp"
 #include "sgmp/pack/input_error.hpp"
+#include "test_support.hpp"
 
 using namespace sgmp;
 using namespace sgmp::compare;
@@ -210,6 +211,20 @@ BOOST_AUTO_TEST_CASE(regression_passes_identical_runs_and_flags_moved_metrics) {
     BOOST_CHECK_THROW(
         parse_baseline(nlohmann::json::parse("{\"entries\": [{\"group\": 1}]}"), "b.json"),
         InputError);
+    // A count must be a whole number as JSON holds it: 1e50, 150.5, 150.0 and -3 are refused
+    // with one line naming the value (1e50 used to reach an undefined float conversion).
+    for (const std::string count : {"1E50", "150.5", "150.0", "-3", "\"150\""}) {
+        const std::string text = "{\"entries\": [{\"group\": \"g\", \"count\": " + count +
+                                 ", \"metric\": \"phi\", \"value\": 0.6, \"tolerance\": 0.01}]}";
+        const std::string message = sgmp::testing::input_error_of(
+            [&] { (void)parse_baseline(nlohmann::json::parse(text), "b.json"); });
+        BOOST_TEST(message.find("b.json: entry 0 is malformed: count ") == 0, message);
+        BOOST_TEST(message.find("must be a whole number >= 0") != std::string::npos, message);
+    }
+    const std::string good =
+        "{\"entries\": [{\"group\": \"g\", \"count\": 150, \"metric\": "
+        "\"phi\", \"value\": 0.6, \"tolerance\": 0.01}]}";
+    BOOST_TEST(parse_baseline(nlohmann::json::parse(good), "b.json").at(0).count == 150u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -89,7 +89,14 @@ std::vector<BaselineEntry> parse_baseline(const nlohmann::json& json, const std:
         try {
             BaselineEntry e;
             e.group = item.at("group").get<std::string>();
-            e.count = item.at("count").get<std::size_t>();
+            // A whole number as JSON holds it: a float (1e50) has no exact count, and its
+            // conversion would be undefined.
+            const auto& count = item.at("count");
+            if (!count.is_number_unsigned()) {
+                throw std::invalid_argument("count " + count.dump() +
+                                            " must be a whole number >= 0");
+            }
+            e.count = count.get<std::size_t>();
             e.metric = item.at("metric").get<std::string>();
             e.unit = item.value("unit", "");
             e.value = item.at("value").get<double>();

@@ -241,7 +241,8 @@ struct ChunkParse {
     std::optional<InputError> error;
 };
 
-/// Parses lines [begin, end) of `block` into particles[base + k] for line k.
+/// Parses lines [begin, end) of `block` into particles[k] for line k (`particles` is the
+/// block's first slot; `first_index` the frame index of its line 0).
 ChunkParse parse_chunk(const LineBlock& block, std::size_t begin, std::size_t end,
                        std::int64_t first_index, const Columns& columns, const ReadOptions& options,
                        const std::string& source, Particle* particles) {

@@ -211,7 +211,6 @@ SGMP_AVX2 inline __attribute__((always_inline)) void count_bins_avx2(
     const __m128i split_bins = _mm_set1_epi32(static_cast<int>(s.split_bins));
     const __m256d split_lo[2] = {_mm256_set1_pd(s.split_lo[0]), _mm256_set1_pd(s.split_lo[1])};
     const __m256d split_hi[2] = {_mm256_set1_pd(s.split_hi[0]), _mm256_set1_pd(s.split_hi[1])};
-    const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
     const auto stride = static_cast<int>(s.bins + 1);
     const __m128i lane_start[2] = {
         _mm_mullo_epi32(_mm_setr_epi32(0, 1, 2, 3), _mm_set1_epi32(stride)),
@@ -220,26 +219,7 @@ SGMP_AVX2 inline __attribute__((always_inline)) void count_bins_avx2(
     std::int32_t* const at = slots.at;
     unsigned group = 0;
     for (std::size_t k = from; k < to; k += 4, group ^= 1u) {
-        const std::size_t left = to - k;
-        __m256d x, y, z;
-        __m256d live = nan;
-        if (left >= 4) {
-            x = _mm256_loadu_pd(xs + k);
-            y = _mm256_loadu_pd(ys + k);
-            z = _mm256_loadu_pd(zs + k);
-        } else {
-            const __m256i mask =
-                _mm256_cmpgt_epi64(_mm256_set1_epi64x(static_cast<long long>(left)), lane);
-            x = _mm256_maskload_pd(xs + k, mask);
-            y = _mm256_maskload_pd(ys + k, mask);
-            z = _mm256_maskload_pd(zs + k, mask);
-            live = _mm256_castsi256_pd(mask);
-        }
-        const __m256d dx = _mm256_sub_pd(x, ax);
-        const __m256d dy = _mm256_sub_pd(y, ay);
-        const __m256d dz = _mm256_sub_pd(z, az);
-        const __m256d q = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
-                                        _mm256_mul_pd(dz, dz));
+        const auto [q, live] = detail::squared_distances_avx2(xs, ys, zs, ax, ay, az, k, to);
         const __m256d near = _mm256_and_pd(_mm256_cmp_pd(q, reach, _CMP_LE_OQ), live);
         const __m256d distance = _mm256_sqrt_pd(q);
         const __m256d scaled = _mm256_or_pd(_mm256_add_pd(_mm256_mul_pd(distance, per_width), half),

@@ -235,6 +235,37 @@ SGMP_AVX512 void for_each_pair_within_avx512(const double* ox, const double* oy,
     }
 }
 
+/// Squared distances from (ax, ay, az) to the candidates k…k+3 of (xs, ys, zs), as
+/// for_each_within_scalar computes them; lanes at or past `to` are loaded as zeros and
+/// `live` is all ones in the lanes before `to`, zero after.
+struct FourDistances {
+    __m256d q;
+    __m256d live;
+};
+SGMP_AVX2 inline __attribute__((always_inline)) FourDistances squared_distances_avx2(
+    const double* xs, const double* ys, const double* zs, __m256d ax, __m256d ay, __m256d az,
+    std::size_t k, std::size_t to) {
+    __m256d x, y, z;
+    __m256i mask = _mm256_set1_epi64x(-1);
+    if (to - k >= 4) {
+        x = _mm256_loadu_pd(xs + k);
+        y = _mm256_loadu_pd(ys + k);
+        z = _mm256_loadu_pd(zs + k);
+    } else {
+        mask = _mm256_cmpgt_epi64(_mm256_set1_epi64x(static_cast<long long>(to - k)),
+                                  _mm256_setr_epi64x(0, 1, 2, 3));
+        x = _mm256_maskload_pd(xs + k, mask);
+        y = _mm256_maskload_pd(ys + k, mask);
+        z = _mm256_maskload_pd(zs + k, mask);
+    }
+    const __m256d dx = _mm256_sub_pd(x, ax);
+    const __m256d dy = _mm256_sub_pd(y, ay);
+    const __m256d dz = _mm256_sub_pd(z, az);
+    const __m256d q = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
+                                    _mm256_mul_pd(dz, dz));
+    return {q, _mm256_castsi256_pd(mask)};
+}
+
 /// for_each_within_scalar four candidates at a time (AVX2): the same calls, in the same order.
 template <class F>
 SGMP_AVX2 void for_each_within_avx2(const double* xs, const double* ys, const double* zs,
@@ -244,35 +275,15 @@ SGMP_AVX2 void for_each_within_avx2(const double* xs, const double* ys, const do
     const __m256d ay = _mm256_set1_pd(a[1]);
     const __m256d az = _mm256_set1_pd(a[2]);
     const __m256d bound = _mm256_set1_pd(limit);
-    const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
     alignas(32) double qs[4];
     for (std::size_t k = from; k < to; k += 4) {
-        const std::size_t n = to - k;
-        __m256d x, y, z;
-        unsigned live = 0xfu;
-        if (n >= 4) {
-            x = _mm256_loadu_pd(xs + k);
-            y = _mm256_loadu_pd(ys + k);
-            z = _mm256_loadu_pd(zs + k);
-        } else {
-            const __m256i mask =
-                _mm256_cmpgt_epi64(_mm256_set1_epi64x(static_cast<long long>(n)), lane);
-            x = _mm256_maskload_pd(xs + k, mask);
-            y = _mm256_maskload_pd(ys + k, mask);
-            z = _mm256_maskload_pd(zs + k, mask);
-            live = (1u << n) - 1u;
-        }
-        const __m256d dx = _mm256_sub_pd(x, ax);
-        const __m256d dy = _mm256_sub_pd(y, ay);
-        const __m256d dz = _mm256_sub_pd(z, az);
-        const __m256d q = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
-                                        _mm256_mul_pd(dz, dz));
-        unsigned hits =
-            static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(q, bound, _CMP_LE_OQ))) & live;
+        const FourDistances four = squared_distances_avx2(xs, ys, zs, ax, ay, az, k, to);
+        unsigned hits = static_cast<unsigned>(
+            _mm256_movemask_pd(_mm256_and_pd(_mm256_cmp_pd(four.q, bound, _CMP_LE_OQ), four.live)));
         if (hits == 0) {
             continue;
         }
-        _mm256_store_pd(qs, q);
+        _mm256_store_pd(qs, four.q);
         while (hits != 0) {
             const unsigned j = static_cast<unsigned>(__builtin_ctz(hits));
             hits &= hits - 1;

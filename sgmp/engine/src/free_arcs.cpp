@@ -91,11 +91,15 @@ struct SampleTest {
     double a;
     double b;
     double q;
-    [[nodiscard]] bool blocked(long k) const {
+    [[nodiscard]] long wrap(long k) const {
         while (k < 0)
             k += n;  // k stays within a few turns: cheaper than %
         while (k >= n)
             k -= n;
+        return k;
+    }
+    [[nodiscard]] bool blocked(long k) const {
+        k = wrap(k);
         return a * ux[k] + b * uz[k] < q;
     }
 };
@@ -111,14 +115,12 @@ bool near_tangency(const Blocker& c) {
     return radius2 == 0.0 || c.q * c.q >= kMargin * radius2;
 }
 
-/// The run of samples one constraint blocks, as unwrapped indices [lo, hi].
+/// The run of samples one constraint blocks, as unwrapped indices [lo, hi]; the constraint
+/// is not near tangency (`near_tangency`).
 Run blocked_run(const SweepTable& table, const Blocker& c, long& lo, long& hi) {
     const int n = table.positions();
     const SampleTest test{table.sample_x(), table.sample_z(), n, c.a, c.b, c.q};
     const auto blocked = [&](long k) { return test.blocked(k); };
-    if (near_tangency(c)) {
-        return Run::Undecided;  // constant or near tangency: test every sample
-    }
     const double radius = std::sqrt(c.a * c.a + c.b * c.b);
     const double psi = rough_atan2(c.a, c.b);
     const double beta = rough_acos(c.q / radius);
@@ -232,28 +234,33 @@ void free_runs(const SweepTable& table, const std::vector<Blocker>& blockers, Fr
     // same order, as a rule); a guess is only a starting point, so a wrong one costs time only.
     const bool guesses = out.guess_positions == n;
     out.guess_positions = n;
-    out.guess.resize(blockers.size());
-    // Blocked runs, split at angle 0 into runs within [0, n).
-    out.blocked.clear();
+    if (out.guess.size() < blockers.size()) {
+        out.guess.resize(blockers.size(), {0, -1});
+    }
+    // Blocked runs, split at angle 0 into runs within [0, n), kept sorted by insertion (a
+    // sweep has a few obstacles).
+    out.blocked.resize(2 * blockers.size() + 1);
+    std::pair<long, long>* blocked = out.blocked.data();
+    std::size_t blocked_count = 0;
+    const auto add_blocked = [&](long from, long to) {
+        std::size_t k = blocked_count++;
+        for (; k > 0 && blocked[k - 1] > std::pair<long, long>{from, to}; --k) {
+            blocked[k] = blocked[k - 1];
+        }
+        blocked[k] = {from, to};
+    };
     for (std::size_t i = 0; i < blockers.size(); ++i) {
         const Blocker& c = blockers[i];
-        long lo = 0;
-        long hi = -1;
+        const SampleTest test{table.sample_x(), table.sample_z(), n, c.a, c.b, c.q};
+        std::pair<long, long>& guess = out.guess[i];
+        long lo = guess.first;
+        long hi = guess.second;
         Run run = Run::Undecided;
-        if (guesses && out.guess[i].second >= out.guess[i].first) {
-            if (near_tangency(c)) {
-                out.guess_positions = 0;
-                free_runs_by_samples(table, blockers, out);
-                return;
-            }
-            lo = out.guess[i].first;
-            hi = out.guess[i].second;
-            const SampleTest test{table.sample_x(), table.sample_z(), n, c.a, c.b, c.q};
-            if (settle_guess(test, lo, hi)) {
-                run = Run::Found;
-            }
-        }
-        if (run != Run::Found) {
+        if (near_tangency(c)) {
+            run = Run::Undecided;  // constant or near tangency: test every sample
+        } else if (guesses && hi >= lo && settle_guess(test, lo, hi)) {
+            run = Run::Found;
+        } else {
             run = blocked_run(table, c, lo, hi);
         }
         if (run == Run::Undecided) {
@@ -261,30 +268,23 @@ void free_runs(const SweepTable& table, const std::vector<Blocker>& blockers, Fr
             free_runs_by_samples(table, blockers, out);
             return;
         }
-        out.guess[i] = {0, -1};
+        guess = {0, -1};
         if (run == Run::Empty) {
             continue;
         }
         if (hi - lo + 1 >= n) {
-            out.blocked.emplace_back(0, n);
+            add_blocked(0, n);
             continue;
         }
-        long start = lo;  // lo mod n; lo is within a few turns, and % is a slow division
-        while (start < 0)
-            start += n;
-        while (start >= n)
-            start -= n;
+        const long start = test.wrap(lo);
         const long end = start + (hi - lo + 1);  // exclusive, may pass n
-        out.guess[i] = {start, end - 1};
+        guess = {start, end - 1};
         if (end <= n) {
-            out.blocked.emplace_back(start, end);
+            add_blocked(start, end);
         } else {
-            out.blocked.emplace_back(start, n);
-            out.blocked.emplace_back(0, end - n);
+            add_blocked(start, n);
+            add_blocked(0, end - n);
         }
-    }
-    if (out.blocked.size() > 1) {
-        std::sort(out.blocked.begin(), out.blocked.end());
     }
     // Free runs are the gaps between the merged blocked runs.
     out.start.clear();
@@ -298,9 +298,9 @@ void free_runs(const SweepTable& table, const std::vector<Blocker>& blockers, Fr
             out.free_count += static_cast<int>(to - from);
         }
     };
-    for (const auto& [from, to] : out.blocked) {
-        emit_free(covered, from);
-        covered = std::max(covered, to);
+    for (std::size_t k = 0; k < blocked_count; ++k) {
+        emit_free(covered, blocked[k].first);
+        covered = std::max(covered, blocked[k].second);
     }
     emit_free(covered, n);
 }

@@ -73,7 +73,10 @@ void Protocol::rebuild_local(const Vec3& origin, double r, double s) {
 // it is in the list. Otherwise the grid is scanned.
 Protocol::Fall Protocol::contact_below(const Vec3& c, double r) {
     const double s = 2.0 * r / params_.circle_factor;
-    if (!local_valid_ || (c - local_origin_).norm() > skin_) {
+    // The skin tests compare squares: where rounding puts their boundary decides only when
+    // the list is rebuilt, never which spheres a fall or sweep sees (the reach has s to spare).
+    const double skin2 = skin_ * skin_;
+    if (!local_valid_ || (c - local_origin_).squaredNorm() > skin2) {
         rebuild_local(c, r, s);
     }
     Fall result{container_.floor + r, true, Sphere{}};
@@ -83,7 +86,7 @@ Protocol::Fall Protocol::contact_below(const Vec3& c, double r) {
             result = Fall{y, false, j};
         }
     }
-    if ((Vec3(c.x(), result.y, c.z()) - local_origin_).norm() <= skin_) {
+    if ((Vec3(c.x(), result.y, c.z()) - local_origin_).squaredNorm() <= skin2) {
         return result;
     }
     result = fall_exact(c, r);
@@ -154,21 +157,13 @@ bool Protocol::free_at(const Vec3& c, double r, double ox, double oz) const {
     return true;
 }
 
-bool Protocol::crosses_wall(double x, double z, double r) const {
-    return x - r < container_.x_min || x + r > container_.x_max || z - r < container_.z_min ||
-           z + r > container_.z_max;
-}
-
-bool Protocol::touches_wall(const Vec3& c, double r) const {
-    return c.x() - r <= container_.x_min || c.x() + r >= container_.x_max ||
-           c.z() - r <= container_.z_min || c.z() + r >= container_.z_max;
-}
-
 bool Protocol::pick_in_arc(const SweepTable& table, int start, int length, const Vec3& c, double r,
                            double s, const Move& previous, Move& chosen) const {
     const int n = table.positions();
     const bool momentum = params_.momentum > 0.0 && (previous.x != 0.0 || previous.z != 0.0);
-    const int middle_half = (2 * start + length - 1) % (2 * n);
+    // Indices wrap by one subtraction (start < n, length <= n): no integer division per move.
+    const auto wrap = [](int k, int period) { return k >= period ? k - period : k; };
+    const int middle_half = wrap(2 * start + length - 1, 2 * n);
     if (momentum) {
         // Aim between the bisector and the previous move; take the arc's closest sample.
         const double m = params_.momentum;
@@ -177,7 +172,7 @@ bool Protocol::pick_in_arc(const SweepTable& table, int start, int length, const
         int best = start;
         double best_dot = -std::numeric_limits<double>::infinity();
         for (int i = 0; i < length; ++i) {
-            const int h = 2 * ((start + i) % n);
+            const int h = 2 * wrap(start + i, n);
             const double dot = tx * table.x(h) + tz * table.z(h);
             if (dot > best_dot) {
                 best_dot = dot;
@@ -198,7 +193,7 @@ bool Protocol::pick_in_arc(const SweepTable& table, int start, int length, const
             return true;
         }
     }
-    const int h = 2 * ((start + (length - 1) / 2) % n);
+    const int h = 2 * wrap(start + (length - 1) / 2, n);
     chosen = Move{table.x(h), table.z(h)};
     return true;
 }

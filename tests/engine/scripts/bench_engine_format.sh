@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # The output format of `scripts/bench-engine --quick`: a header, a rule, nine time rows
-# "label | N | seconds | B/particle | target | PASS|FAIL|-" (three arrangements at 10^3 and
-# 10^4, the single column at 10^3 and 10^4, the step fall at 9000) and four scaling rows
-# "scaling ARRANGEMENT 1000->10000 | - | ratio | - | target | PASS|FAIL (N^x)"; exit status 0
-# (every target met) or 3 (a target missed); it must finish in a minute.
+# "label | N | seconds | B/particle | moves/particle | ns/move | target | PASS|FAIL|-" (three
+# arrangements at 10^3 and 10^4, the single column at 10^3 and 10^4, the step fall at 9000)
+# and four scaling rows "scaling ARRANGEMENT 1000->10000 | - | ratio | - | - | - | target |
+# PASS|FAIL (N^x)"; exit status 0 (every target met) or 3 (a target missed); it must finish
+# in a minute. The moves per particle are the packs' own (`moves` header key over N), and
+# ns/move is the row's seconds over those moves.
 #   tests/engine/scripts/bench_engine_format.sh SGMP_EXECUTABLE SOURCE_DIR
 set -euo pipefail
 binary="$(realpath "$1")"
@@ -15,16 +17,29 @@ output="$(SGMP_BENCH_BINARY="$binary" timeout 60 scripts/bench-engine --quick)" 
 echo "$output"
 [ "$status" -eq 0 ] || [ "$status" -eq 3 ] || fail "exit status $status (expected 0 or 3)"
 [ $((SECONDS - start)) -le 60 ] || fail "--quick took $((SECONDS - start)) s (more than 60)"
-head -1 <<<"$output" | grep -q -E '^row +\| +N \| +seconds \| B/particle \| target +\| verdict$' ||
+head -1 <<<"$output" |
+    grep -q -E '^row +\| +N \| +seconds \| B/particle \| moves/particle \| ns/move \| target +\| verdict$' ||
     fail "no header line"
-time_row='^[a-z][a-z ,-]+ \| +[0-9]+ \| +[0-9]+\.[0-9]{4} \| +[0-9]+ \| [^|]+ \| (PASS|FAIL|-)$'
-scaling_row='^scaling [a-z-]+ 1000->10000 +\| +- \| +[0-9]+\.[0-9]{2} \| +- \| [^|]+ \| (PASS|FAIL) \(N\^[0-9.]+\)$'
+time_row='^[a-z][a-z ,-]+ \| +[0-9]+ \| +[0-9]+\.[0-9]{4} \| +[0-9]+ \| +[0-9]+\.[0-9] \| +[0-9]+ \| [^|]+ \| (PASS|FAIL|-)$'
+scaling_row='^scaling [a-z-]+ 1000->10000 +\| +- \| +[0-9]+\.[0-9]{2} \| +- \| +- \| +- \| [^|]+ \| (PASS|FAIL) \(N\^[0-9.]+\)$'
 rows=$(grep -c -E "$time_row" <<<"$output" || true)
 [ "$rows" -eq 9 ] || fail "$rows time rows, expected 9"
 rows=$(grep -c -E "$scaling_row" <<<"$output" || true)
 [ "$rows" -eq 4 ] || fail "$rows scaling rows, expected 4"
 grep -q -E '^loose-random, --fall step +\| +9000 \| .*\| <= 0\.05 s +\| (PASS|FAIL)$' <<<"$output" ||
     fail "no step-fall row with its target"
+# The moves per particle are the pack's: the single column slides furthest, every row moves.
+moves_of() { grep -E "^$1 +\| +$2 \|" <<<"$output" | awk -F'|' '{ print $5 + 0 }'; }
+[ "$(awk -v a="$(moves_of single-column 10000)" -v b="$(moves_of loose-random 10000)" \
+    'BEGIN { print (a > b && b > 0) }')" = 1 ] ||
+    fail "moves per particle: single column $(moves_of single-column 10000), loose random $(moves_of loose-random 10000)"
+# ns/move is the row's seconds over its moves (to the rounding of the printed columns, 2 %).
+grep -E "$time_row" <<<"$output" | awk -F'|' '{
+        expected = $3 * 1e9 / ($5 * $2); printed = $6 + 0
+        if (printed < 0.98 * expected - 1 || printed > 1.02 * expected + 1) {
+            print "bench_engine_format: ns/move " printed ", seconds over moves " expected ": " $0
+            bad = 1 } }
+    END { exit bad }' >&2 || fail "ns/move is not the seconds over the moves"
 [ "$(wc -l <<<"$output")" -eq 15 ] || fail "expected 15 lines"
 # A missed target is reported as status 3, never hidden.
 if grep -q -E '\| FAIL' <<<"$output"; then

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <stdexcept>
 
@@ -53,10 +54,16 @@ void SettledGrid::insert(const Sphere& sphere) {
         while (static_cast<int>(layer_blocks_.size()) <= l) {
             static_assert(sizeof(Count) % alignof(Sphere) == 0);
             Layer layer;
+            // The sphere slots start on a cache line, so that a cell's kInline · 32 = 64 bytes
+            // are one line, not two.
+            constexpr std::size_t kLine = 64;
+            const std::size_t counts_bytes = (cells * sizeof(Count) + kLine - 1) / kLine * kLine;
             layer.memory = std::make_unique_for_overwrite<std::byte[]>(
-                cells * (sizeof(Count) + kInline * sizeof(Sphere)));
-            layer.counts = reinterpret_cast<Count*>(layer.memory.get());
-            layer.spheres = reinterpret_cast<Sphere*>(layer.memory.get() + cells * sizeof(Count));
+                kLine + counts_bytes + cells * kInline * sizeof(Sphere));
+            std::byte* base = layer.memory.get();
+            base += (kLine - reinterpret_cast<std::uintptr_t>(base) % kLine) % kLine;
+            layer.counts = reinterpret_cast<Count*>(base);
+            layer.spheres = reinterpret_cast<Sphere*>(base + counts_bytes);
             layer_blocks_.push_back(std::move(layer));
         }
         // New layers, and layers reached again after a reset, are cleared when first reached.

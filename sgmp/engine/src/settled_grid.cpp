@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <memory>
 #include <stdexcept>
 
@@ -54,14 +53,16 @@ void SettledGrid::insert(const Sphere& sphere) {
         while (static_cast<int>(layer_blocks_.size()) <= l) {
             static_assert(sizeof(Count) % alignof(Sphere) == 0);
             Layer layer;
-            // The sphere slots start on a cache line, so that a cell's kInline · 32 = 64 bytes
-            // are one line, not two.
+            // The sphere slots start on a cache line, so that a cell's slots are one line,
+            // not two.
             constexpr std::size_t kLine = 64;
+            static_assert(kInline * sizeof(Sphere) == kLine);
             const std::size_t counts_bytes = (cells * sizeof(Count) + kLine - 1) / kLine * kLine;
-            layer.memory = std::make_unique_for_overwrite<std::byte[]>(
-                kLine + counts_bytes + cells * kInline * sizeof(Sphere));
-            std::byte* base = layer.memory.get();
-            base += (kLine - reinterpret_cast<std::uintptr_t>(base) % kLine) % kLine;
+            const std::size_t bytes = counts_bytes + cells * kLine;
+            std::size_t space = kLine + bytes;
+            layer.memory = std::make_unique_for_overwrite<std::byte[]>(space);
+            void* start = layer.memory.get();
+            std::byte* base = static_cast<std::byte*>(std::align(kLine, bytes, start, space));
             layer.counts = reinterpret_cast<Count*>(base);
             layer.spheres = reinterpret_cast<Sphere*>(base + counts_bytes);
             layer_blocks_.push_back(std::move(layer));

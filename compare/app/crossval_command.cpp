@@ -86,14 +86,12 @@ int run_crossval(CrossvalOptions& o, const std::string& command) {
     for (std::size_t g = 0; g < plan.labels.size(); ++g) {
         groups.push_back(measure_group(plan.labels[g], plan.paths[g], o.common));
     }
-    std::vector<std::string> limit_notes;
+    Report report;
     try {
-        limit_notes = add_hard_sphere_limits(groups, plan);
+        report = build_report(std::move(groups), plan.plan);
     } catch (const std::invalid_argument& error) {
         throw InputError(o.manifest, 0, error.what());
     }
-    Report report = build_report(std::move(groups), plan.plan);
-    report.notes.insert(report.notes.end(), limit_notes.begin(), limit_notes.end());
     const CrossValidation cv = cross_validate(report, manifest, thesis);
 
     nlohmann::ordered_json provenance{

@@ -39,9 +39,11 @@ MetricRow metric(const std::string& name, double candidate, double reference, do
     row.difference = candidate - reference;
     row.seed_spread = tolerance;
     row.tolerance = tolerance;
-    row.tolerance_rule = "seed";
+    row.tolerance_rule = "margin";
+    row.margin = tolerance;
     row.ratio = std::abs(row.difference) / tolerance;
     row.verdict = *row.ratio <= 1.0 ? Verdict::Agree : Verdict::Differ;
+    row.p_differ = row.verdict == Verdict::Differ ? 1e-4 : 0.9;  // a clear difference
     return row;
 }
 
@@ -114,17 +116,17 @@ BOOST_AUTO_TEST_CASE(groups_are_planned_every_candidate_against_every_reference)
     BOOST_TEST(plan.labels.size() == 4u);
     BOOST_TEST(plan.plan.comparisons.size() == 4u);
     BOOST_TEST(plan.plan.class_sets.front().size() == 2u);
-    BOOST_TEST(plan.plan.variants.empty());
     BOOST_TEST(plan.paths[0].size() == 2u);
-    // A variant set belongs to the reference group it names, and is compared with nothing.
+    // A variant set is a reference class of its own (another protocol of the group it
+    // names), compared with every candidate and in the class set; never a tolerance.
     std::istringstream with_variant(kManifestHeader +
                                     "candidate,a,150,1,,p1\nreference,R,150,1,,p2\n"
                                     "variant,R,150,1,,p3\n");
     const GroupPlan v = plan_groups(read_manifest(with_variant, "m"));
     BOOST_TEST(v.labels.size() == 3u);
     BOOST_TEST(v.labels[2] == "R (variant)");
-    BOOST_TEST(v.plan.comparisons.size() == 1u);
-    BOOST_TEST(v.plan.variants.at(1) == 2u);
+    BOOST_TEST(v.plan.comparisons.size() == 2u);
+    BOOST_TEST((v.plan.class_sets.front() == std::vector<std::size_t>{1, 2}));
     std::istringstream orphan(kManifestHeader +
                               "candidate,a,150,1,,p1\nreference,R,150,1,,p2\n"
                               "variant,S,150,1,,p3\n");
@@ -159,8 +161,10 @@ BOOST_AUTO_TEST_CASE(headline_carries_verdicts_and_the_thesis_beside_us) {
     const std::string md = render_crossval_markdown(cv);
     // The stand-in lines, the verdict matrix (one mark per count), the headline and the
     // thesis table.
-    BOOST_TEST(md.find("- **DEM mu=0.5**: no mode stands in; closest **single-column** (2 agree, "
-                       "17 differ, 0 inconclusive") != std::string::npos);
+    BOOST_TEST(md.find("- **DEM mu=0.5**:\n  - **single-column** differs on ") != std::string::npos,
+               md);
+    BOOST_TEST(md.find("(17 of 19 tests differ family-wise); stands in at 0 of 1 counts") !=
+               std::string::npos);
     BOOST_TEST(md.find("| single-column | DEM mu=0.5 | ✓ | ✗ |") != std::string::npos);
     BOOST_TEST(md.find("| 150 | single-column | 0.003 | 0.6000 | 5.00 | 5.00 | 5.000 | ✓✗✗✗✗✓ | "
                        "0.8 | 500× |") != std::string::npos);
@@ -176,13 +180,35 @@ BOOST_AUTO_TEST_CASE(headline_carries_verdicts_and_the_thesis_beside_us) {
                         "differ,") != std::string::npos);
 }
 
+BOOST_AUTO_TEST_CASE(holm_keeps_what_the_step_down_rule_keeps) {
+    // Holm at 5 % over 4 p-values: 0.01 ≤ 0.05/4 kept, 0.02 ≤ 0.05/3 fails: one rejection;
+    // order does not matter.
+    BOOST_TEST((holm_rejected({0.02, 0.01, 0.04, 0.5}, 0.05) == std::vector<std::size_t>{1}));
+    BOOST_TEST(
+        (holm_rejected({0.001, 0.012, 0.02, 0.04}, 0.05) == std::vector<std::size_t>{0, 1, 2, 3}));
+    BOOST_TEST(holm_rejected({}, 0.05).empty());
+    // A single differ that Holm does not keep leaves the pair undecided or standing in,
+    // and is named; a kept one makes it differ.
+    MetricRow agree = metric("phi", 0.60, 0.60, 0.01);
+    MetricRow weak = metric("split_ratio", 0.70, 0.60, 0.03);
+    weak.p_differ = 0.04;  // alone below 5 %, not below 5 %/2
+    StandIn s = stand_in_from({{300, {agree, weak}}});
+    BOOST_TEST(s.differ == 1u);
+    BOOST_TEST(s.differ_familywise == 0u);
+    BOOST_TEST(s.stands_in());  // 1 of 2 agree: half
+    BOOST_TEST(s.worst_metric == metric_rule("split_ratio").label);
+    weak.p_differ = 0.001;
+    s = stand_in_from({{300, {agree, weak}}});
+    BOOST_TEST(to_string(s.decision) == "differs");
+}
+
 BOOST_AUTO_TEST_CASE(baseline_takes_the_strictest_reference_tolerance) {
     const auto entries = baseline_entries(sample_report());
     BOOST_TEST_REQUIRE(entries.size() == 2u * 16u);  // 2 groups × 16 scalar metrics
     BOOST_TEST(entries[0].metric == "phi");
     BOOST_TEST(entries[0].value == 0.60);
     BOOST_TEST(entries[0].tolerance == 0.01);
-    BOOST_TEST(entries[0].tolerance_source == "2 sd of DEM mu=0.01 (3 packs)");
+    BOOST_TEST(entries[0].tolerance_source == "declared margin");
     for (const auto& e : entries) {
         BOOST_TEST(e.metric != "g_r");  // curves are not kept as values
     }

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <cstdlib>
@@ -67,13 +68,18 @@ BOOST_AUTO_TEST_CASE(identical_inputs_agree_everywhere) {
     const Comparison& c = r.comparisons[0];
     BOOST_TEST(c.count == 600u);
     for (const auto& row : c.rows) {
-        const Verdict expected = metric_rule(row.name).judged ? Verdict::Agree : Verdict::Info;
+        // Δ = 0: agree wherever the interval's half-width is below the margin (power), else
+        // inconclusive; never differ.
+        const Verdict expected = !metric_rule(row.name).judged
+                                     ? Verdict::Info
+                                     : (row.power ? Verdict::Agree : Verdict::Inconclusive);
         BOOST_TEST(row.verdict == expected, row.name);
         BOOST_TEST(row.difference == 0.0);
         BOOST_TEST(row.ratio.has_value(), row.name);
     }
-    BOOST_TEST(c.row("g_r").tolerance > 0.0);  // the replicates differ
+    BOOST_TEST(c.row("g_r").seed_spread > 0.0);  // the replicates differ
     BOOST_TEST(c.count_of(Verdict::Differ) == 0u);
+    BOOST_TEST(c.row("phi").verdict == Verdict::Agree);
 }
 
 BOOST_AUTO_TEST_CASE(a_shifted_input_differs) {
@@ -104,49 +110,89 @@ BOOST_AUTO_TEST_CASE(several_groups_and_unmatched_counts) {
     BOOST_CHECK_THROW(build_report(groups, plan_of({{0, 3}})), std::invalid_argument);
 }
 
-BOOST_AUTO_TEST_CASE(classes_that_cannot_be_told_apart_make_verdicts_inconclusive) {
-    // Two classes made of the same packs cannot be told apart by any metric, so agreeing
-    // with either is no evidence: every judged verdict against them is inconclusive. A third
-    // class that differs (spacing 1.12) keeps its power where both others differ from it.
+BOOST_AUTO_TEST_CASE(classes_are_judged_against_each_other_and_change_no_verdict) {
+    // Two classes made of the same packs and a third that differs (spacing 1.12): the class
+    // set adds class-against-class comparisons, and every verdict against a class is what it
+    // is without the set (no power rule rewrites a difference or an agreement).
     std::vector<Group> groups{group("SGMP", 1.05, 2), group("C1", 1.05, 3), group("C2", 1.05, 3),
                               group("C3", 1.12, 3)};
     ReportPlan plan = plan_of({{0, 1}, {0, 3}});
+    const Report plain = build_report(groups, plan);
     plan.class_sets = {{1, 2, 3}};
-    const Report r = build_report(groups, plan);
-    for (const auto& row : r.comparisons[0].rows) {
-        const Verdict expected =
-            metric_rule(row.name).judged ? Verdict::Inconclusive : Verdict::Info;
-        BOOST_TEST(row.verdict == expected,
-                   row.name << ": " << row.candidate_mean << " vs " << row.reference_mean);
-        BOOST_TEST(!row.power, row.name);
+    const Report with = build_report(groups, plan);
+    BOOST_TEST(plain.class_comparisons.empty());
+    BOOST_TEST_REQUIRE(with.class_comparisons.size() == 3u);  // C1–C2, C1–C3, C2–C3 at 600
+    BOOST_TEST(with.class_comparisons[0].candidate == "C1");
+    BOOST_TEST(with.class_comparisons[0].reference == "C2");
+    BOOST_TEST(with.class_comparisons[0].count_of(Verdict::Differ) == 0u);
+    BOOST_TEST(with.class_comparisons[1].row("phi").verdict == Verdict::Differ);
+    for (std::size_t c = 0; c < 2; ++c) {
+        for (std::size_t m = 0; m < plain.comparisons[c].rows.size(); ++m) {
+            BOOST_TEST(plain.comparisons[c].rows[m].verdict == with.comparisons[c].rows[m].verdict,
+                       plain.comparisons[c].rows[m].name);
+        }
     }
-    const Comparison& against_c3 = r.comparisons[1];
-    BOOST_TEST(against_c3.row("phi").power);
-    BOOST_TEST(against_c3.row("phi").verdict == Verdict::Differ);
+    BOOST_TEST(with.comparisons[1].row("phi").verdict == Verdict::Differ);
 }
 
-BOOST_AUTO_TEST_CASE(the_model_spread_widens_the_tolerance) {
-    // Reference B and its variant V (spacing 1.06 instead of 1.05): their φ offset enters
-    // the tolerance (as 2·M) in quadrature with 2 sd, so a candidate at V's φ agrees.
-    const Group b = group("B", 1.05, 3);
-    const Group v = group("V", 1.06, 3);
-    Group a = v;
-    a.label = "A";
-    ReportPlan plan = plan_of({{0, 1}});
-    const Report without = build_report({a, b, v}, plan);
-    plan.variants[1] = 2;
-    const Report with = build_report({a, b, v}, plan);
-    const MetricRow& plain = without.comparisons[0].row("phi");
-    const MetricRow& wide = with.comparisons[0].row("phi");
-    BOOST_TEST(plain.model_spread == 0.0);
-    // One variant count: M = |offset|, entering at 2·M beside 2 sd.
-    BOOST_TEST(wide.model_spread == 2.0 * std::abs(plain.difference),
-               boost::test_tools::tolerance(1e-12));
-    BOOST_TEST(
-        wide.tolerance == std::max(0.005, std::hypot(plain.seed_spread, 2.0 * plain.difference)),
-        boost::test_tools::tolerance(1e-12));
-    BOOST_TEST(wide.verdict == Verdict::Agree);
-    BOOST_TEST(with.comparisons[0].variant_packs == 3u);
+BOOST_AUTO_TEST_CASE(every_row_carries_its_interval_margin_and_mdd) {
+    const Report r = build_report({group("A", 1.05, 2), group("B", 1.05, 3)}, plan_of({{0, 1}}));
+    for (const auto& row : r.comparisons.at(0).rows) {
+        if (row.verdict == Verdict::Info) {
+            continue;
+        }
+        BOOST_TEST(row.margin == metric_rule(row.name).margin, row.name);
+        BOOST_TEST(row.tolerance == row.margin, row.name);
+        BOOST_TEST(row.model_spread == 0.0, row.name);
+        BOOST_TEST(row.ci_low <= row.ci_high, row.name);
+        BOOST_TEST(row.mdd > row.margin, row.name);
+        // The interval holds the estimate (curves: the interval of the true distance).
+        BOOST_TEST((row.ci_low <= row.difference && row.difference <= row.ci_high), row.name);
+        const bool inside = row.ci_low >= -row.margin && row.ci_high <= row.margin;
+        BOOST_TEST((row.verdict == Verdict::Agree) == inside, row.name);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(physically_impossible_values_are_refused) {
+    const Group g = group("A", 1.05, 1);
+    BOOST_CHECK_NO_THROW(check_physical(g.packs[0]));
+    const auto scalar_index = [](const std::string& name) {
+        std::size_t k = 0;
+        for (const auto& rule : metric_rules()) {
+            if (rule.name == name) {
+                return k;
+            }
+            k += rule.kind == MetricKind::Scalar ? 1 : 0;
+        }
+        return k;
+    };
+    PackSummary p = g.packs[0];
+    p.scalars[scalar_index("phi")] = 0.75;  // above Kepler's bound for one size
+    BOOST_CHECK_THROW(check_physical(p), std::invalid_argument);
+    p = g.packs[0];
+    p.scalars[scalar_index("z_mean_tol_1e-3")] = -0.1;
+    BOOST_CHECK_THROW(check_physical(p), std::invalid_argument);
+    p = g.packs[0];
+    p.scalars[scalar_index("overlaps")] = -5.0;
+    BOOST_CHECK_THROW(check_physical(p), std::invalid_argument);
+    p = g.packs[0];
+    p.scalars[scalar_index("phi")] = std::nan("");  // not measured: allowed, not judged
+    BOOST_CHECK_NO_THROW(check_physical(p));
+    p.scalars[scalar_index("phi")] = INFINITY;
+    BOOST_CHECK_THROW(check_physical(p), std::invalid_argument);
+    p = g.packs[0];
+    p.gr[10] = -0.01;
+    BOOST_CHECK_THROW(check_physical(p), std::invalid_argument);
+    p = g.packs[0];
+    BOOST_REQUIRE(!p.p_z.back().empty());
+    *std::max_element(p.p_z.back().begin(), p.p_z.back().end()) -= 0.01;  // sums to 0.99
+    BOOST_CHECK_THROW(check_physical(p), std::invalid_argument);
+    p = g.packs[0];
+    p.p_z[0].push_back(-0.0);
+    BOOST_CHECK_NO_THROW(check_physical(p));
+    Group bad = g;
+    bad.packs[0].scalars[scalar_index("phi")] = 2.864;  // a report from it is refused
+    BOOST_CHECK_THROW(build_report({g, bad}, plan_of({{0, 1}})), std::invalid_argument);
 }
 
 BOOST_AUTO_TEST_CASE(report_directory_with_and_without_gnuplot) {

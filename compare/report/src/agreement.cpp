@@ -6,11 +6,16 @@
 #include <set>
 #include <stdexcept>
 
+#include "sgmp/compare/equivalence.hpp"
 #include "sgmp/compare/group_curves.hpp"
 #include "sgmp/compare/statistics.hpp"
 
 namespace sgmp::compare {
 namespace {
+
+/// A contact metric at δ is judged where the groups' overlap depths differ by at most this
+/// share of δ (the header).
+constexpr double kContactShiftShare = 0.5;
 
 std::vector<const PackSummary*> packs_of(const Group& g, std::size_t count) {
     std::vector<const PackSummary*> result;
@@ -110,86 +115,101 @@ std::vector<double> scalar_column(const MetricRule& rule,
     return values;
 }
 
-void decide(MetricRow& row, const MetricRule& rule) {
-    if (!rule.judged) {
-        row.verdict = Verdict::Info;
-    } else if (!row.ratio) {
-        row.verdict = Verdict::Inconclusive;
-    } else {
-        row.verdict = *row.ratio <= 1.0 ? Verdict::Agree : Verdict::Differ;
+/// The group's overlap depth: the mean over its packs of the mean pair overlap over d, the
+/// typical compression of a contact (NaN when a pack lacks it).
+double overlap_depth(const std::vector<const PackSummary*>& packs) {
+    double sum = 0.0;
+    for (const auto* p : packs) {
+        sum += p->scalar("overlap_mean_over_d");
+    }
+    return packs.empty() ? 0.0 : sum / static_cast<double>(packs.size());
+}
+
+/// Copies the test's numbers into the row and sets its verdict.
+void take(MetricRow& row, const EquivalenceResult& r, double half_width) {
+    row.margin = r.margin;
+    row.tolerance = r.margin;
+    row.tolerance_rule = "margin";
+    row.ci_low = r.ci_low;
+    row.ci_high = r.ci_high;
+    row.mdd = r.mdd;
+    row.p_agree = r.p_agree;
+    row.p_differ = r.p_differ;
+    row.seeds_to_decide = r.seeds_to_decide;
+    row.power = half_width < r.margin;
+    if (r.margin > 0.0) {
+        row.ratio = std::abs(r.estimate) / r.margin;
+    }
+    switch (r.decision) {
+        case Decision::Agree:
+            row.verdict = Verdict::Agree;
+            break;
+        case Decision::Differ:
+            row.verdict = Verdict::Differ;
+            break;
+        case Decision::Inconclusive:
+            row.verdict = Verdict::Inconclusive;
+            break;
     }
 }
 
 MetricRow judge_scalar(const MetricRule& rule, const std::vector<const PackSummary*>& a,
-                       const std::vector<const PackSummary*>& b, double model) {
+                       const std::vector<const PackSummary*>& b) {
     MetricRow row;
-    const auto av = scalar_column(rule, a);
-    const auto bv = scalar_column(rule, b);
-    row.candidate_mean = mean(av);
-    row.candidate_sd = sample_sd(av);
-    row.reference_mean = mean(bv);
-    row.reference_sd = sample_sd(bv);
-    row.difference = row.candidate_mean - row.reference_mean;
-    row.seed_spread = b.size() >= 2 ? 2.0 * row.reference_sd : 0.0;
-    // M is a standard deviation of the model, as sd_ref is of the seeds: both enter at 2σ.
-    row.model_spread = 2.0 * model;
-    const double spread = std::hypot(row.seed_spread, row.model_spread);
-    row.tolerance = std::max(spread, rule.floor);
-    row.tolerance_rule = spread < rule.floor ? "floor" : (model > 0.0 ? "seed+model" : "seed");
-    if (row.tolerance > 0.0) {
-        row.ratio = std::abs(row.difference) / row.tolerance;
-    } else {
-        row.ratio = row.difference == 0.0 ? 0.0 : 1e300;
-    }
+    const ScalarSample sa = sample_of(scalar_column(rule, a));
+    const ScalarSample sb = sample_of(scalar_column(rule, b));
+    row.candidate_mean = sa.mean;
+    row.candidate_sd = sa.sd;
+    row.reference_mean = sb.mean;
+    row.reference_sd = sb.sd;
+    row.difference = sa.mean - sb.mean;
+    row.seed_spread = b.size() >= 2 ? 2.0 * sb.sd : 0.0;
+    const EquivalenceResult r = test_scalar(sa, sb, rule.margin);
+    take(row, r, 0.5 * (r.ci_high - r.ci_low));
     return row;
+}
+
+/// The curves of `packs` on the judged bins (g(r): r in [1.1·d, 5·d]), padded to one length.
+std::vector<std::vector<double>> judged_bins(const MetricRule& rule,
+                                             const std::vector<const PackSummary*>& packs) {
+    std::vector<std::vector<double>> curves;
+    for (const auto* p : packs) {
+        const auto values = curve_values(rule, *p);
+        if (rule.name != "g_r") {
+            curves.push_back(values);
+            continue;
+        }
+        std::vector<double> kept;
+        for (std::size_t k = 0; k < values.size(); ++k) {
+            if (p->gr_r[k] >= kGrCompareFrom && p->gr_r[k] <= kGrCompareTo) {
+                kept.push_back(values[k]);
+            }
+        }
+        curves.push_back(kept);
+    }
+    return curves;
 }
 
 MetricRow judge_curve(const MetricRule& rule, const std::vector<const PackSummary*>& a,
-                      const std::vector<const PackSummary*>& b, double model_relative) {
+                      const std::vector<const PackSummary*>& b) {
     MetricRow row;
     row.difference = distance_between(rule, *b.front(), mean_values(rule, a), mean_values(rule, b));
-    row.tolerance_rule = model_relative > 0.0 ? "seed+model" : "seed";
-    if (b.size() >= 2) {
-        row.seed_spread = mean_replicate_distance(rule, b);
-        row.model_spread = model_relative * row.seed_spread;
-        row.tolerance = std::hypot(row.seed_spread, row.model_spread);
-        if (row.tolerance > 0.0) {
-            row.ratio = row.difference / row.tolerance;
-        }
+    row.seed_spread = b.size() >= 2 ? mean_replicate_distance(rule, b) : 0.0;
+    if (b.size() < 2) {  // no reference scatter: the noise is unknown
+        take(row, test_scalar({row.difference, 0.0, 1}, {0.0, 0.0, 1}, rule.margin), 1e300);
+        row.ci_low = 0.0;
+        return row;
     }
+    const bool l2 = rule.name == "g_r";
+    const EquivalenceResult r = test_curve(
+        row.difference, noise_variance(judged_bins(rule, a), judged_bins(rule, b)),
+        l2 ? b.front()->gr_bin_width : 1.0, l2 ? CurveNorm::L2 : CurveNorm::TotalVariation,
+        rule.margin, std::min(a.size(), b.size()));
+    take(row, r, r.ci_high - row.difference);
     return row;
 }
 
-/// Model spread of every metric for a reference group and its variant (see the header).
-std::vector<double> model_spreads(const Group& reference, const Group& variant) {
-    const auto& rules = metric_rules();
-    std::vector<double> sum(rules.size(), 0.0);
-    std::size_t counts = 0;
-    const auto variant_counts = counts_of(variant);
-    for (const std::size_t n : counts_of(reference)) {
-        if (variant_counts.count(n) == 0) {
-            continue;
-        }
-        const auto r = packs_of(reference, n);
-        const auto v = packs_of(variant, n);
-        ++counts;
-        for (std::size_t m = 0; m < rules.size(); ++m) {
-            const MetricRow row = judge(rules[m], v, r, 0.0);
-            const double offset =
-                rules[m].kind == MetricKind::Scalar
-                    ? row.difference
-                    : (row.seed_spread > 0.0 ? row.difference / row.seed_spread : 0.0);
-            sum[m] += offset * offset;
-        }
-    }
-    for (auto& s : sum) {
-        s = counts > 0 ? std::sqrt(s / static_cast<double>(counts)) : 0.0;
-    }
-    return sum;
-}
-
-Comparison compare_at(const Group& candidate, const Group& reference, const Group* variant,
-                      const std::vector<double>& model, std::size_t count) {
+Comparison compare_at(const Group& candidate, const Group& reference, std::size_t count) {
     const auto a = packs_of(candidate, count);
     const auto b = packs_of(reference, count);
     auto all = a;
@@ -202,70 +222,32 @@ Comparison compare_at(const Group& candidate, const Group& reference, const Grou
     c.count = count;
     c.candidate_packs = a.size();
     c.reference_packs = b.size();
-    c.variant_packs = variant != nullptr ? packs_of(*variant, count).size() : 0;
-    const auto& rules = metric_rules();
-    for (std::size_t m = 0; m < rules.size(); ++m) {
-        c.rows.push_back(judge(rules[m], a, b, model.empty() ? 0.0 : model[m]));
+    for (const auto& rule : metric_rules()) {
+        c.rows.push_back(judge(rule, a, b));
     }
     c.candidate_curves = curves_of(a);
     c.reference_curves = curves_of(b);
     return c;
 }
 
-/// Per metric, whether every other class at `count` differs from class `self` by the rule
-/// with `self` as reference (the power of the metric there; see the header).
-std::vector<bool> power_of(const Report& report, const std::vector<std::size_t>& classes,
-                           std::size_t self, std::size_t count, const std::vector<double>& model) {
-    const auto& rules = metric_rules();
-    const auto reference = packs_of(report.groups[self], count);
-    std::vector<bool> told_apart(rules.size(), true);
-    for (const std::size_t other : classes) {
-        const auto others = packs_of(report.groups[other], count);
-        if (other == self || others.empty()) {
-            continue;
-        }
-        for (std::size_t m = 0; m < rules.size(); ++m) {
-            const MetricRow row =
-                judge(rules[m], others, reference, model.empty() ? 0.0 : model[m]);
-            told_apart[m] = told_apart[m] && row.verdict == Verdict::Differ;
-        }
-    }
-    return told_apart;
-}
-
-/// Marks rows inconclusive where the reference classes cannot be told apart (see header).
-/// The class-against-class judgements are made once per (class, count), not per candidate.
-void apply_power(Report& report, const std::vector<std::vector<double>>& model_by_group) {
-    std::map<std::pair<std::size_t, std::size_t>, std::vector<bool>> power;
-    for (auto& c : report.comparisons) {
-        const std::vector<std::size_t>* classes = nullptr;
-        std::size_t self = 0;
-        for (const auto& set : report.plan.class_sets) {
-            for (const std::size_t g : set) {
-                if (report.groups[g].label == c.reference && set.size() >= 2) {
-                    classes = &set;
-                    self = g;
+/// Every pair of every class set, class against class, at every common count.
+std::vector<Comparison> class_comparisons(const Report& report) {
+    std::vector<Comparison> result;
+    for (const auto& set : report.plan.class_sets) {
+        for (std::size_t i = 0; i < set.size(); ++i) {
+            for (std::size_t j = i + 1; j < set.size(); ++j) {
+                const Group& a = report.groups.at(set[i]);
+                const Group& b = report.groups.at(set[j]);
+                const auto b_counts = counts_of(b);
+                for (const std::size_t n : counts_of(a)) {
+                    if (b_counts.count(n) != 0) {
+                        result.push_back(compare_at(a, b, n));
+                    }
                 }
             }
         }
-        if (classes == nullptr) {
-            continue;
-        }
-        const auto key = std::pair{self, c.count};
-        auto found = power.find(key);
-        if (found == power.end()) {
-            found =
-                power.emplace(key, power_of(report, *classes, self, c.count, model_by_group[self]))
-                    .first;
-        }
-        for (std::size_t m = 0; m < c.rows.size(); ++m) {
-            MetricRow& row = c.rows[m];
-            row.power = found->second[m];
-            if (!row.power && row.verdict != Verdict::Info) {
-                row.verdict = Verdict::Inconclusive;
-            }
-        }
     }
+    return result;
 }
 
 }  // namespace
@@ -286,27 +268,55 @@ std::string_view to_string(Verdict verdict) {
 
 const std::vector<MetricRule>& metric_rules() {
     using K = MetricKind;
+    // Margins: compare/README.md "Margins" says why each is what it is. The last field is
+    // the gap tolerance δ/d of a contact metric.
     static const std::vector<MetricRule> rules{
-        {"phi", "φ (control volume)", "ratio", K::Scalar, 0.005, true, "φ"},
-        {"z_mean_tol_1e-6", "Z(δ = 10⁻⁶)", "contacts/particle", K::Scalar, 0.1, true, "Z 10⁻⁶"},
-        {"z_mean_tol_1e-3", "Z(δ = 10⁻³)", "contacts/particle", K::Scalar, 0.1, true, "Z 10⁻³"},
-        {"z_mean_tol_1e-2", "Z(δ = 10⁻²)", "contacts/particle", K::Scalar, 0.1, true, "Z 10⁻²"},
-        {"z_mean_tol_2e-2", "Z(δ = 2·10⁻²)", "contacts/particle", K::Scalar, 0.1, true, "Z 2·10⁻²"},
-        {"z_mean_tol_5e-2", "Z(δ = 5·10⁻²)", "contacts/particle", K::Scalar, 0.1, true, "Z 5·10⁻²"},
-        {"split_ratio", "split ratio g(√3·d)/g(2·d)", "ratio", K::Scalar, 0.02, true, "split"},
-        {"voronoi_phi_mean", "Voronoi local φ, mean", "ratio", K::Scalar, 0.005, true, "Voronoi φ"},
-        {"voronoi_phi_sd", "Voronoi local φ, sd", "ratio", K::Scalar, 0.002, true, "Voronoi sd"},
-        {"q6_global", "Q6 (global)", "dimensionless", K::Scalar, 0.01, true, "Q6"},
-        {"q6_local_mean", "Q6 (local mean)", "dimensionless", K::Scalar, 0.01, true, "Q6 local"},
-        {"g_r", "g(r), r ≥ 1.1·d", "ratio", K::Curve, 0.0, true, "g(r)"},
-        {"p_z_tol_1e-3", "P(Z) at δ = 10⁻³", "ratio", K::Curve, 0.0, true, "P(Z) 10⁻³"},
-        {"p_z_tol_1e-2", "P(Z) at δ = 10⁻²", "ratio", K::Curve, 0.0, true, "P(Z) 10⁻²"},
+        {"phi", "φ (control volume)", "ratio", K::Scalar, 0.010, true, "φ", {}},
+        {"z_mean_tol_1e-6", "Z(δ = 10⁻⁶)", "contacts/particle", K::Scalar, 0.30, true, "Z 10⁻⁶",
+         1e-6},
+        {"z_mean_tol_1e-3", "Z(δ = 10⁻³)", "contacts/particle", K::Scalar, 0.30, true, "Z 10⁻³",
+         1e-3},
+        {"z_mean_tol_1e-2", "Z(δ = 10⁻²)", "contacts/particle", K::Scalar, 0.30, true, "Z 10⁻²",
+         1e-2},
+        {"z_mean_tol_2e-2", "Z(δ = 2·10⁻²)", "contacts/particle", K::Scalar, 0.30, true, "Z 2·10⁻²",
+         2e-2},
+        {"z_mean_tol_5e-2", "Z(δ = 5·10⁻²)", "contacts/particle", K::Scalar, 0.30, true, "Z 5·10⁻²",
+         5e-2},
+        {"split_ratio", "split ratio g(√3·d)/g(2·d)", "ratio", K::Scalar, 0.03, true, "split", {}},
+        {"voronoi_phi_mean",
+         "Voronoi local φ, mean",
+         "ratio",
+         K::Scalar,
+         0.010,
+         true,
+         "Voronoi φ",
+         {}},
+        {"voronoi_phi_sd",
+         "Voronoi local φ, sd",
+         "ratio",
+         K::Scalar,
+         0.002,
+         true,
+         "Voronoi sd",
+         {}},
+        {"q6_global", "Q6 (global)", "dimensionless", K::Scalar, 0.03, true, "Q6", {}},
+        {"q6_local_mean",
+         "Q6 (local mean)",
+         "dimensionless",
+         K::Scalar,
+         0.0025,
+         true,
+         "Q6 local",
+         {}},
+        {"g_r", "g(r), r ≥ 1.1·d", "ratio", K::Curve, kGrMargin, true, "g(r)", {}},
+        {"p_z_tol_1e-3", "P(Z) at δ = 10⁻³", "ratio", K::Curve, 0.08, true, "P(Z) 10⁻³", 1e-3},
+        {"p_z_tol_1e-2", "P(Z) at δ = 10⁻²", "ratio", K::Curve, 0.08, true, "P(Z) 10⁻²", 1e-2},
         // Information: soft DEM contacts overlap by construction, hard SGMP spheres never.
-        {"z_mean_tol_0", "Z(δ = 0)", "contacts/particle", K::Scalar, 0.1, false, "Z 0"},
-        {"overlaps", "overlapping pairs", "pairs", K::Scalar, 1.0, false, "overlaps"},
-        {"overlap_max_over_d", "deepest overlap", "d", K::Scalar, 1e-3, false, "deepest"},
-        {"overlap_mean_over_d", "mean overlap", "d", K::Scalar, 1e-3, false, "mean overlap"},
-        {"wall_overlaps", "wall overlaps", "particles", K::Scalar, 1.0, false, "wall overlaps"},
+        {"z_mean_tol_0", "Z(δ = 0)", "contacts/particle", K::Scalar, 0.30, false, "Z 0", {}},
+        {"overlaps", "overlapping pairs", "pairs", K::Scalar, 1.0, false, "overlaps", {}},
+        {"overlap_max_over_d", "deepest overlap", "d", K::Scalar, 1e-3, false, "deepest", {}},
+        {"overlap_mean_over_d", "mean overlap", "d", K::Scalar, 1e-3, false, "mean overlap", {}},
+        {"wall_overlaps", "wall overlaps", "particles", K::Scalar, 1.0, false, "wall overlaps", {}},
     };
     return rules;
 }
@@ -362,20 +372,30 @@ static bool all_measured(const MetricRule& rule, const std::vector<const PackSum
 }
 
 MetricRow judge(const MetricRule& rule, const std::vector<const PackSummary*>& candidate,
-                const std::vector<const PackSummary*>& reference, double model_spread) {
+                const std::vector<const PackSummary*>& reference) {
     MetricRow row;
     if (!all_measured(rule, candidate) || !all_measured(rule, reference)) {
-        row.tolerance_rule = "not measured";  // no ratio: inconclusive
+        row.tolerance_rule = "not measured";  // no interval: inconclusive
+        row.margin = row.tolerance = rule.margin;
+        row.power = false;
     } else {
-        row = rule.kind == MetricKind::Scalar
-                  ? judge_scalar(rule, candidate, reference, model_spread)
-                  : judge_curve(rule, candidate, reference, model_spread);
+        row = rule.kind == MetricKind::Scalar ? judge_scalar(rule, candidate, reference)
+                                              : judge_curve(rule, candidate, reference);
     }
     row.name = rule.name;
     row.label = rule.label;
     row.unit = rule.unit;
     row.kind = rule.kind;
-    decide(row, rule);
+    if (!rule.judged) {
+        row.verdict = Verdict::Info;
+    } else if (rule.contact_tolerance) {
+        const double depths =
+            std::abs(overlap_depth(candidate) - overlap_depth(reference));  // NaN: judged
+        if (depths > kContactShiftShare * *rule.contact_tolerance) {
+            row.verdict = Verdict::Info;
+            row.tolerance_rule = "below overlap depth";
+        }
+    }
     return row;
 }
 
@@ -430,6 +450,71 @@ PackSummary summarise(const std::string& source, const Pack& pack, const Measure
     return s;
 }
 
+namespace {
+
+/// Kepler's bound, the densest packing of equal spheres: π/√18.
+constexpr double kKeplerBound = 0.74048;
+
+bool of_several_sizes(const PackSummary& pack) {
+    for (const auto& [key, value] : pack.provenance) {
+        if (key == "size_modes") {
+            return value.find(',') != std::string::npos;
+        }
+    }
+    return false;
+}
+
+[[noreturn]] void impossible(const PackSummary& pack, const std::string& what,
+                             const std::string& rule) {
+    throw std::invalid_argument(pack.source + ": " + what + " is physically impossible (" + rule +
+                                ")");
+}
+
+}  // namespace
+
+void check_physical(const PackSummary& pack) {
+    const auto& names = coordination_tolerance_names();
+    for (const auto& rule : metric_rules()) {
+        if (rule.kind != MetricKind::Scalar) {
+            continue;
+        }
+        const double v = pack.scalar(rule.name);
+        if (std::isnan(v)) {
+            continue;  // not measured (a batch summary row): not judged
+        }
+        const std::string what = rule.name + " = " + std::to_string(v);
+        if (!std::isfinite(v) || v < 0.0) {
+            impossible(pack, what, "must be finite and >= 0");
+        }
+        if (rule.name == "phi" || rule.name == "voronoi_phi_mean") {
+            if (of_several_sizes(pack) ? v >= 1.0 : v > kKeplerBound) {
+                impossible(
+                    pack, what,
+                    of_several_sizes(pack) ? "must be < 1" : "one size packs to at most 0.74048");
+            }
+        }
+    }
+    for (const double g : pack.gr) {
+        if (!(g >= 0.0) || !std::isfinite(g)) {
+            impossible(pack, "g(r) = " + std::to_string(g), "must be finite and >= 0");
+        }
+    }
+    for (std::size_t t = 0; t < pack.p_z.size(); ++t) {
+        double sum = 0.0;
+        for (const double q : pack.p_z[t]) {
+            if (!(q >= 0.0 && q <= 1.0)) {
+                impossible(pack, "P(Z) at " + names.at(t) + " = " + std::to_string(q),
+                           "must lie in [0, 1]");
+            }
+            sum += q;
+        }
+        if (!pack.p_z[t].empty() && std::abs(sum - 1.0) > 1e-6) {
+            impossible(pack, "P(Z) at " + names.at(t) + " sums to " + std::to_string(sum),
+                       "must sum to 1");
+        }
+    }
+}
+
 Report build_report(std::vector<Group> groups, ReportPlan plan) {
     Report report;
     report.groups = std::move(groups);
@@ -440,26 +525,24 @@ Report build_report(std::vector<Group> groups, ReportPlan plan) {
             throw std::invalid_argument("comparison names a group that does not exist");
         }
     }
-    for (const auto& [ri, vi] : report.plan.variants) {
-        if (!valid(ri) || !valid(vi)) {
-            throw std::invalid_argument("variant names a group that does not exist");
+    for (const auto& set : report.plan.class_sets) {
+        if (!std::all_of(set.begin(), set.end(), valid)) {
+            throw std::invalid_argument("a class set names a group that does not exist");
         }
     }
-    std::vector<std::vector<double>> model(report.groups.size());
-    for (const auto& [ri, vi] : report.plan.variants) {
-        model[ri] = model_spreads(report.groups[ri], report.groups[vi]);
+    for (const auto& g : report.groups) {
+        for (const auto& p : g.packs) {
+            check_physical(p);
+        }
     }
     for (const auto& [ci, ri] : report.plan.comparisons) {
         const Group& cand = report.groups[ci];
         const Group& ref = report.groups[ri];
-        const auto variant = report.plan.variants.find(ri);
-        const Group* variant_group =
-            variant == report.plan.variants.end() ? nullptr : &report.groups[variant->second];
         const auto cand_counts = counts_of(cand);
         const auto ref_counts = counts_of(ref);
         for (const std::size_t n : cand_counts) {
             if (ref_counts.count(n) != 0) {
-                report.comparisons.push_back(compare_at(cand, ref, variant_group, model[ri], n));
+                report.comparisons.push_back(compare_at(cand, ref, n));
             } else {
                 report.notes.push_back(cand.label + " has packs of " + std::to_string(n) +
                                        " particles, " + ref.label + " has none: not compared");
@@ -472,7 +555,7 @@ Report build_report(std::vector<Group> groups, ReportPlan plan) {
             }
         }
     }
-    apply_power(report, model);
+    report.class_comparisons = class_comparisons(report);
     return report;
 }
 

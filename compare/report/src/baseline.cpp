@@ -35,11 +35,7 @@ std::vector<BaselineEntry> baseline_entries(const Report& report) {
                 continue;  // curves are judged by distance, not by a value to keep
             }
             const Key key{c.candidate, c.count, row.name};
-            const std::string source =
-                row.tolerance_rule == "floor"
-                    ? "floor"
-                    : "2 sd of " + c.reference + " (" + std::to_string(c.reference_packs) +
-                          " packs)" + (row.model_spread > 0.0 ? " and its model spread" : "");
+            const std::string source = "declared margin";
             auto found = entries.find(key);
             if (found == entries.end()) {
                 order.push_back(key);

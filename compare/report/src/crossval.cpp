@@ -1,7 +1,5 @@
 #include "sgmp/compare/crossval.hpp"
 
-#include "sgmp/compare/hard_sphere_limit.hpp"
-
 #include <algorithm>
 #include <map>
 #include <set>
@@ -63,34 +61,29 @@ std::vector<std::string> labels_of(const std::vector<ManifestEntry>& manifest, R
     return labels;
 }
 
+bool judged(const MetricRow& row) {
+    return row.verdict != Verdict::Info;
+}
+
 StandIn stand_in_of(const CrossValidation& cv, const std::string& candidate, std::size_t r) {
-    StandIn s;
-    s.candidate = candidate;
-    s.reference = cv.references[r];
+    std::vector<std::pair<std::size_t, std::vector<MetricRow>>> rows;
+    std::optional<double> speedup;
+    std::size_t speedup_count = 0;
     for (const auto& row : cv.rows) {
         if (row.group != candidate || row.against[r].rows.empty()) {
             continue;
         }
-        const auto& v = row.against[r];
-        for (const auto& m : v.rows) {
-            if (m.verdict == Verdict::Agree) {
-                ++s.agree;
-            } else if (m.verdict == Verdict::Differ) {
-                ++s.differ;
-                if (m.ratio && *m.ratio > s.worst_ratio) {
-                    s.worst_ratio = *m.ratio;
-                    s.worst_metric = m.label;
-                    s.worst_count = row.count;
-                }
-            } else if (m.verdict == Verdict::Inconclusive) {
-                ++s.inconclusive;
-            }
-        }
-        if (v.speedup && row.count >= s.speedup_count) {
-            s.speedup = v.speedup;
-            s.speedup_count = row.count;
+        rows.emplace_back(row.count, row.against[r].rows);
+        if (row.against[r].speedup && row.count >= speedup_count) {
+            speedup = row.against[r].speedup;
+            speedup_count = row.count;
         }
     }
+    StandIn s = stand_in_from(rows);
+    s.candidate = candidate;
+    s.reference = cv.references[r];
+    s.speedup = speedup;
+    s.speedup_count = speedup_count;
     return s;
 }
 
@@ -104,14 +97,130 @@ std::vector<StandIn> stand_ins(const CrossValidation& cv) {
             per.push_back(stand_in_of(cv, candidate, r));
         }
         std::stable_sort(per.begin(), per.end(), [](const StandIn& a, const StandIn& b) {
-            return a.differ != b.differ ? a.differ < b.differ : a.agree > b.agree;
+            const auto rank = [](const StandIn& x) { return static_cast<int>(x.decision); };
+            if (rank(a) != rank(b)) {  // stands in, differs, undecided
+                return rank(a) < rank(b);
+            }
+            return a.differ_familywise != b.differ_familywise
+                       ? a.differ_familywise < b.differ_familywise
+                       : a.agree > b.agree;
         });
         all.insert(all.end(), per.begin(), per.end());
     }
     return all;
 }
 
+std::vector<ClassPair> class_pairs(const Report& report) {
+    std::map<std::pair<std::string, std::string>,
+             std::vector<std::pair<std::size_t, std::vector<MetricRow>>>>
+        by_pair;
+    std::vector<std::pair<std::string, std::string>> order;
+    for (const auto& c : report.class_comparisons) {
+        const auto key = std::pair{c.candidate, c.reference};
+        if (by_pair.count(key) == 0) {
+            order.push_back(key);
+        }
+        by_pair[key].emplace_back(c.count, c.rows);
+    }
+    std::vector<ClassPair> pairs;
+    for (const auto& key : order) {
+        ClassPair pair{key.first, key.second, stand_in_from(by_pair[key])};
+        pair.record.candidate = key.first;
+        pair.record.reference = key.second;
+        pairs.push_back(pair);
+    }
+    return pairs;
+}
+
 }  // namespace
+
+std::string_view to_string(StandInDecision decision) {
+    switch (decision) {
+        case StandInDecision::StandsIn:
+            return "stands in";
+        case StandInDecision::Differs:
+            return "differs";
+        case StandInDecision::Undecided:
+            return "undecided";
+    }
+    return "undecided";
+}
+
+std::vector<std::size_t> holm_rejected(const std::vector<double>& p, double alpha) {
+    std::vector<std::size_t> order(p.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        order[i] = i;
+    }
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return p[a] < p[b]; });
+    std::vector<std::size_t> rejected;
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        if (!(p[order[i]] <= alpha / static_cast<double>(order.size() - i))) {
+            break;
+        }
+        rejected.push_back(order[i]);
+    }
+    return rejected;
+}
+
+StandIn stand_in_from(
+    const std::vector<std::pair<std::size_t, std::vector<MetricRow>>>& rows_by_count) {
+    StandIn s;
+    std::vector<double> p;
+    std::vector<std::pair<std::size_t, const MetricRow*>> rows;  // (count, row)
+    bool every_count_agrees = true;
+    for (const auto& [count, metric_rows] : rows_by_count) {
+        ++s.counts;
+        std::vector<double> p_here;
+        std::size_t judged_here = 0;
+        std::size_t agree_here = 0;
+        for (const auto& m : metric_rows) {
+            if (!judged(m)) {
+                continue;
+            }
+            ++judged_here;
+            agree_here += m.verdict == Verdict::Agree ? 1 : 0;
+            s.agree += m.verdict == Verdict::Agree ? 1 : 0;
+            s.differ += m.verdict == Verdict::Differ ? 1 : 0;
+            s.inconclusive += m.verdict == Verdict::Inconclusive ? 1 : 0;
+            p.push_back(m.p_differ);
+            p_here.push_back(m.p_differ);
+            rows.emplace_back(count, &m);
+        }
+        const bool enough =
+            judged_here > 0 && static_cast<double>(agree_here) >=
+                                   kStandInAgreeShare * static_cast<double>(judged_here);
+        every_count_agrees = every_count_agrees && enough;
+        if (enough && holm_rejected(p_here, kFamilyAlpha).empty()) {
+            ++s.counts_standing;
+        }
+    }
+    const auto rejected = holm_rejected(p, kFamilyAlpha);
+    s.differ_familywise = rejected.size();
+    const auto consider = [&](std::size_t k) {
+        const auto& [count, m] = rows[k];
+        if (m->ratio && *m->ratio > s.worst_ratio) {
+            s.worst_ratio = *m->ratio;
+            s.worst_metric = m->label;
+            s.worst_count = count;
+        }
+    };
+    if (!rejected.empty()) {
+        for (const std::size_t k : rejected) {
+            consider(k);
+        }
+        s.decision = StandInDecision::Differs;
+    } else {
+        for (std::size_t k = 0; k < rows.size(); ++k) {
+            if (rows[k].second->verdict == Verdict::Differ) {
+                consider(k);
+            }
+        }
+        s.decision = every_count_agrees && s.counts > 0 ? StandInDecision::StandsIn
+                                                        : StandInDecision::Undecided;
+    }
+    return s;
+}
 
 const std::vector<std::string>& headline_metrics() {
     static const std::vector<std::string> names{"phi",         "z_mean_tol_1e-3", "z_mean_tol_1e-2",
@@ -143,8 +252,7 @@ GroupPlan plan_groups(const std::vector<ManifestEntry>& manifest) {
     std::map<std::string, Role> role_of;
     std::vector<std::size_t> candidates;
     std::vector<std::size_t> references;
-    std::map<std::string, std::size_t> variant_of;
-    std::vector<std::pair<std::string, std::size_t>> stiff_of;  // in manifest order
+    std::vector<std::pair<std::string, Role>> sets_of_references;  // to check their names
     const auto is_set_of_a_reference = [](Role role) {
         return role == Role::Variant || role == Role::Stiff;
     };
@@ -163,35 +271,23 @@ GroupPlan plan_groups(const std::vector<ManifestEntry>& manifest) {
                                         ? entry.group + " (" + to_string(entry.role) + ")"
                                         : entry.group);
             result.paths.emplace_back();
-            if (entry.role == Role::Variant) {
-                variant_of[entry.group] = it->second;
-            } else if (entry.role == Role::Stiff) {
-                stiff_of.emplace_back(entry.group, it->second);
-            } else {
-                (entry.role == Role::Candidate ? candidates : references).push_back(it->second);
+            if (is_set_of_a_reference(entry.role)) {
+                sets_of_references.emplace_back(entry.group, entry.role);
             }
+            (entry.role == Role::Candidate ? candidates : references).push_back(it->second);
         }
         result.paths[it->second].push_back(entry.path);
     }
-    if (candidates.empty() || references.empty()) {
-        throw std::invalid_argument(
-            "the manifest needs at least one candidate and one reference group");
-    }
-    const auto reference_named = [&](const std::string& group, Role role) {
+    for (const auto& [group, role] : sets_of_references) {
         const auto ref = role_of.find(group);
         if (ref == role_of.end() || ref->second != Role::Reference) {
             throw std::invalid_argument(std::string(to_string(role)) + " group '" + group +
                                         "' names no reference group of the manifest");
         }
-        return index.at({group, Role::Reference});
-    };
-    for (const auto& [group, v] : variant_of) {
-        result.plan.variants[reference_named(group, Role::Variant)] = v;
     }
-    for (const auto& [group, s] : stiff_of) {
-        const std::size_t r = reference_named(group, Role::Stiff);
-        result.plan.variants.emplace(r, s);  // a variant set, where there is one, comes first
-        result.stiff.emplace_back(r, s);
+    if (candidates.empty() || references.empty()) {
+        throw std::invalid_argument(
+            "the manifest needs at least one candidate and one reference group");
     }
     for (const auto c : candidates) {
         for (const auto r : references) {
@@ -203,47 +299,16 @@ GroupPlan plan_groups(const std::vector<ManifestEntry>& manifest) {
     return result;
 }
 
-std::vector<std::string> add_hard_sphere_limits(std::vector<Group>& groups, GroupPlan& plan) {
-    std::vector<std::string> notes;
-    std::vector<std::size_t> limits;
-    for (const auto& [r, s] : plan.stiff) {
-        const std::string label = hard_sphere_limit_label(groups.at(r).label);
-        Group limit = hard_sphere_limit(groups.at(r), groups.at(s), label, notes);
-        if (limit.packs.empty()) {
-            continue;
-        }
-        const std::size_t l = groups.size();
-        groups.push_back(std::move(limit));
-        plan.labels.push_back(label);
-        plan.paths.emplace_back();
-        plan.plan.variants[l] = s;
-        plan.plan.derived_from[l] = r;
-        for (const auto c : plan.candidates) {
-            plan.plan.comparisons.emplace_back(c, l);
-        }
-        limits.push_back(l);
-    }
-    if (!limits.empty()) {
-        plan.plan.class_sets.push_back(limits);
-    }
-    return notes;
-}
-
 CrossValidation cross_validate(const Report& report, const std::vector<ManifestEntry>& manifest,
                                const ThesisTables& thesis) {
     CrossValidation cv;
     cv.candidates = labels_of(manifest, Role::Candidate);
     cv.references = labels_of(manifest, Role::Reference);
-    std::map<std::string, std::string> runtime_label;  // a derived reference → its pours' group
     for (const auto& [ci, ri] : report.plan.comparisons) {
         const std::string& label = report.groups.at(ri).label;
         if (std::find(cv.references.begin(), cv.references.end(), label) == cv.references.end()) {
             cv.references.push_back(label);
         }
-        const auto source = report.plan.derived_from.find(ri);
-        runtime_label[label] = source == report.plan.derived_from.end()
-                                   ? label
-                                   : report.groups.at(source->second).label;
     }
     std::map<std::pair<std::string, std::size_t>, HeadlineRow> rows;
     std::set<std::size_t> counts;
@@ -262,10 +327,7 @@ CrossValidation cross_validate(const Report& report, const std::vector<ManifestE
         auto& v = row.against[static_cast<std::size_t>(slot - cv.references.begin())];
         v.reference = c.reference;
         v.rows = c.rows;
-        const auto source = runtime_label.find(c.reference);
-        v.reference_seconds =
-            mean_seconds(manifest, source == runtime_label.end() ? c.reference : source->second,
-                         Role::Reference, c.count);
+        v.reference_seconds = mean_seconds(manifest, c.reference, Role::Reference, c.count);
     }
     cv.counts.assign(counts.begin(), counts.end());
     for (const auto& group : report.groups) {
@@ -295,6 +357,7 @@ CrossValidation cross_validate(const Report& report, const std::vector<ManifestE
         }
     }
     cv.stand_ins = stand_ins(cv);
+    cv.class_pairs = class_pairs(report);
     return cv;
 }
 

@@ -1,6 +1,7 @@
 #include "sgmp/compare/crossval_render.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -60,20 +61,35 @@ std::string count_list(const std::vector<std::size_t>& counts) {
     return text;
 }
 
+/// One line of a stand-in record: the answer and its strength.
+std::string stand_in_sentence(const StandIn& s) {
+    const std::size_t judged = s.agree + s.differ + s.inconclusive;
+    std::ostringstream out;
+    if (s.decision == StandInDecision::Differs) {
+        out << "differs on " << s.worst_metric << " at N = " << s.worst_count << " by "
+            << sig(s.worst_ratio) << "× its margin (" << s.differ_familywise << " of " << judged
+            << " tests differ family-wise)";
+    } else {
+        out << to_string(s.decision) << ": agrees on " << s.agree << " of " << judged
+            << " metric × count tests within the declared margins, none differs family-wise";
+        if (s.differ > 0) {
+            out << " (" << s.differ << " single-test difference" << (s.differ > 1 ? "s" : "")
+                << ", largest " << s.worst_metric << " at N = " << s.worst_count << ", "
+                << sig(s.worst_ratio) << "× its margin)";
+        }
+    }
+    out << "; stands in at " << s.counts_standing << " of " << s.counts << " counts";
+    return out.str();
+}
+
 void stand_in_markdown(std::ostringstream& md, const CrossValidation& cv) {
     md << "## Which SGMP mode stands in for which DEM class\n\n";
-    md << "A mode stands in for a class when no judged metric differs at any count "
-          "(verdicts counted over every count and judged metric; speed: the DEM pour's mean "
-          "wall time over the mode's at the largest count).";
-    if (std::any_of(cv.references.begin(), cv.references.end(), [](const std::string& r) {
-            return class_of_hard_sphere_limit(r).has_value();
-        })) {
-        md << " A class's *hard-sphere limit* is its pours extrapolated to infinitely stiff "
-              "contacts from the same pours settled again at stiffer contacts (rules at the "
-              "end of the page): SGMP packs are hard spheres, while a pour's compressed Hertz "
-              "contacts count as contacts.";
-    }
-    md << "\n\n";
+    md << "Every verdict is an equivalence test on a declared margin (rules at the end of the "
+          "page). A mode *stands in* for a class when no test differs under Holm's procedure "
+          "over every judged metric and count (family-wise error ≤ 5 %) and at every count at "
+          "least half the judged metrics agree; it *differs* when Holm keeps a difference; "
+          "otherwise it is *undecided*. Speed: the DEM pour's mean wall time over the mode's "
+          "at the largest count.\n\n";
     for (std::size_t r = 0; r < cv.references.size(); ++r) {
         std::vector<const StandIn*> per;
         for (const auto& s : cv.stand_ins) {
@@ -84,39 +100,36 @@ void stand_in_markdown(std::ostringstream& md, const CrossValidation& cv) {
         if (per.empty()) {
             continue;
         }
-        const StandIn& best = *per.front();
-        md << "- **" << cv.references[r] << "**: ";
-        md << (best.stands_in() ? "**" + best.candidate + "** stands in"
-                                : "no mode stands in; closest **" + best.candidate + "**");
-        md << " (" << best.agree << " agree, " << best.differ << " differ, " << best.inconclusive
-           << " inconclusive";
-        if (best.differ > 0) {
-            md << "; worst: " << best.worst_metric << " at N = " << best.worst_count << ", ratio "
-               << sig(best.worst_ratio);
-        }
-        if (best.speedup_count > 0) {
-            md << "; " << speed(best.speedup)
-               << " faster than the DEM pour at N = " << best.speedup_count << ").";
-        } else {
-            md << "; speed not compared: the inputs record no wall times).";
-        }
-        if (per.size() > 1) {
-            md << " Others:";
-            for (std::size_t i = 1; i < per.size(); ++i) {
-                md << (i == 1 ? " " : "; ") << per[i]->candidate << " " << per[i]->agree << "/"
-                   << per[i]->differ << "/" << per[i]->inconclusive;
+        md << "- **" << cv.references[r] << "**:";
+        for (const StandIn* s : per) {
+            md << "\n  - **" << s->candidate << "** " << stand_in_sentence(*s);
+            if (s->speedup_count > 0) {
+                md << "; " << speed(s->speedup)
+                   << " faster than the DEM pour at N = " << s->speedup_count;
             }
-            md << " (agree/differ/inconclusive).";
+            md << ".";
         }
         md << "\n";
+    }
+    if (!cv.class_pairs.empty()) {
+        md << "\n### The DEM classes against each other\n\n";
+        md << "Each pair of classes judged by the same rule, the first as candidate. Classes "
+              "that stand in for each other are one family: their physics is not told apart "
+              "at these margins.\n\n";
+        for (const auto& pair : cv.class_pairs) {
+            md << "- **" << pair.a << "** against **" << pair.b
+               << "**: " << (pair.one_family() ? "one family; " : "")
+               << stand_in_sentence(pair.record) << ".\n";
+        }
     }
 }
 
 void matrix_markdown(std::ostringstream& md, const CrossValidation& cv) {
     md << "\n## Verdict matrix\n\n";
     md << "One mark per particle count, N = " << count_list(cv.counts)
-       << " in order: ✓ agree, ✗ differ, ◌ inconclusive (the DEM classes themselves cannot be "
-          "told apart there), · not compared. Columns: φ of the control volume; Z at gap "
+       << " in order: ✓ agree, ✗ differ, ◌ inconclusive (the interval straddles the margin), "
+          "· not compared or information only (a contact metric below the overlap depth). "
+          "Columns: φ of the control volume; Z at gap "
           "tolerance δ; the split ratio g(√3·d)/g(2·d); the Voronoi local φ, mean and sd; Q6 "
           "global and local; g(r) beyond contact; P(Z) at δ. Rules at the end of the page.\n\n";
     md << "| SGMP mode | DEM class |";
@@ -147,8 +160,8 @@ void headline_markdown(std::ostringstream& md, const CrossValidation& cv) {
     md << "\n## Headline\n\n";
     md << "SGMP means over seeds; against each DEM class the marks of φ, Z(δ = 10⁻³), "
           "Z(δ = 10⁻²), split ratio, P(Z) at δ = 10⁻³ and g(r) (in that order), the g(r) "
-          "ratio (distance over the DEM scale; ≤ 1 agrees) and the speed-up over the DEM "
-          "pour. Seconds: mean wall time per SGMP pack.\n\n";
+          "ratio (distance over its margin) and the speed-up over the DEM pour. Seconds: mean wall "
+          "time per SGMP pack.\n\n";
     md << "| N | SGMP mode | s | φ | Z(10⁻³) | Z(10⁻²) | split |";
     for (const auto& ref : cv.references) {
         md << " " << ref << ": marks | g(r) ratio | speed-up |";
@@ -216,6 +229,21 @@ Json optional_json(const std::optional<double>& v) {
     return v ? Json(*v) : Json();
 }
 
+Json class_pairs_json(const CrossValidation& cv) {
+    Json pairs = Json::array();
+    for (const auto& p : cv.class_pairs) {
+        pairs.push_back({{"a", p.a},
+                         {"b", p.b},
+                         {"one_family", p.one_family()},
+                         {"decision", to_string(p.record.decision)},
+                         {"agree", p.record.agree},
+                         {"differ", p.record.differ},
+                         {"differ_familywise", p.record.differ_familywise},
+                         {"inconclusive", p.record.inconclusive}});
+    }
+    return pairs;
+}
+
 }  // namespace
 
 std::string_view verdict_mark(Verdict verdict) {
@@ -280,7 +308,8 @@ std::string render_crossval_markdown(const CrossValidation& cv) {
 std::string render_headline_csv(const CrossValidation& cv, const std::string& command) {
     std::ostringstream csv;
     csv << "count,candidate,reference,metric,candidate_mean,candidate_sd,reference_mean,"
-           "reference_sd,tolerance,ratio,verdict,candidate_seconds,reference_seconds,"
+           "reference_sd,tolerance,ratio,verdict,margin,ci_low,ci_high,mdd,candidate_seconds,"
+           "reference_seconds,"
            "speedup_vs_reference,thesis_seconds,thesis_phi,speedup_vs_thesis,diameter,"
            "start_height,thesis_start_height\n";
     write_csv_preamble(csv, "sgmp-compare crossval", command, rule_statements());
@@ -298,7 +327,9 @@ std::string render_headline_csv(const CrossValidation& cv, const std::string& co
                     << (scalar ? format_number(m.reference_mean) : "") << ','
                     << (scalar ? format_number(m.reference_sd) : "") << ','
                     << format_number(m.tolerance) << ',' << (m.ratio ? format_number(*m.ratio) : "")
-                    << ',' << to_string(m.verdict) << ',' << number_or_empty(row.seconds) << ','
+                    << ',' << to_string(m.verdict) << ',' << format_number(m.margin) << ','
+                    << format_number(m.ci_low) << ',' << format_number(m.ci_high) << ','
+                    << format_number(m.mdd) << ',' << number_or_empty(row.seconds) << ','
                     << number_or_empty(v.reference_seconds) << ',' << number_or_empty(v.speedup)
                     << ',' << (row.thesis ? format_number(row.thesis->runtime_seconds) : "") << ','
                     << (row.thesis ? format_number(row.thesis->packing_fraction) : "") << ','
@@ -326,7 +357,11 @@ Json crossval_json(const CrossValidation& cv) {
                                    {"ratio", m.ratio ? Json(*m.ratio) : Json()},
                                    {"reference_mean",
                                     m.kind == MetricKind::Scalar ? Json(m.reference_mean) : Json()},
-                                   {"tolerance", m.tolerance}};
+                                   {"tolerance", m.tolerance},
+                                   {"margin", m.margin},
+                                   {"ci_low", finite_or_null(m.ci_low)},
+                                   {"ci_high", finite_or_null(m.ci_high)},
+                                   {"mdd", finite_or_null(m.mdd)}};
             }
             against.push_back({{"reference", v.reference},
                                {"reference_seconds", optional_json(v.reference_seconds)},
@@ -364,15 +399,23 @@ Json crossval_json(const CrossValidation& cv) {
         stand_ins.push_back({{"candidate", s.candidate},
                              {"reference", s.reference},
                              {"stands_in", s.stands_in()},
+                             {"decision", to_string(s.decision)},
                              {"agree", s.agree},
                              {"differ", s.differ},
+                             {"differ_familywise", s.differ_familywise},
                              {"inconclusive", s.inconclusive},
+                             {"counts", s.counts},
+                             {"counts_standing", s.counts_standing},
                              {"speedup", optional_json(s.speedup)},
                              {"speedup_count", s.speedup_count}});
     }
-    return {{"schema_version", kSchemaVersion}, {"candidates", cv.candidates},
-            {"references", cv.references},      {"counts", cv.counts},
-            {"stand_ins", stand_ins},           {"headline", rows}};
+    return {{"schema_version", kSchemaVersion},
+            {"candidates", cv.candidates},
+            {"references", cv.references},
+            {"counts", cv.counts},
+            {"stand_ins", stand_ins},
+            {"class_pairs", class_pairs_json(cv)},
+            {"headline", rows}};
 }
 
 }  // namespace sgmp::compare

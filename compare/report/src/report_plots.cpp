@@ -7,7 +7,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "sgmp/compare/hard_sphere_limit.hpp"
 #include "sgmp/compare/measure.hpp"
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/child_process.hpp"
@@ -83,18 +82,13 @@ std::vector<SeriesStyle> series_styles(const std::vector<std::pair<std::string, 
                               " fs transparent solid 0.3"});
             continue;
         }
-        const auto limit_of = class_of_hard_sphere_limit(label);
-        const bool limit = limit_of.has_value();
-        const std::string base = limit_of.value_or(label);
-        auto it = std::find(classes.begin(), classes.end(), base);
+        auto it = std::find(classes.begin(), classes.end(), label);
         if (it == classes.end()) {
-            classes.push_back(base);
+            classes.push_back(label);
             it = classes.end() - 1;
         }
         const int colour = 11 + static_cast<int>(it - classes.begin()) % kReferenceColours;
-        styles.push_back(
-            {" lt " + std::to_string(colour) + (limit ? " dt 3" : " dt 2"),
-             limit ? " fs transparent pattern 4 border" : " fs transparent solid 0.3"});
+        styles.push_back({" lt " + std::to_string(colour) + " dt 2", " fs transparent solid 0.3"});
     }
     return styles;
 }

@@ -1,5 +1,6 @@
 #include "sgmp/compare/report_render.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -71,27 +72,42 @@ std::string summary_line(const Comparison& c) {
     return line + ".";
 }
 
-std::string ratio_text(const MetricRow& row) {
-    return row.ratio ? fixed(*row.ratio) : "n/a";
+std::string finite_text(double v) {
+    return std::isfinite(v) ? fixed(v) : "∞";
+}
+
+std::string interval_text(const MetricRow& row) {
+    if (row.verdict == Verdict::Info && row.tolerance_rule != "margin") {
+        return "—";
+    }
+    return "[" + finite_text(row.ci_low) + ", " + finite_text(row.ci_high) + "]";
+}
+
+std::string verdict_text(const MetricRow& row) {
+    std::string text(to_string(row.verdict));
+    if (row.verdict == Verdict::Info && row.tolerance_rule == "below overlap depth") {
+        text += " (below overlap depth)";
+    } else if (row.verdict == Verdict::Inconclusive) {
+        text += row.seeds_to_decide ? " (" + std::to_string(*row.seeds_to_decide) + " seeds a side)"
+                                    : " (no seed count up to 1000 decides)";
+    }
+    return text;
 }
 
 void comparison_markdown(std::ostringstream& md, const Comparison& c) {
     md << "\n### " << title(c) << "\n\n";
-    md << "Reference (sets the tolerance): " << c.reference << ", " << c.reference_packs << " packs"
-       << (c.variant_packs > 0 ? " (variant set: " + std::to_string(c.variant_packs) + " packs)"
-                               : "")
-       << "; candidate: " << c.candidate << ", " << c.candidate_packs << " packs.\n\n";
-    md << "| metric | candidate mean ± sd | reference mean ± sd | difference | seed spread | "
-          "model spread | tolerance | ratio | verdict |\n";
-    md << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |\n";
+    md << "Reference: " << c.reference << ", " << c.reference_packs
+       << " packs; candidate: " << c.candidate << ", " << c.candidate_packs << " packs.\n\n";
+    md << "| metric | candidate mean ± sd | reference mean ± sd | difference | 90 % interval | "
+          "margin | mdd | verdict |\n";
+    md << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | --- |\n";
     for (const auto& row : c.rows) {
         md << "| " << row.label
            << (row.unit == "ratio" || row.unit == "dimensionless" ? "" : " (" + row.unit + ")")
            << " | " << mean_sd(row, row.candidate_mean, row.candidate_sd) << " | "
            << mean_sd(row, row.reference_mean, row.reference_sd) << " | " << fixed(row.difference)
-           << " | " << fixed(row.seed_spread) << " | " << fixed(row.model_spread) << " | "
-           << fixed(row.tolerance) << " | " << ratio_text(row) << " | " << to_string(row.verdict)
-           << (row.power || row.verdict == Verdict::Info ? "" : " (no power)") << " |\n";
+           << " | " << interval_text(row) << " | " << fixed(row.margin) << " | "
+           << finite_text(row.mdd) << " | " << verdict_text(row) << " |\n";
     }
     if (!c.candidate_curves.phi_y_note.empty() || !c.reference_curves.phi_y_note.empty()) {
         md << "\nφ(y): " << c.candidate_curves.phi_y_note << " " << c.reference_curves.phi_y_note
@@ -124,43 +140,49 @@ void inputs_markdown(std::ostringstream& md, const Report& report) {
 
 }  // namespace
 
+nlohmann::ordered_json finite_or_null(double value) {
+    return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json();
+}
+
 std::vector<std::string> rule_statements() {
     std::vector<std::string> rules{
-        "Verdicts: agree, differ, inconclusive (the metric cannot tell the reference classes "
-        "apart at that count, or the reference has fewer than two packs) or info (shown "
-        "without a verdict: it differs by construction, as the overlaps of soft DEM spheres "
-        "against hard SGMP spheres).",
-        "Scalar metric: difference = mean(candidate) - mean(reference); tolerance = max(floor, "
-        "2 sqrt(sd^2 + M^2)), sd over the reference packs and M the model spread, the root mean "
-        "square over counts of mean(variant DEM set-up) - mean(reference); ratio = "
-        "|difference| / tolerance; agree when ratio <= 1. With 5 packs a side drawn from one "
-        "distribution the difference exceeds 2 sd with probability about 1 %.",
+        "Verdicts: an equivalence test of each metric on its declared margin m (margins and "
+        "their reasons: compare/README.md, Margins). agree: the 90 % confidence interval of "
+        "the difference lies inside [-m, m] (two one-sided tests at 5 %); differ: it lies "
+        "wholly outside; inconclusive: it straddles a margin (seeds_to_decide: the seeds a "
+        "side that would decide it at the same sds); info: shown without a verdict. Nothing "
+        "changes a verdict afterwards; no model spread widens a margin.",
+        "Scalar metric: difference = mean(candidate) - mean(reference); Welch standard error "
+        "sqrt(s_a^2/n_a + s_b^2/n_b) with Welch-Satterthwaite degrees of freedom, each group "
+        "at its own n; a candidate of one pack takes the reference's sd. ratio = "
+        "|difference| / m. mdd: the true difference called differ with probability 80 %, "
+        "m + (t_0.95 + t_0.80) SE.",
         "Curves: g(r) by the L2 distance sqrt(sum (g_a - g_b)^2 dr) of the mean curves over bin "
         "centres in [1.1 d, 5 d] (the contact peak is judged by Z and P(Z)); P(Z) by the "
-        "total-variation distance (1/2) sum |p_a - p_b|. ratio = distance / (mean distance "
-        "between pairs of reference packs x sqrt(1 + m^2)), m the variant's distance from the "
-        "reference in the same units (root mean square over counts); agree when ratio <= 1.",
-        "Power: a verdict against one reference class is inconclusive where another class "
-        "of its kind agrees with it by the same rule: the metric cannot tell the classes apart "
-        "there. The classes as poured are one kind, their hard-sphere limits another.",
-        "Hard-sphere limit of a DEM class (where its pours were settled again at a stiffer "
-        "Young's modulus E_stiff): per seed, X = X_stiff + a (X_stiff - X_pour), a = 1 / "
-        "((E_stiff / E)^(1/3) - 1) (0.658 for E_stiff = 16 E), for every scalar, g(r) bin, "
-        "Z(delta) and P(Z) value (metrics move linearly in E^(-1/3)); the overlaps are 0. Its "
-        "model spread is its distance from the stiff pours; the DEM runtime beside it is the "
-        "pours'.",
+        "total-variation distance (1/2) sum |p_a - p_b|. The interval of the true distance "
+        "is distance -/+ q, q the 95 % quantile of the norm of the noise of the mean "
+        "difference (per-bin variances over packs; L2: scaled chi-square, Satterthwaite; TV: "
+        "normal). ratio = distance / m.",
+        "Contact metrics (Z and P(Z) at gap tolerance delta) are info where the two groups' "
+        "deepest overlaps (mean over packs) differ by more than delta d: a soft pack's gaps "
+        "are shifted by its overlaps, so the two count different things there.",
+        "Stands in: no test differs under Holm's procedure on the tests' p-values of "
+        "|difference| <= m over every judged metric and count (family-wise error <= 5 %), and "
+        "at every count at least half the judged metrics agree. Differs: Holm keeps a "
+        "difference. Otherwise undecided. Pairs of reference classes are judged the same way; "
+        "classes that stand in for each other are one family.",
         "Lengths are in units of the mean diameter d. Z at tolerance X counts neighbours with "
         "gap |ci - cj| - ri - rj <= X d, over centres in the region; g(r) bins are centred on "
         "multiples of the bin width (contact at d is a bin centre) and its density is the one "
         "the origins see, so g -> 1 far from contact.",
     };
-    std::string floors = "Tolerance floors:";
+    std::string margins = "Declared margins:";
     for (const auto& rule : metric_rules()) {
-        if (rule.kind == MetricKind::Scalar && rule.judged) {
-            floors += " " + rule.name + " " + fixed(rule.floor) + ";";
+        if (rule.judged) {
+            margins += " " + rule.name + " " + format_number(rule.margin) + ";";
         }
     }
-    rules.push_back(floors);
+    rules.push_back(margins);
     return rules;
 }
 
@@ -217,7 +239,8 @@ std::string render_csv(const Report& report, const ReportContext& context) {
     std::ostringstream csv;
     csv << "count,candidate,reference,metric,unit,kind,candidate_n,candidate_mean,candidate_sd,"
            "reference_n,reference_mean,reference_sd,difference,seed_spread,model_spread,"
-           "tolerance,tolerance_rule,ratio,power,verdict\n";
+           "tolerance,tolerance_rule,ratio,power,verdict,margin,ci_low,ci_high,mdd,p_agree,"
+           "p_differ,seeds_to_decide\n";
     write_csv_preamble(csv, "sgmp-compare", context.command, rule_statements());
     for (const auto& c : report.comparisons) {
         for (const auto& row : c.rows) {
@@ -231,7 +254,11 @@ std::string render_csv(const Report& report, const ReportContext& context) {
                 << format_number(row.difference) << ',' << format_number(row.seed_spread) << ','
                 << format_number(row.model_spread) << ',' << format_number(row.tolerance) << ','
                 << row.tolerance_rule << ',' << (row.ratio ? format_number(*row.ratio) : "") << ','
-                << (row.power ? "yes" : "no") << ',' << to_string(row.verdict) << '\n';
+                << (row.power ? "yes" : "no") << ',' << to_string(row.verdict) << ','
+                << format_number(row.margin) << ',' << format_number(row.ci_low) << ','
+                << format_number(row.ci_high) << ',' << format_number(row.mdd) << ','
+                << format_number(row.p_agree) << ',' << format_number(row.p_differ) << ','
+                << (row.seeds_to_decide ? std::to_string(*row.seeds_to_decide) : "") << '\n';
         }
     }
     return csv.str();
@@ -250,7 +277,7 @@ Json render_json(const Report& report, const ReportContext& context) {
         metrics[rule.name] = Json{{"label", rule.label},
                                   {"unit", rule.unit},
                                   {"kind", rule.kind == MetricKind::Scalar ? "scalar" : "curve"},
-                                  {"floor", rule.floor},
+                                  {"margin", rule.margin},
                                   {"judged", rule.judged}};
     }
     j["metrics"] = metrics;
@@ -283,27 +310,34 @@ Json render_json(const Report& report, const ReportContext& context) {
         Json rows = Json::array();
         for (const auto& row : c.rows) {
             const bool scalar = row.kind == MetricKind::Scalar;
-            rows.push_back(Json{{"metric", row.name},
-                                {"unit", row.unit},
-                                {"candidate_mean", scalar ? Json(row.candidate_mean) : Json()},
-                                {"candidate_sd", scalar ? Json(row.candidate_sd) : Json()},
-                                {"reference_mean", scalar ? Json(row.reference_mean) : Json()},
-                                {"reference_sd", scalar ? Json(row.reference_sd) : Json()},
-                                {"difference", row.difference},
-                                {"seed_spread", row.seed_spread},
-                                {"model_spread", row.model_spread},
-                                {"tolerance", row.tolerance},
-                                {"tolerance_rule", row.tolerance_rule},
-                                {"ratio", row.ratio ? Json(*row.ratio) : Json()},
-                                {"power", row.power},
-                                {"verdict", to_string(row.verdict)}});
+            rows.push_back(
+                Json{{"metric", row.name},
+                     {"unit", row.unit},
+                     {"candidate_mean", scalar ? Json(row.candidate_mean) : Json()},
+                     {"candidate_sd", scalar ? Json(row.candidate_sd) : Json()},
+                     {"reference_mean", scalar ? Json(row.reference_mean) : Json()},
+                     {"reference_sd", scalar ? Json(row.reference_sd) : Json()},
+                     {"difference", row.difference},
+                     {"seed_spread", row.seed_spread},
+                     {"model_spread", row.model_spread},
+                     {"tolerance", row.tolerance},
+                     {"tolerance_rule", row.tolerance_rule},
+                     {"ratio", row.ratio ? Json(*row.ratio) : Json()},
+                     {"power", row.power},
+                     {"margin", row.margin},
+                     {"ci_low", finite_or_null(row.ci_low)},
+                     {"ci_high", finite_or_null(row.ci_high)},
+                     {"mdd", finite_or_null(row.mdd)},
+                     {"p_agree", row.p_agree},
+                     {"p_differ", row.p_differ},
+                     {"seeds_to_decide", row.seeds_to_decide ? Json(*row.seeds_to_decide) : Json()},
+                     {"verdict", to_string(row.verdict)}});
         }
         comparisons.push_back(Json{{"count", c.count},
                                    {"candidate", c.candidate},
                                    {"reference", c.reference},
                                    {"candidate_packs", c.candidate_packs},
                                    {"reference_packs", c.reference_packs},
-                                   {"variant_packs", c.variant_packs},
                                    {"differ", c.count_of(Verdict::Differ)},
                                    {"metrics", rows}});
     }

@@ -7,30 +7,23 @@
 /// a verdict: it differs by construction, e.g. the overlap depth of soft DEM spheres against
 /// hard SGMP spheres).
 ///
-/// Scalar metric m: difference Δ = mean_candidate − mean_reference; tolerance
-///     T = max(floor_m, 2·√(s_ref² + M²)),
-/// with s_ref the sample sd (n − 1) of the reference packs and M the DEM model spread, the
-/// standard deviation of the model: the root mean square, over the counts where the
-/// reference's variant set (a second, independent DEM set-up of the same physics) has packs,
-/// of mean_variant − mean_reference. Both sds enter at 2σ.
-/// ratio = |Δ| / T; agree when ratio ≤ 1. For two groups drawn from one distribution with
-/// n = 5 packs each, Δ has standard error 0.63·s, so 2·s alone is exceeded with probability
-/// P(|t₈| > 3.2) ≈ 1 %: T is an equivalence margin of about a single pack's 95 % range,
-/// widened by the model spread.
+/// Every verdict is an equivalence test (equivalence.hpp) of the candidate against the
+/// reference on the metric's declared margin m (MetricRule::margin, justified in
+/// compare/README.md "Margins"), on both groups' standard errors at their own n:
+///   agree        the 90 % interval of the difference lies inside ±m;
+///   differ       it lies wholly outside ±m;
+///   inconclusive it straddles a margin; seeds_to_decide says how many seeds would decide.
+/// Scalars: Δ = mean_candidate − mean_reference (Welch). Curves: D, the L2 distance of the
+/// mean g(r) on [1.1·d, 5·d] or the total-variation distance ½Σ|p − q| of the mean P(Z),
+/// against the noise norm of the mean difference. Nothing rewrites a verdict afterwards:
+/// there is no model spread and no power rule; the power of each test is reported as its
+/// minimum detectable difference `mdd` at the candidate's n.
 ///
-/// Curve metric (g(r) on r ∈ [1.1·d, 5·d], an L2 distance; P(Z), a total-variation
-/// distance): D = distance between the two mean curves; scale
-///     S = D_rep · √(1 + μ²),
-/// with D_rep the mean distance between pairs of reference packs and μ the model spread as
-/// a multiple of D_rep (root mean square over the variant's counts of D(variant mean,
-/// reference mean) / D_rep). ratio = D / S; agree when ratio ≤ 1.
-///
-/// Power: where several reference groups are classes of one kind (e.g. DEM friction classes),
-/// a verdict against class R at count N on metric m is `inconclusive` unless every other
-/// class of R's set at N differs from R on m by the same rule (R as reference): the metric cannot
-/// tell the classes apart there, so agreement with R is no evidence. With fewer than two reference
-/// packs the scale is undefined and curve verdicts are `inconclusive`; scalar tolerances
-/// fall back to the floor.
+/// Contact metrics (Z(δ), P(Z) at δ) count pairs with gap ≤ δ·d; a soft pack's gaps are
+/// shifted by its overlaps, so two groups whose overlap depths ε̄ (the mean pair overlap
+/// over d, averaged over packs) differ by more than δ/2 compare different things at δ:
+/// such a row is `info` ("below overlap depth"), e.g. Z(10⁻³) of hard SGMP spheres
+/// (ε̄ = 0) against DEM pours with ε̄ ≈ 10⁻³; two DEM sets with ε̄ 0.8–1.2·10⁻³ are judged.
 
 #include <cstddef>
 #include <map>
@@ -60,9 +53,11 @@ struct MetricRule {
     std::string label;  // people's name
     std::string unit;   // e.g. "d", "contacts/particle", "ratio"
     MetricKind kind = MetricKind::Scalar;
-    double floor = 0.0;       // smallest tolerance (scalars)
+    double margin = 0.0;      // declared equivalence margin (compare/README.md "Margins")
     bool judged = true;       // false: information only, no verdict
     std::string short_label;  // column heading of the verdict matrix
+    /// δ/d of a contact metric (Z(δ), P(Z) at δ); none for the others.
+    std::optional<double> contact_tolerance;
 };
 /// Every metric, scalars first, in report order.
 const std::vector<MetricRule>& metric_rules();
@@ -74,6 +69,8 @@ const MetricRule& metric_rule(const std::string& name);
 /// construction; the contact scale is judged by Z(δ) and P(Z).
 inline constexpr double kGrCompareFrom = 1.1;
 inline constexpr double kGrCompareTo = 5.0;
+/// The margin of g(r)'s L2 distance on that range (compare/README.md "Margins").
+inline constexpr double kGrMargin = 0.03;
 /// The tolerances (indices into coordination_tolerances()) whose P(Z) are plotted.
 inline constexpr std::size_t kPlottedPzTolerances[] = {2, 3};
 /// The tolerance (δ = 1e-2) of P(Z) when many groups share one plot.
@@ -119,15 +116,28 @@ struct MetricRow {
     double reference_sd = 0.0;
     /// Scalars: Δ = candidate − reference; curves: the distance D.
     double difference = 0.0;
-    /// Scalars: 2·s_ref; curves: D_rep.
+    /// Scalars: 2·s_ref; curves: D_rep, the mean distance between pairs of reference packs
+    /// (descriptive: the seed-to-seed scatter).
     double seed_spread = 0.0;
-    /// Scalars: 2·M; curves: μ·D_rep (0 without a variant set).
+    /// Always 0: kept as a column; no model spread enters a verdict (the header).
     double model_spread = 0.0;
-    /// Scalars: T; curves: S.
+    /// The declared margin m (the same number as `margin`; the older column name).
     double tolerance = 0.0;
-    std::string tolerance_rule;   // "floor", "seed", "seed+model"
-    std::optional<double> ratio;  // |Δ| / T or D / S
-    bool power = true;            // the reference classes are told apart by this metric here
+    /// "margin"; "below overlap depth" for an `info` contact row; "not measured".
+    std::string tolerance_rule;
+    std::optional<double> ratio;  // |Δ| / m or D / m
+    /// Whether `agree` is reachable at these n: the interval's half-width is below m.
+    bool power = true;
+    double margin = 0.0;
+    /// The 90 % interval of Δ (scalars) or of the true distance D* ≥ 0 (curves).
+    double ci_low = 0.0;
+    double ci_high = 0.0;
+    /// Minimum detectable difference: the true |Δ| (or D*) called `differ` with
+    /// probability 80 % at these n.
+    double mdd = 0.0;
+    double p_agree = 1.0;   // TOST p-value of H0 |Δ| ≥ m
+    double p_differ = 1.0;  // p-value of H0 |Δ| ≤ m (Holm in the stand-in rule)
+    std::optional<std::size_t> seeds_to_decide;  // for an inconclusive row
     Verdict verdict = Verdict::Inconclusive;
 };
 
@@ -149,8 +159,7 @@ struct Comparison {
     std::size_t count = 0;
     std::size_t candidate_packs = 0;
     std::size_t reference_packs = 0;
-    std::size_t variant_packs = 0;  // of the reference's variant set at this count
-    std::vector<MetricRow> rows;    // in metric_rules() order
+    std::vector<MetricRow> rows;  // in metric_rules() order
     GroupCurves candidate_curves;
     GroupCurves reference_curves;
 
@@ -158,38 +167,40 @@ struct Comparison {
     [[nodiscard]] std::size_t count_of(Verdict verdict) const;
 };
 
-/// Which groups to compare and how tolerances are made.
+/// Which groups to compare.
 struct ReportPlan {
     std::vector<std::pair<std::size_t, std::size_t>> comparisons;  // (candidate, reference)
-    /// Sets of reference groups that are classes of one kind (the DEM friction classes as
-    /// poured; their hard-sphere limits): a verdict against one needs the metric to tell it
-    /// from every other class of its set at that count (power). A set of one: power is not
-    /// assessed.
+    /// Sets of reference groups that are classes of one kind (the DEM classes): each pair
+    /// of a set is compared class against class (Report::class_comparisons), to report
+    /// which classes form one family. Never used to change a verdict.
     std::vector<std::vector<std::size_t>> class_sets;
-    /// Reference group → its variant group (model spread).
-    std::map<std::size_t, std::size_t> variants;
-    /// Reference group derived from another's packs (its hard-sphere limit) → that group:
-    /// the DEM runtime shown beside the derived group is that group's.
-    std::map<std::size_t, std::size_t> derived_from;
 };
 
 struct Report {
     std::vector<Group> groups;
     std::vector<Comparison> comparisons;
+    /// Every pair (i < j) of every class set at every common count, i as candidate.
+    std::vector<Comparison> class_comparisons;
     std::vector<std::string> notes;  // e.g. counts present on one side only
     ReportPlan plan;
 };
 
 /// Compares every planned (candidate, reference) pair at every particle count present in
-/// both. Throws std::invalid_argument when the plan names a missing group, or when packs of
-/// one count use different g(r) bins.
+/// both, and the classes of every class set with each other. Throws std::invalid_argument
+/// when the plan names a missing group, when packs of one count use different g(r) bins,
+/// or when a pack holds a physically impossible value (check_physical).
 Report build_report(std::vector<Group> groups, ReportPlan plan);
 
-/// The judgement of one metric at one count, candidate packs against reference packs, with
-/// the given model spread (absolute for scalars, relative to D_rep for curves). Power is
-/// left true; `verdict` is agree / differ / inconclusive / info by the rules above.
+/// The judgement of one metric at one count, candidate packs against reference packs, by
+/// the rules above.
 MetricRow judge(const MetricRule& rule, const std::vector<const PackSummary*>& candidate,
-                const std::vector<const PackSummary*>& reference, double model_spread);
+                const std::vector<const PackSummary*>& reference);
+
+/// Throws std::invalid_argument, naming the pack, the value and the rule, when a summary
+/// holds a value outside its physical range: a scalar that is not finite, φ outside
+/// [0, 0.74048] (Kepler's bound for one size; [0, 1) for packs of several sizes), Z or an
+/// overlap count below 0, g(r) < 0, P(Z) outside [0, 1] or not summing to 1 ± 10⁻⁶.
+void check_physical(const PackSummary& pack);
 
 /// Distance between two curves of a metric (curve rules only): the L2 distance of g(r) on
 /// [1.1·d, 5·d], or the total-variation distance ½ Σ |p − q| of P(Z).

@@ -10,10 +10,11 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "sgmp/compare/agreement.hpp"
-#include "sgmp/compare/hard_sphere_limit.hpp"
 #include "sgmp/compare/manifest.hpp"
 #include "sgmp/compare/thesis_table.hpp"
 
@@ -48,29 +49,69 @@ struct HeadlineRow {
     [[nodiscard]] double value(const std::string& name) const;
 };
 
-/// How well one mode stands in for one class, over every count and judged metric.
+/// The family-wise level of the stand-in rule.
+inline constexpr double kFamilyAlpha = 0.05;
+/// The least share of a count's judged metrics that must agree for a stand-in there.
+inline constexpr double kStandInAgreeShare = 0.5;
+
+enum class StandInDecision { StandsIn, Differs, Undecided };
+/// "stands in", "differs", "undecided".
+std::string_view to_string(StandInDecision decision);
+
+/// Whether one group stands in for another, under a stated family-wise rule.
+///
+/// Over the judged rows (verdict agree, differ or inconclusive) of every count, Holm's
+/// step-down procedure at family-wise level α = 5 % on the rows' p_differ (the p-value of
+/// "|Δ| ≤ margin"): sorted p₍₁₎ ≤ … ≤ p₍ₘ₎, p₍ᵢ₎ is rejected while p₍ᵢ₎ ≤ α/(m − i + 1).
+///   differs    some row is rejected: the difference exceeds its margin, family-wise;
+///   stands in  no row is rejected, and at every count at least half the judged rows agree;
+///   undecided  otherwise (too few agree: the data cannot tell).
+/// Per count the same rule over that count's rows gives `counts_standing`.
+/// A single row's `differ` that Holm does not keep is counted in `differ` and named.
 struct StandIn {
     std::string candidate;
     std::string reference;
     std::size_t agree = 0;
     std::size_t differ = 0;
     std::size_t inconclusive = 0;
+    std::size_t differ_familywise = 0;  // rows Holm rejects
+    std::size_t counts = 0;             // counts compared
+    std::size_t counts_standing = 0;    // counts where it stands in by the rule
+    StandInDecision decision = StandInDecision::Undecided;
     std::optional<double> speedup;  // at the largest count compared
     std::size_t speedup_count = 0;
-    /// The worst differing verdict: metric label, count and ratio.
+    /// The largest difference kept by Holm (else the largest row `differ`): metric label,
+    /// count and |Δ| / margin.
     std::string worst_metric;
     std::size_t worst_count = 0;
     double worst_ratio = 0.0;
 
-    [[nodiscard]] bool stands_in() const { return differ == 0 && agree > 0; }
+    [[nodiscard]] bool stands_in() const { return decision == StandInDecision::StandsIn; }
+};
+
+/// The stand-in record of `rows_by_count` (per count, that count's metric rows).
+StandIn stand_in_from(
+    const std::vector<std::pair<std::size_t, std::vector<MetricRow>>>& rows_by_count);
+
+/// Indices of the p-values Holm's procedure rejects at family-wise level `alpha`.
+std::vector<std::size_t> holm_rejected(const std::vector<double>& p, double alpha);
+
+/// Two classes of one class set, judged against each other over every common count.
+struct ClassPair {
+    std::string a;
+    std::string b;
+    StandIn record;  // a as candidate, b as reference
+    /// One family: `a` stands in for `b` by the rule (their physics is not told apart).
+    [[nodiscard]] bool one_family() const { return record.stands_in(); }
 };
 
 struct CrossValidation {
     std::vector<std::string> candidates;  // group labels in manifest order
     std::vector<std::string> references;
-    std::vector<std::size_t> counts;  // every count compared, ascending
-    std::vector<HeadlineRow> rows;    // by candidate group, then count
-    std::vector<StandIn> stand_ins;   // by reference, then candidate (best first)
+    std::vector<std::size_t> counts;     // every count compared, ascending
+    std::vector<HeadlineRow> rows;       // by candidate group, then count
+    std::vector<StandIn> stand_ins;      // by reference, then candidate (best first)
+    std::vector<ClassPair> class_pairs;  // the reference classes against each other
 };
 
 /// The thesis' published tables (either may be empty).
@@ -84,28 +125,16 @@ struct ThesisTables {
 CrossValidation cross_validate(const Report& report, const std::vector<ManifestEntry>& manifest,
                                const ThesisTables& thesis);
 
-/// The groups of a manifest and what to compare: every candidate against every reference;
-/// references are the classes; a `variant` group (`role` variant, `group` naming its
-/// reference) is the reference's model-spread set and is compared with nothing; a `stiff`
-/// group (the reference's pours settled again at stiffer contacts) is the model-spread set
-/// of a reference without a variant group, and gives the reference's hard-sphere limit
-/// (add_hard_sphere_limits).
+/// The groups of a manifest and what to compare: every candidate against every reference.
+/// References are the classes, one class set. A `variant` or `stiff` group (`group`
+/// naming a reference) is a reference class of its own, labelled "<group> (variant)" or
+/// "<group> (stiff)": another protocol or stiffness of that reference, never a tolerance.
 struct GroupPlan {
     std::vector<std::string> labels;
-    std::vector<std::vector<std::string>> paths;  // per label; empty for a derived group
+    std::vector<std::vector<std::string>> paths;  // per label
     ReportPlan plan;
-    std::vector<std::size_t> candidates;                     // group indices
-    std::vector<std::pair<std::size_t, std::size_t>> stiff;  // (reference, its stiff group)
+    std::vector<std::size_t> candidates;  // group indices
 };
 GroupPlan plan_groups(const std::vector<ManifestEntry>& manifest);
-
-/// Appends to `groups` (the measured groups of `plan`, in its order) the hard-sphere limit
-/// of every reference with a stiff group (hard_sphere_limit.hpp), and plans it as a
-/// reference of its own: every candidate is compared with it; its model spread is its
-/// distance from the stiff pours (the limit is known no better than its last extrapolation
-/// step); its runtime is the pours' (derived_from); and the limits form a class set of their
-/// own, so a limit's power is judged against the other classes' limits, not against the
-/// soft pours of the same physics. Returns notes on stiff pours left out.
-std::vector<std::string> add_hard_sphere_limits(std::vector<Group>& groups, GroupPlan& plan);
 
 }  // namespace sgmp::compare

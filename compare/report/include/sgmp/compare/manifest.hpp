@@ -2,12 +2,10 @@
 /// @file manifest.hpp
 /// The list of packs a cross-validation reads: a CSV file with the header
 /// `role,group,count,seed,seconds,path`, one pack per line. `role` is `candidate` (packs
-/// under test, e.g. one SGMP arrangement per group) or `reference` (packs whose
-/// seed-to-seed spread sets the tolerances, e.g. one DEM friction class per group) or
-/// `variant` (a second, independent set-up of a reference group named by `group`, whose
-/// distance from it is the model spread) or `stiff` (the pours of a reference group named by
-/// `group` settled again at stiffer contacts, pack by pack with the same seeds: the report
-/// extrapolates each pair to hard spheres, hard_sphere_limit.hpp);
+/// under test, e.g. one SGMP arrangement per group) or `reference` (the classes they are
+/// judged against, e.g. one DEM friction class per group) or `variant` / `stiff` (another
+/// protocol or stiffness of the reference group named by `group`: a reference class of its
+/// own, "<group> (variant)", crossval.hpp);
 /// `seconds` is the wall time that made the pack (empty when unknown).
 
 #include <cstddef>

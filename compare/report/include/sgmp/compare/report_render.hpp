@@ -39,6 +39,9 @@ std::string render_html(const Report& report, const ReportContext& context,
 /// HTML of the Markdown subset used by ReportContext::lead_markdown.
 std::string markdown_to_html(const std::string& markdown);
 
+/// A JSON number, or null for an infinite or NaN value (an interval without bounds).
+nlohmann::ordered_json finite_or_null(double value);
+
 /// The agreement rules in words (used by every output).
 std::vector<std::string> rule_statements();
 

@@ -1,0 +1,244 @@
+#include "sgmp/compare/equivalence.hpp"
+
+#include "sgmp/compare/statistics.hpp"
+
+#include <algorithm>
+#include <boost/math/distributions/chi_squared.hpp>
+#include <boost/math/distributions/normal.hpp>
+#include <boost/math/distributions/students_t.hpp>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace sgmp::compare {
+namespace {
+
+constexpr double kPowerQuantile = 0.80;
+constexpr std::size_t kMostSeeds = 1000;
+
+double t_quantile(double p, double df) {
+    return boost::math::quantile(boost::math::students_t(df), p);
+}
+
+double t_survival(double x, double df) {
+    return boost::math::cdf(boost::math::complement(boost::math::students_t(df), x));
+}
+
+/// The decision of an interval against ±margin.
+Decision decide(double low, double high, double margin) {
+    if (low >= -margin && high <= margin) {
+        return Decision::Agree;
+    }
+    if (low > margin || high < -margin) {
+        return Decision::Differ;
+    }
+    return Decision::Inconclusive;
+}
+
+struct Pooled {
+    double se = 0.0;
+    double df = 0.0;
+};
+
+/// Student's pooled standard error of x̄_A − x̄_B (Schuirmann's TOST): one seed-to-seed
+/// variance s_p² = ((n_A − 1)s_A² + (n_B − 1)s_B²)/(n_A + n_B − 2) for both groups,
+/// SE = s_p·√(1/n_A + 1/n_B), ν = n_A + n_B − 2. A group of one pack adds no variance
+/// information, so a single candidate takes the reference's sd.
+Pooled pooled(double var_a, std::size_t n_a, double var_b, std::size_t n_b) {
+    const double na = static_cast<double>(n_a);
+    const double nb = static_cast<double>(n_b);
+    Pooled p;
+    p.df = na + nb - 2.0;
+    const double var = ((na - 1.0) * var_a + (nb - 1.0) * var_b) / p.df;
+    p.se = std::sqrt(var * (1.0 / na + 1.0 / nb));
+    return p;
+}
+
+/// The (1 − p) quantile of the curve noise norm.
+struct CurveNoise {
+    CurveNorm norm;
+    double bin_weight;
+    std::vector<double> variance;
+
+    [[nodiscard]] double quantile(double p, double scale) const {  // scale: variance factor
+        if (norm == CurveNorm::L2) {
+            double sum = 0.0;
+            double sum2 = 0.0;
+            for (const double v : variance) {
+                const double l = v * bin_weight * scale;
+                sum += l;
+                sum2 += l * l;
+            }
+            if (sum <= 0.0) {
+                return 0.0;
+            }
+            const double a = sum2 / sum;
+            const double f = sum * sum / sum2;
+            return std::sqrt(a * boost::math::quantile(boost::math::chi_squared(f), 1.0 - p));
+        }
+        double mean = 0.0;
+        double var = 0.0;
+        for (const double v : variance) {
+            mean += 0.5 * std::sqrt(2.0 * v * scale / std::numbers::pi);
+            var += 0.25 * v * scale * (1.0 - 2.0 / std::numbers::pi);
+        }
+        if (var <= 0.0) {
+            return mean;
+        }
+        return mean + std::sqrt(var) * boost::math::quantile(boost::math::normal(), 1.0 - p);
+    }
+
+    /// P(noise norm ≥ x).
+    [[nodiscard]] double survival(double x) const {
+        if (x <= 0.0) {
+            return 1.0;
+        }
+        if (norm == CurveNorm::L2) {
+            double sum = 0.0;
+            double sum2 = 0.0;
+            for (const double v : variance) {
+                const double l = v * bin_weight;
+                sum += l;
+                sum2 += l * l;
+            }
+            if (sum <= 0.0) {
+                return 0.0;
+            }
+            const double a = sum2 / sum;
+            const double f = sum * sum / sum2;
+            return boost::math::cdf(
+                boost::math::complement(boost::math::chi_squared(f), x * x / a));
+        }
+        double mean = 0.0;
+        double var = 0.0;
+        for (const double v : variance) {
+            mean += 0.5 * std::sqrt(2.0 * v / std::numbers::pi);
+            var += 0.25 * v * (1.0 - 2.0 / std::numbers::pi);
+        }
+        if (var <= 0.0) {
+            return x > mean ? 0.0 : 1.0;
+        }
+        return boost::math::cdf(
+            boost::math::complement(boost::math::normal(mean, std::sqrt(var)), x));
+    }
+};
+
+EquivalenceResult undecidable(double estimate, double margin) {
+    EquivalenceResult r;
+    r.estimate = estimate;
+    r.margin = margin;
+    r.ci_low = -std::numeric_limits<double>::infinity();
+    r.ci_high = std::numeric_limits<double>::infinity();
+    r.standard_error = std::numeric_limits<double>::infinity();
+    r.mdd = std::numeric_limits<double>::infinity();
+    return r;
+}
+
+}  // namespace
+
+ScalarSample sample_of(const std::vector<double>& values) {
+    return {values.empty() ? 0.0 : mean(values), sample_sd(values), values.size()};
+}
+
+EquivalenceResult test_scalar(const ScalarSample& candidate, const ScalarSample& reference,
+                              double margin) {
+    const double estimate = candidate.mean - reference.mean;
+    if (candidate.n == 0 || reference.n == 0 || (candidate.n < 2 && reference.n < 2)) {
+        return undecidable(estimate, margin);
+    }
+    const double var_a = candidate.sd * candidate.sd;
+    const double var_b = reference.sd * reference.sd;
+    const Pooled w = pooled(var_a, candidate.n, var_b, reference.n);
+    EquivalenceResult r;
+    r.estimate = estimate;
+    r.margin = margin;
+    r.standard_error = w.se;
+    r.degrees_of_freedom = w.df;
+    const double t = t_quantile(1.0 - kTestAlpha, w.df);
+    r.ci_low = estimate - t * w.se;
+    r.ci_high = estimate + t * w.se;
+    r.mdd = margin + (t + t_quantile(kPowerQuantile, w.df)) * w.se;
+    const double excess = std::abs(estimate) - margin;
+    if (w.se > 0.0) {
+        r.p_differ = t_survival(excess / w.se, w.df);
+        r.p_agree = t_survival(-excess / w.se, w.df);
+    } else {
+        r.p_differ = excess > 0.0 ? 0.0 : 1.0;
+        r.p_agree = excess < 0.0 ? 0.0 : 1.0;
+    }
+    r.decision = decide(r.ci_low, r.ci_high, margin);
+    if (r.decision == Decision::Inconclusive && excess != 0.0) {
+        for (std::size_t n = std::max<std::size_t>(2, std::min(candidate.n, reference.n) + 1);
+             n <= kMostSeeds; ++n) {
+            const Pooled wn = pooled(var_a, n, var_b, n);
+            if (t_quantile(1.0 - kTestAlpha, wn.df) * wn.se < std::abs(excess)) {
+                r.seeds_to_decide = n;
+                break;
+            }
+        }
+    }
+    return r;
+}
+
+std::vector<double> noise_variance(const std::vector<std::vector<double>>& candidate,
+                                   const std::vector<std::vector<double>>& reference) {
+    std::size_t bins = 0;
+    for (const auto* set : {&candidate, &reference}) {
+        for (const auto& c : *set) {
+            bins = std::max(bins, c.size());
+        }
+    }
+    const auto per_bin_variance = [bins](const std::vector<std::vector<double>>& curves) {
+        std::vector<double> var(bins, 0.0);
+        if (curves.size() < 2) {
+            return var;
+        }
+        for (std::size_t k = 0; k < bins; ++k) {
+            std::vector<double> column;
+            for (const auto& c : curves) {
+                column.push_back(k < c.size() ? c[k] : 0.0);
+            }
+            const ScalarSample s = sample_of(column);
+            var[k] = s.sd * s.sd;
+        }
+        return var;
+    };
+    const auto var_b = per_bin_variance(reference);
+    const auto var_a = candidate.size() >= 2 ? per_bin_variance(candidate) : var_b;
+    std::vector<double> v(bins, 0.0);
+    for (std::size_t k = 0; k < bins; ++k) {
+        v[k] = var_a[k] / static_cast<double>(candidate.size()) +
+               var_b[k] / static_cast<double>(reference.size());
+    }
+    return v;
+}
+
+EquivalenceResult test_curve(double distance, const std::vector<double>& variance,
+                             double bin_weight, CurveNorm norm, double margin,
+                             std::size_t seeds_now) {
+    const CurveNoise noise{norm, bin_weight, variance};
+    EquivalenceResult r;
+    r.estimate = distance;
+    r.margin = margin;
+    const double q = noise.quantile(kTestAlpha, 1.0);
+    r.standard_error = q / boost::math::quantile(boost::math::normal(), 1.0 - kTestAlpha);
+    r.ci_low = std::max(0.0, distance - q);
+    r.ci_high = distance + q;
+    r.mdd = margin + q + noise.quantile(1.0 - kPowerQuantile, 1.0);
+    r.p_differ = noise.survival(distance - margin);
+    r.p_agree = noise.survival(margin - distance);
+    r.decision = decide(r.ci_low, r.ci_high, margin);
+    if (r.decision == Decision::Inconclusive) {
+        // The variances shrink as 1/n with n seeds a side.
+        for (std::size_t n = seeds_now + 1; n <= kMostSeeds; ++n) {
+            const double scale = static_cast<double>(seeds_now) / static_cast<double>(n);
+            if (noise.quantile(kTestAlpha, scale) < std::abs(distance - margin)) {
+                r.seeds_to_decide = n;
+                break;
+            }
+        }
+    }
+    return r;
+}
+
+}  // namespace sgmp::compare

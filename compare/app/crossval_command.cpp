@@ -43,6 +43,7 @@ struct CrossvalOptions {
     std::string manifest;
     std::string thesis;
     std::string thesis_start;
+    std::string tuning;
     bool pictures = false;
     int picture_size = 360;
     CommonOptions common;
@@ -74,6 +75,11 @@ int run_crossval(CrossvalOptions& o, const std::string& command) {
         auto in = open_input(o.thesis_start);
         thesis.starts = read_thesis_starts(in, o.thesis_start);
     }
+    std::vector<TunedParameter> tuning;
+    if (!o.tuning.empty()) {
+        auto in = open_input(o.tuning);
+        tuning = read_tuning(in, o.tuning);
+    }
     GroupPlan plan;
     try {
         plan = plan_groups(manifest);
@@ -92,13 +98,19 @@ int run_crossval(CrossvalOptions& o, const std::string& command) {
     } catch (const std::invalid_argument& error) {
         throw InputError(o.manifest, 0, error.what());
     }
-    const CrossValidation cv = cross_validate(report, manifest, thesis);
+    withhold_tuned(report, tuning, manifest);
+    CrossValidation cv = cross_validate(report, manifest, thesis);
+    cv.tuning = tuning;
 
-    nlohmann::ordered_json provenance{
-        {"schema_version", kSchemaVersion}, {"tool", "sgmp-compare crossval"},
-        {"version", sgmp::version()},       {"command", command},
-        {"manifest", o.manifest},           {"thesis", o.thesis},
-        {"thesis_start", o.thesis_start},   {"parameters", cli::measure_parameters(o.common)}};
+    nlohmann::ordered_json provenance{{"schema_version", kSchemaVersion},
+                                      {"tool", "sgmp-compare crossval"},
+                                      {"version", sgmp::version()},
+                                      {"command", command},
+                                      {"manifest", o.manifest},
+                                      {"thesis", o.thesis},
+                                      {"thesis_start", o.thesis_start},
+                                      {"tuning", o.tuning},
+                                      {"parameters", cli::measure_parameters(o.common)}};
     ReportContext context;
     context.title = "SGMP against DEM: cross-validation report";
     context.command = command;
@@ -186,6 +198,10 @@ CommandRunner register_crossval(CLI::App& app) {
     cmd->add_option("--thesis-start", options->thesis_start,
                     "the thesis' starting-pack CSV (data/thesis/starting_packs.csv) to show "
                     "starting heights beside ours");
+    cmd->add_option("--tuning", options->tuning,
+                    "CSV 'group,parameter,value,reference,count,seeds,note' of candidate "
+                    "parameters tuned against reference packs (data/tuning.csv): listed on "
+                    "every page; comparisons on the seeds they were tuned on are not judged");
     cmd->add_flag("--pictures,!--no-pictures", options->pictures,
                   "add pictures of packs rendered with POV-Ray: at N = 9000 (or the largest "
                   "count with both roles) one seed of each candidate group beside one pack of "

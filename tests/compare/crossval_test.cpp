@@ -180,6 +180,44 @@ BOOST_AUTO_TEST_CASE(headline_carries_verdicts_and_the_thesis_beside_us) {
                         "differ,") != std::string::npos);
 }
 
+BOOST_AUTO_TEST_CASE(tuned_comparisons_are_withheld_and_disclosed) {
+    std::istringstream in(
+        "group,parameter,value,reference,count,seeds,note\n"
+        "loose-random,relax_friction,0.2,DEM mu=0.5,150,1-5 7,\"chosen from 0.1, 0.2\"\n");
+    const auto tuning = read_tuning(in, "t.csv");
+    BOOST_TEST_REQUIRE(tuning.size() == 1u);
+    BOOST_TEST(tuning[0].seeds.size() == 6u);
+    BOOST_TEST(tuning[0].note == "chosen from 0.1, 0.2");
+    Report report = sample_report();
+    const Verdict before = report.comparisons[2].row("phi").verdict;
+    BOOST_TEST(withhold_tuned(report, tuning, sample_manifest()) == 1u);
+    const MetricRow& phi = report.comparisons[2].row("phi");  // loose-random vs DEM mu=0.5
+    BOOST_TEST(phi.verdict == Verdict::Info);
+    BOOST_TEST(phi.tolerance_rule ==
+               "tuned on these seeds (would be " + std::string(to_string(before)) + ")");
+    BOOST_TEST(report.comparisons[3].row("phi").verdict == Verdict::Differ);  // other class
+    // Seeds the tuning did not use are judged.
+    std::istringstream other(
+        "group,parameter,value,reference,count,seeds,note\n"
+        "loose-random,relax_friction,0.2,DEM mu=0.5,150,2-3,\n");
+    Report kept = sample_report();
+    BOOST_TEST(withhold_tuned(kept, read_tuning(other, "t.csv"), sample_manifest()) == 0u);
+    CrossValidation cv = cross_validate(report, sample_manifest(), {});
+    cv.tuning = tuning;
+    const std::string md = render_crossval_markdown(cv);
+    BOOST_TEST(md.find("- **loose-random** (tuned): relax_friction = 0.2, tuned against DEM "
+                       "mu=0.5 at N = 150 (seeds 1 2 3 4 5 7); chosen from 0.1, 0.2.") !=
+               std::string::npos);
+    BOOST_TEST(md.find("**loose-random** (tuned) ") != std::string::npos);
+    for (const char* bad :
+         {"group,parameter,value,reference,count,seeds,note\na,p,1,R,0,1,\n",
+          "group,parameter,value,reference,count,seeds,note\na,p,1,R,5,3-1,\n",
+          "group,parameter,value,reference,count,seeds,note\n,p,1,R,5,1,\n", "group,parameter\n"}) {
+        std::istringstream b(bad);
+        BOOST_CHECK_THROW(read_tuning(b, "t.csv"), sgmp::InputError);
+    }
+}
+
 BOOST_AUTO_TEST_CASE(holm_keeps_what_the_step_down_rule_keeps) {
     // Holm at 5 % over 4 p-values: 0.01 ≤ 0.05/4 kept, 0.02 ≤ 0.05/3 fails: one rejection;
     // order does not matter.

@@ -222,6 +222,11 @@ StandIn stand_in_from(
     return s;
 }
 
+bool CrossValidation::tuned(const std::string& group) const {
+    return std::any_of(tuning.begin(), tuning.end(),
+                       [&](const TunedParameter& t) { return t.group == group; });
+}
+
 const std::vector<std::string>& headline_metrics() {
     static const std::vector<std::string> names{"phi",         "z_mean_tol_1e-3", "z_mean_tol_1e-2",
                                                 "split_ratio", "p_z_tol_1e-3",    "g_r"};

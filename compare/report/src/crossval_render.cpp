@@ -82,7 +82,29 @@ std::string stand_in_sentence(const StandIn& s) {
     return out.str();
 }
 
+void tuning_markdown(std::ostringstream& md, const CrossValidation& cv) {
+    md << "## Tuned parameters\n\n";
+    if (cv.tuning.empty()) {
+        md << "No mode's parameter is declared tuned against the reference packs "
+              "(crossval --tuning).\n\n";
+        return;
+    }
+    md << "These parameters were chosen by comparing the mode with reference packs; the "
+          "comparisons on those packs are shown but not judged (info), so every verdict "
+          "rests on packs the tuning did not use.\n\n";
+    for (const auto& t : cv.tuning) {
+        md << "- **" << t.group << "** (tuned): " << t.parameter << " = " << t.value
+           << ", tuned against " << t.reference << " at N = " << t.count << " (seeds";
+        for (const auto s : t.seeds) {
+            md << " " << s;
+        }
+        md << ")" << (t.note.empty() ? "" : "; " + t.note) << ".\n";
+    }
+    md << "\n";
+}
+
 void stand_in_markdown(std::ostringstream& md, const CrossValidation& cv) {
+    tuning_markdown(md, cv);
     md << "## Which SGMP mode stands in for which DEM class\n\n";
     md << "Every verdict is an equivalence test on a declared margin (rules at the end of the "
           "page). A mode *stands in* for a class when no test differs under Holm's procedure "
@@ -102,7 +124,8 @@ void stand_in_markdown(std::ostringstream& md, const CrossValidation& cv) {
         }
         md << "- **" << cv.references[r] << "**:";
         for (const StandIn* s : per) {
-            md << "\n  - **" << s->candidate << "** " << stand_in_sentence(*s);
+            md << "\n  - **" << s->candidate << "**" << (cv.tuned(s->candidate) ? " (tuned)" : "")
+               << " " << stand_in_sentence(*s);
             if (s->speedup_count > 0) {
                 md << "; " << speed(s->speedup)
                    << " faster than the DEM pour at N = " << s->speedup_count;
@@ -227,6 +250,20 @@ std::string number_or_empty(const std::optional<double>& v) {
 
 Json optional_json(const std::optional<double>& v) {
     return v ? Json(*v) : Json();
+}
+
+Json tuning_json(const CrossValidation& cv) {
+    Json list = Json::array();
+    for (const auto& t : cv.tuning) {
+        list.push_back({{"group", t.group},
+                        {"parameter", t.parameter},
+                        {"value", t.value},
+                        {"reference", t.reference},
+                        {"count", t.count},
+                        {"seeds", t.seeds},
+                        {"note", t.note}});
+    }
+    return list;
 }
 
 Json class_pairs_json(const CrossValidation& cv) {
@@ -409,13 +446,10 @@ Json crossval_json(const CrossValidation& cv) {
                              {"speedup", optional_json(s.speedup)},
                              {"speedup_count", s.speedup_count}});
     }
-    return {{"schema_version", kSchemaVersion},
-            {"candidates", cv.candidates},
-            {"references", cv.references},
-            {"counts", cv.counts},
-            {"stand_ins", stand_ins},
-            {"class_pairs", class_pairs_json(cv)},
-            {"headline", rows}};
+    return {{"schema_version", kSchemaVersion}, {"candidates", cv.candidates},
+            {"references", cv.references},      {"counts", cv.counts},
+            {"stand_ins", stand_ins},           {"class_pairs", class_pairs_json(cv)},
+            {"tuning", tuning_json(cv)},        {"headline", rows}};
 }
 
 }  // namespace sgmp::compare

@@ -17,6 +17,7 @@
 #include "sgmp/compare/agreement.hpp"
 #include "sgmp/compare/manifest.hpp"
 #include "sgmp/compare/thesis_table.hpp"
+#include "sgmp/compare/tuning.hpp"
 
 namespace sgmp::compare {
 
@@ -112,6 +113,10 @@ struct CrossValidation {
     std::vector<HeadlineRow> rows;       // by candidate group, then count
     std::vector<StandIn> stand_ins;      // by reference, then candidate (best first)
     std::vector<ClassPair> class_pairs;  // the reference classes against each other
+    std::vector<TunedParameter> tuning;  // disclosed on every page (tuning.hpp)
+
+    /// Whether a tuning line names `group`.
+    [[nodiscard]] bool tuned(const std::string& group) const;
 };
 
 /// The thesis' published tables (either may be empty).

@@ -89,6 +89,41 @@ BOOST_AUTO_TEST_CASE(crossval_judges_a_stiff_set_as_a_class_of_its_own) {
     BOOST_TEST(csv.find(",verdict,margin,ci_low,ci_high,mdd,") != std::string::npos);
 }
 
+// Labels a user sets (manifest groups, --label-a/--label-b; report refuses quotes in its
+// labels) reach gnuplot as literal text: backquotes, system(), quotes and @macros run
+// nothing and break nothing.
+BOOST_AUTO_TEST_CASE(labels_never_reach_a_shell_through_gnuplot) {
+    for (std::uint64_t seed = 1; seed <= 2; ++seed) {
+        good_pack("la" + std::to_string(seed) + ".xyz", seed);
+        good_pack("lb" + std::to_string(seed) + ".xyz", seed + 10);
+    }
+    for (const char* name : {"PWNED_A", "PWNED_B", "PWNED_C", "PWNED_D"}) {
+        fs::remove(scratch() / name);
+    }
+    const Result report =
+        run("report --a la1.xyz la2.xyz --b lb1.xyz lb2.xyz --label-a 'x`touch PWNED_A`' "
+            "--label-b 'system(touch PWNED_B) @x' --out labels-report --force");
+    BOOST_TEST(report.status == 0, report.err);
+    write("labels.csv",
+          "role,group,count,seed,seconds,path\n"
+          "candidate,r`touch PWNED_C`'s @x,300,1,,la1.xyz\n"
+          "candidate,r`touch PWNED_C`'s @x,300,2,,la2.xyz\n"
+          "reference,\"q\"\"`touch PWNED_D`\",300,1,,lb1.xyz\n"
+          "reference,\"q\"\"`touch PWNED_D`\",300,2,,lb2.xyz\n");
+    const Result cv = run("crossval --manifest labels.csv --no-pictures --out labels-cv --force");
+    BOOST_TEST(cv.status == 0, cv.err);
+    for (const char* name : {"PWNED_A", "PWNED_B", "PWNED_C", "PWNED_D"}) {
+        BOOST_TEST(!fs::exists(scratch() / name), name << " was created by gnuplot");
+    }
+    // The plots were drawn, with the labels as text.
+    bool drawn = false;
+    for (const auto& entry : fs::directory_iterator(scratch() / "labels-cv" / "plots")) {
+        const std::string svg = sgmp::testing::read_bytes(entry.path());
+        drawn = drawn || svg.find("touch PWNED_C") != std::string::npos;
+    }
+    BOOST_TEST(drawn);
+}
+
 BOOST_AUTO_TEST_CASE(bad_pack_files_give_one_line_and_status_1) {
     write("empty.xyz", "");
     write("short.xyz", "3\n" + kHeader + "1 0 0 0 0.05 0\n2 0.2 0 0 0.05 0\n");

@@ -17,15 +17,22 @@ namespace sgmp::compare {
 namespace fs = std::filesystem;
 namespace {
 
+/// A gnuplot string literal of any text: single-quoted, where gnuplot substitutes nothing
+/// (no backquoted shell commands, no escapes, no macros), a quote doubled, and control
+/// characters (a newline would end the command) made spaces. User text reaches gnuplot
+/// only through this.
 std::string quoted(const std::string& text) {
-    std::string out = "\"";
+    std::string out = "'";
     for (const char c : text) {
-        if (c == '"' || c == '\\') {
-            out += '\\';
+        if (c == '\'') {
+            out += "''";
+        } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+            out += ' ';
+        } else {
+            out += c;
         }
-        out += c;
     }
-    return out + "\"";
+    return out + "'";
 }
 
 std::string columns(const std::vector<double>& x, const std::vector<double>& y) {

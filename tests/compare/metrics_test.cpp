@@ -1,4 +1,5 @@
 #include <boost/test/unit_test.hpp>
+#include <limits>
 #include <cmath>
 
 #include "sgmp/compare/measure.hpp"
@@ -141,6 +142,22 @@ BOOST_AUTO_TEST_CASE(phi_profile_matches_phi_over_the_same_box) {
         volume += profile.phi[k] * (profile.y_hi[k] - profile.y_lo[k]);
     }
     BOOST_TEST(std::abs(volume - m.phi) <= 1e-10);
+}
+
+BOOST_AUTO_TEST_CASE(a_slab_thicker_than_the_column_is_the_column) {
+    // A thickness of 1e15 d once gave zero slabs and an index past the end (SIGSEGV).
+    const Pack pack = sgmp::testing::jittered_fcc_pack(500, 1.05, 0.01, 1);
+    const Measurement m = measure(pack, MeasureOptions{});
+    const auto profile = packing_fraction_profile(pack.particles, control_volume(), -0.5, 0.5,
+                                                  1e15 * m.mean_diameter);
+    BOOST_TEST_REQUIRE(profile.phi.size() == 1u);
+    BOOST_TEST(std::abs(profile.phi[0] - m.phi) <= 1e-10);  // the column is the control volume
+    MeasureOptions huge;
+    for (const double slab : {1e15, 1e308, std::numeric_limits<double>::infinity(),
+                              std::numeric_limits<double>::quiet_NaN()}) {
+        huge.slab_thickness = slab;
+        BOOST_CHECK_THROW(measure(pack, huge), std::invalid_argument);
+    }
 }
 
 BOOST_AUTO_TEST_CASE(bad_regions_and_options_are_refused) {

@@ -102,8 +102,9 @@ void validate(const MeasureOptions& o) {
                              "--gr-range / --gr-bin must be at most 100000 bins");
     }
     // Bounds that keep memory finite: slabs are counted below, bonds grow as the cube.
-    if (o.slab_thickness < 1e-3) {
-        throw ParameterError("slab", format_number(o.slab_thickness), "must be at least 0.001 d");
+    if (o.slab_thickness < 1e-3 || o.slab_thickness > 1e6) {
+        throw ParameterError("slab", format_number(o.slab_thickness),
+                             "must be at least 0.001 d and at most 1e6 d");
     }
     if (o.gr_range > 100.0) {
         throw ParameterError("gr_range", format_number(o.gr_range), "must be at most 100 d");

@@ -124,6 +124,25 @@ BOOST_AUTO_TEST_CASE(labels_never_reach_a_shell_through_gnuplot) {
     BOOST_TEST(drawn);
 }
 
+// Past `ulimit -f` a write fails like a full disk: one line, status 1, no temporary
+// (SIGXFSZ used to kill the tool with signal 25 and leave .m.tmp-PID/).
+BOOST_AUTO_TEST_CASE(a_file_size_limit_fails_like_a_full_disk) {
+    const std::string pour =
+        std::string(SGMP_SOURCE_DIR) + "/data/reference/n3000-mu0.5-seed1.xyz.gz";
+    fs::remove_all(scratch() / "limited");
+    const Result r = sgmp::testing::run_command(
+        "cd '" + scratch().string() + "' && ulimit -f 4 && '" + kTool.string() + "' measure '" +
+            pour + "' --no-voronoi --out limited",
+        scratch());
+    BOOST_TEST(r.status == 1, r.err);
+    BOOST_TEST(lines(r.err) == 1u, r.err);
+    BOOST_TEST(r.err.rfind("sgmp-compare: ", 0) == 0u, r.err);
+    BOOST_TEST(!fs::exists(scratch() / "limited"));
+    for (const auto& entry : fs::directory_iterator(scratch())) {
+        BOOST_TEST(entry.path().filename().string().rfind(".limited.tmp", 0) != 0u, entry.path());
+    }
+}
+
 BOOST_AUTO_TEST_CASE(bad_pack_files_give_one_line_and_status_1) {
     write("empty.xyz", "");
     write("short.xyz", "3\n" + kHeader + "1 0 0 0 0.05 0\n2 0.2 0 0 0.05 0\n");

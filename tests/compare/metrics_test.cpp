@@ -1,6 +1,6 @@
 #include <boost/test/unit_test.hpp>
-#include <limits>
 #include <cmath>
+#include <limits>
 
 #include "sgmp/compare/measure.hpp"
 #include "sgmp/compare/metrics_output.hpp"

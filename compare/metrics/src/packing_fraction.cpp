@@ -68,8 +68,8 @@ PhiProfile packing_fraction_profile(const std::vector<Particle>& particles,
     profile.thickness = thickness;
     // At least one slab: a slab thicker than the column is the column (the rounding guard
     // must not round a tiny quotient down to none).
-    const auto slabs = static_cast<std::size_t>(
-        std::max(1.0, std::ceil((y1 - y0) / thickness - 1e-12)));
+    const auto slabs =
+        static_cast<std::size_t>(std::max(1.0, std::ceil((y1 - y0) / thickness - 1e-12)));
     for (std::size_t k = 0; k < slabs; ++k) {
         profile.y_lo.push_back(y0 + static_cast<double>(k) * thickness);
         profile.y_hi.push_back(std::min(y1, y0 + static_cast<double>(k + 1) * thickness));

@@ -82,6 +82,9 @@ void install_interrupt_handler(const std::string& program, std::function<bool()>
     action.sa_flags = SA_RESTART;
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
+    // Past `ulimit -f` a write then fails with EFBIG, reported and cleaned up like ENOSPC,
+    // instead of the signal killing the process with its temporaries in place.
+    std::signal(SIGXFSZ, SIG_IGN);
 }
 
 void remove_registered_temporaries() {

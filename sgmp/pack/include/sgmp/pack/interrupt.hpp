@@ -20,7 +20,9 @@ inline constexpr int kInterruptedStatus = 130;
 /// Installs the handlers. On a signal, `on_interrupt` (when given) is called from the
 /// watcher thread; when it returns true the program has promised to stop by itself (it
 /// polls a flag), otherwise every registered temporary is removed, "PROGRAM: interrupted
-/// by SIGINT" is printed and the process exits with kInterruptedStatus.
+/// by SIGINT" is printed and the process exits with kInterruptedStatus. SIGXFSZ is
+/// ignored, so a write past the file-size limit fails like a full disk (one line, status 1,
+/// no temporary left).
 void install_interrupt_handler(const std::string& program, std::function<bool()> on_interrupt = {});
 
 /// Removes every registered temporary now (what an interrupt does before exiting).

@@ -1,6 +1,7 @@
 // sgmp-compare measure, report and header: metrics of single packs, the agreement report of
 // two groups of packs, and one pack's provenance keys for scripts.
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -14,9 +15,9 @@
 #include "sgmp/pack/pack_file.hpp"
 
 namespace sgmp::compare::cli {
-namespace {
-
 namespace fs = std::filesystem;
+
+namespace {
 
 struct MeasureOptions {
     std::vector<std::string> packs;
@@ -84,8 +85,26 @@ void check_labels(const std::string& label_a, const std::string& label_b) {
     }
 }
 
+/// One pack is one seed: a file given twice (by any spelling of its path) would count as
+/// two seeds with no spread between them.
+void check_distinct(const std::vector<std::string>& a, const std::vector<std::string>& b) {
+    std::map<std::string, std::string> seen;  // canonical path -> as given
+    for (const auto* list : {&a, &b}) {
+        for (const auto& path : *list) {
+            std::error_code error;
+            const std::string key = fs::weakly_canonical(path, error).string();
+            const auto [it, fresh] = seen.emplace(error ? path : key, path);
+            if (!fresh) {
+                throw UsageError("pack '" + path + "' is given twice (as '" + it->second +
+                                 "'): each pack counts once");
+            }
+        }
+    }
+}
+
 int run_report(ReportOptions& o, const std::string& cmd) {
     check_labels(o.label_a, o.label_b);
+    check_distinct(o.a, o.b);
     apply(o.common);
     std::vector<Group> groups{measure_group(o.label_a, o.a, o.common),
                               measure_group(o.label_b, o.b, o.common)};

@@ -196,6 +196,9 @@ BOOST_AUTO_TEST_CASE(usage_errors_give_status_2) {
         "measure a.xyz dir/a.xyz --out o",                             // same output names
         "report --a a.xyz --b b.xyz --label-a X --label-b X --out o",  // same labels
         "report --a a.xyz --out o",                                    // no --b
+        "report --a a.xyz a.xyz --b b.xyz c.xyz --out o",              // one pack twice
+        "report --a a.xyz --b b.xyz ./a.xyz --out o",                  // the same, respelt
+        "measure a.xyz --out o --slab 1e15",                           // beyond 1e6 d
         "frobnicate",
     };
     for (const auto& arguments : bad) {

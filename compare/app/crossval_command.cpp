@@ -3,6 +3,7 @@
 // checks of a run's metrics against a stored baseline.
 #include <fstream>
 #include <iostream>
+#include <map>
 
 #include "command_support.hpp"
 #include "sgmp/compare/baseline.hpp"
@@ -63,6 +64,27 @@ nlohmann::ordered_json manifest_json(const std::vector<ManifestEntry>& manifest)
     return list;
 }
 
+/// The count a manifest line states is the count of the pack it names (a pack of another
+/// count would leave its group silently).
+void check_counts(const std::vector<ManifestEntry>& manifest, const std::vector<Group>& groups,
+                  const std::string& source) {
+    std::map<std::string, std::size_t> held;  // path -> spheres in the file
+    for (const auto& g : groups) {
+        for (const auto& p : g.packs) {
+            held.emplace(p.source, p.count);
+        }
+    }
+    for (std::size_t i = 0; i < manifest.size(); ++i) {
+        const auto found = held.find(manifest[i].path);
+        if (found != held.end() && found->second != manifest[i].count) {
+            throw InputError(source, 0,
+                             manifest[i].path + ": the manifest says " +
+                                 std::to_string(manifest[i].count) + " spheres, the pack holds " +
+                                 std::to_string(found->second));
+        }
+    }
+}
+
 int run_crossval(CrossvalOptions& o, const std::string& command) {
     auto manifest_in = open_input(o.manifest);
     const auto manifest = read_manifest(manifest_in, o.manifest);
@@ -92,6 +114,7 @@ int run_crossval(CrossvalOptions& o, const std::string& command) {
     for (std::size_t g = 0; g < plan.labels.size(); ++g) {
         groups.push_back(measure_group(plan.labels[g], plan.paths[g], o.common));
     }
+    check_counts(manifest, groups, o.manifest);
     Report report;
     try {
         report = build_report(std::move(groups), plan.plan);

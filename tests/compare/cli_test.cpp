@@ -87,6 +87,18 @@ BOOST_AUTO_TEST_CASE(crossval_judges_a_stiff_set_as_a_class_of_its_own) {
     const std::string csv = sgmp::testing::read_bytes(scratch() / "cv-limit" / "report.csv");
     BOOST_TEST(csv.find("300,relaxed,DEM mu=0 (stiff),phi,") != std::string::npos);
     BOOST_TEST(csv.find(",verdict,margin,ci_low,ci_high,mdd,") != std::string::npos);
+    // A manifest count that contradicts its file: one line, status 1, no report.
+    write("wrong-count.csv",
+          "role,group,count,seed,seconds,path\n"
+          "candidate,relaxed,200,1,0.1,h1.xyz\ncandidate,relaxed,300,2,0.1,h2.xyz\n"
+          "reference,DEM mu=0,300,1,20,soft1.xyz\nreference,DEM mu=0,300,2,20,soft2.xyz\n");
+    const Result wrong = run("crossval --manifest wrong-count.csv --no-pictures --out cv-wrong");
+    BOOST_TEST(wrong.status == 1);
+    BOOST_TEST(lines(wrong.err) == 1u, wrong.err);
+    BOOST_TEST(wrong.err.find("h1.xyz: the manifest says 200 spheres, the pack holds 300") !=
+                   std::string::npos,
+               wrong.err);
+    BOOST_TEST(!fs::exists(scratch() / "cv-wrong"));
 }
 
 // Labels a user sets (manifest groups, --label-a/--label-b; report refuses quotes in its

@@ -41,6 +41,7 @@ struct Options {
     long long count = 0;
     std::string out;
     bool force = false;
+    bool keep_uncertified = false;
     PackRequest request;
     /// --sweep-positions is one stage; --sweep-stages, when given, overrides it.
     int sweep_positions = ProtocolParams{}.sweep_stages.front();
@@ -198,6 +199,9 @@ void add_relax(CLI::App& app, Options& o) {
     app.add_option("--relax-tangential-ratio", r.tangential_ratio,
                    "tangential over normal contact stiffness of --relax frictional, in (0, 1]")
         ->capture_default_str();
+    app.add_flag("--keep-uncertified", o.keep_uncertified,
+                 "write a relaxed pack that is not a certified equilibrium (its header says "
+                 "certified=false); without it such a pack is refused: exit 1, no file");
 }
 
 /// The request of the command line: the count's range and the sweep stages checked
@@ -252,6 +256,19 @@ void check_out(const Options& o) {
     }
 }
 
+/// Why a relaxed pack is not certified, in one line.
+std::string uncertified_reason(const Pack& pack) {
+    const auto& m = pack.metadata;
+    if (m.get("certificate") != std::optional<std::string>("frictionless")) {
+        return "the frictional relaxation has no equilibrium certificate yet";
+    }
+    return "the relaxed pack is not a certified equilibrium: sphere " +
+           m.get("certificate_worst_id").value_or("?") + " is out of balance by " +
+           m.get("certificate_residual_max").value_or("?") + " m*g (at most " +
+           m.get("certificate_residual_tolerance").value_or("?") + "), deepest overlap " +
+           m.get("certificate_overlap_max").value_or("?") + " d";
+}
+
 int run_pack(const Options& o) {
     const PackRequest request = to_request(o);
     check_out(o);
@@ -264,6 +281,11 @@ int run_pack(const Options& o) {
     });
     const double seconds = progress.seconds();
     progress.finish();
+    if (pack.metadata.get("certified") == std::optional<std::string>("false") &&
+        !o.keep_uncertified) {
+        throw std::runtime_error(uncertified_reason(pack) +
+                                 "; --keep-uncertified writes it with certified=false");
+    }
     write_pack_file(o.out, pack, o.force);
     const double d = *pack.metadata.get_number("diameter");
     const OverlapCount overlaps = count_overlaps(pack.particles, Container{}, 1e-9 * d);

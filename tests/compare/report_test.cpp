@@ -153,6 +153,25 @@ BOOST_AUTO_TEST_CASE(every_row_carries_its_interval_margin_and_mdd) {
     }
 }
 
+BOOST_AUTO_TEST_CASE(a_relaxed_pack_without_a_true_certificate_is_not_judged) {
+    Group relaxed = group("R", 1.05, 2);
+    relaxed.packs[0].provenance.emplace_back("relax", "frictionless");
+    relaxed.packs[0].provenance.emplace_back("certified", "false");
+    relaxed.packs[0].provenance.emplace_back("certificate_residual_max", "1.45");
+    const Report r = build_report({relaxed, group("B", 1.05, 3)}, plan_of({{0, 1}}));
+    const Comparison& c = r.comparisons.at(0);
+    BOOST_TEST(c.invalid == "1 of 5 packs not certified (largest residual 1.45 m*g)");
+    BOOST_TEST(c.count_of(Verdict::Info) == c.rows.size());
+    BOOST_TEST(c.row("phi").tolerance_rule.rfind("not certified (would be ", 0) == 0u);
+    // Certified, or claiming no equilibrium (no relax key): judged.
+    relaxed.packs[0].provenance.pop_back();                      // the residual
+    relaxed.packs[0].provenance.back() = {"certified", "true"};  // was false
+    const Report ok = build_report({relaxed, group("B", 1.05, 3)}, plan_of({{0, 1}}));
+    BOOST_TEST(ok.comparisons.at(0).invalid.empty());
+    BOOST_TEST(ok.comparisons.at(0).row("phi").verdict == Verdict::Agree);
+    BOOST_TEST(uncertified_reason(group("T", 1.05, 1).packs[0]).empty());
+}
+
 BOOST_AUTO_TEST_CASE(physically_impossible_values_are_refused) {
     const Group g = group("A", 1.05, 1);
     BOOST_CHECK_NO_THROW(check_physical(g.packs[0]));

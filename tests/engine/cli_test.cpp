@@ -92,8 +92,15 @@ BOOST_AUTO_TEST_CASE(relax_none_writes_the_bytes_of_no_relaxation_and_relaxed_pa
     BOOST_TEST(s.run(common + "'" + s.path("none.xyz") + "' --relax none").status == 0);
     BOOST_TEST(sgmp::testing::read_bytes(s.path("plain.xyz")) ==
                sgmp::testing::read_bytes(s.path("none.xyz")));
-    const Run a = s.run(common + "'" + s.path("a.xyz") + "' --relax frictionless");
-    const Run b = s.run(common + "'" + s.path("b.xyz") + "' --relax frictionless");
+    // Not certified (certificate_test.cpp): refused without --keep-uncertified, no file.
+    const Run refused = s.run(common + "'" + s.path("r.xyz") + "' --relax frictionless");
+    BOOST_TEST(refused.status == 1);
+    BOOST_TEST(refused.err.find("not a certified equilibrium") != std::string::npos, refused.err);
+    BOOST_TEST(!std::filesystem::exists(s.path("r.xyz")));
+    const Run a =
+        s.run(common + "'" + s.path("a.xyz") + "' --relax frictionless --keep-uncertified");
+    const Run b =
+        s.run(common + "'" + s.path("b.xyz") + "' --relax frictionless --keep-uncertified");
     BOOST_TEST(a.status == 0);
     BOOST_TEST(b.status == 0);
     BOOST_TEST(sgmp::testing::read_bytes(s.path("a.xyz")) ==

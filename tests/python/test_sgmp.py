@@ -38,7 +38,7 @@ def run(*args):
             dict(count=150, arrangement="loose-random", seed=2, relax="frictionless",
                  relax_stages=3, fall="step", fall_step=0.002),
             ["--relax", "frictionless", "--relax-stages", "3", "--fall", "step",
-             "--fall-step", "0.002"],
+             "--fall-step", "0.002", "--keep-uncertified"],
         ),
     ],
 )

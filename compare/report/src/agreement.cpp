@@ -225,6 +225,24 @@ Comparison compare_at(const Group& candidate, const Group& reference, std::size_
     for (const auto& rule : metric_rules()) {
         c.rows.push_back(judge(rule, a, b));
     }
+    std::size_t uncertified = 0;
+    std::string reason;
+    for (const auto* p : all) {
+        const std::string why = uncertified_reason(*p);
+        uncertified += why.empty() ? 0 : 1;
+        reason = reason.empty() ? why : reason;
+    }
+    if (uncertified > 0) {
+        c.invalid = std::to_string(uncertified) + " of " + std::to_string(all.size()) +
+                    " packs not certified (" + reason + ")";
+        for (auto& row : c.rows) {
+            if (row.verdict != Verdict::Info) {
+                row.tolerance_rule =
+                    "not certified (would be " + std::string(to_string(row.verdict)) + ")";
+                row.verdict = Verdict::Info;
+            }
+        }
+    }
     c.candidate_curves = curves_of(a);
     c.reference_curves = curves_of(b);
     return c;
@@ -471,6 +489,25 @@ bool of_several_sizes(const PackSummary& pack) {
 }
 
 }  // namespace
+
+std::string uncertified_reason(const PackSummary& pack) {
+    std::string relax;
+    std::string certified;
+    std::string residual;
+    for (const auto& [key, value] : pack.provenance) {
+        relax = key == "relax" ? value : relax;
+        certified = key == "certified" ? value : certified;
+        residual = key == "certificate_residual_max" ? value : residual;
+    }
+    if (relax.empty() || relax == "none" || certified == "true") {
+        return "";
+    }
+    if (certified.empty()) {
+        return "relaxed without an equilibrium certificate";
+    }
+    return residual.empty() ? "no equilibrium certificate for --relax " + relax
+                            : "largest residual " + residual + " m*g";
+}
 
 void check_physical(const PackSummary& pack) {
     const auto& names = coordination_tolerance_names();

@@ -69,9 +69,13 @@ StandIn stand_in_of(const CrossValidation& cv, const std::string& candidate, std
     std::vector<std::pair<std::size_t, std::vector<MetricRow>>> rows;
     std::optional<double> speedup;
     std::size_t speedup_count = 0;
+    std::string invalid;
     for (const auto& row : cv.rows) {
         if (row.group != candidate || row.against[r].rows.empty()) {
             continue;
+        }
+        if (invalid.empty() && !row.against[r].invalid.empty()) {
+            invalid = "N = " + std::to_string(row.count) + ": " + row.against[r].invalid;
         }
         rows.emplace_back(row.count, row.against[r].rows);
         if (row.against[r].speedup && row.count >= speedup_count) {
@@ -84,6 +88,10 @@ StandIn stand_in_of(const CrossValidation& cv, const std::string& candidate, std
     s.reference = cv.references[r];
     s.speedup = speedup;
     s.speedup_count = speedup_count;
+    if (!invalid.empty()) {
+        s.decision = StandInDecision::Invalid;
+        s.invalid = invalid;
+    }
     return s;
 }
 
@@ -142,6 +150,8 @@ std::string_view to_string(StandInDecision decision) {
             return "differs";
         case StandInDecision::Undecided:
             return "undecided";
+        case StandInDecision::Invalid:
+            return "invalid";
     }
     return "undecided";
 }
@@ -332,6 +342,7 @@ CrossValidation cross_validate(const Report& report, const std::vector<ManifestE
         auto& v = row.against[static_cast<std::size_t>(slot - cv.references.begin())];
         v.reference = c.reference;
         v.rows = c.rows;
+        v.invalid = c.invalid;
         v.reference_seconds = mean_seconds(manifest, c.reference, Role::Reference, c.count);
     }
     cv.counts.assign(counts.begin(), counts.end());

@@ -65,6 +65,10 @@ std::string count_list(const std::vector<std::size_t>& counts) {
 std::string stand_in_sentence(const StandIn& s) {
     const std::size_t judged = s.agree + s.differ + s.inconclusive;
     std::ostringstream out;
+    if (s.decision == StandInDecision::Invalid) {
+        out << "invalid, not judged: " << s.invalid;
+        return out.str();
+    }
     if (s.decision == StandInDecision::Differs) {
         out << "differs on " << s.worst_metric << " at N = " << s.worst_count << " by "
             << sig(s.worst_ratio) << "× its margin (" << s.differ_familywise << " of " << judged
@@ -110,7 +114,9 @@ void stand_in_markdown(std::ostringstream& md, const CrossValidation& cv) {
           "page). A mode *stands in* for a class when no test differs under Holm's procedure "
           "over every judged metric and count (family-wise error ≤ 5 %) and at every count at "
           "least half the judged metrics agree; it *differs* when Holm keeps a difference; "
-          "otherwise it is *undecided*. Speed: the DEM pour's mean wall time over the mode's "
+          "otherwise it is *undecided*. A relaxed mode whose packs are not certified "
+          "mechanical equilibria is *invalid* and not judged. Speed: the DEM pour's mean wall time "
+          "over the mode's "
           "at the largest count.\n\n";
     for (std::size_t r = 0; r < cv.references.size(); ++r) {
         std::vector<const StandIn*> per;
@@ -437,6 +443,7 @@ Json crossval_json(const CrossValidation& cv) {
                              {"reference", s.reference},
                              {"stands_in", s.stands_in()},
                              {"decision", to_string(s.decision)},
+                             {"invalid", s.invalid},
                              {"agree", s.agree},
                              {"differ", s.differ},
                              {"differ_familywise", s.differ_familywise},

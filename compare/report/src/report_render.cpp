@@ -166,6 +166,9 @@ std::vector<std::string> rule_statements() {
         "Contact metrics (Z and P(Z) at gap tolerance delta) are info where the two groups' "
         "deepest overlaps (mean over packs) differ by more than delta d: a soft pack's gaps "
         "are shifted by its overlaps, so the two count different things there.",
+        "Relaxed packs (header relax = frictionless or frictional) claim a mechanical "
+        "equilibrium and are judged only with certified = true (the engine's equilibrium "
+        "certificate); otherwise their comparisons are not judged (info, 'not certified').",
         "Stands in: no test differs under Holm's procedure on the tests' p-values of "
         "|difference| <= m over every judged metric and count (family-wise error <= 5 %), and "
         "at every count at least half the judged metrics agree. Differs: Holm keeps a "
@@ -339,6 +342,7 @@ Json render_json(const Report& report, const ReportContext& context) {
                                    {"candidate_packs", c.candidate_packs},
                                    {"reference_packs", c.reference_packs},
                                    {"differ", c.count_of(Verdict::Differ)},
+                                   {"invalid", c.invalid},
                                    {"metrics", rows}});
     }
     j["comparisons"] = comparisons;

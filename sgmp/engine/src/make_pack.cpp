@@ -1,5 +1,7 @@
 #include "sgmp/engine/make_pack.hpp"
 
+#include "sgmp/engine/equilibrium_certificate.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -106,6 +108,28 @@ void record_relaxation(const RelaxParams& params, const RelaxStats& stats, Metad
     m.set_number("relax_finish_move_mean", stats.finish_move_mean);
 }
 
+/// The equilibrium certificate's header keys (equilibrium_certificate.hpp); a frictional
+/// pack has no certificate yet: certified=false, certificate=none.
+void record_certificate(const std::optional<EquilibriumCertificate>& c,
+                        const std::vector<Particle>& particles, Metadata& m) {
+    if (!c) {
+        m.set("certified", "false");
+        m.set("certificate", "none");
+        return;
+    }
+    const CertificateOptions options;
+    m.set("certified", c->certified ? "true" : "false");
+    m.set("certificate", "frictionless");
+    m.set_number("certificate_gap_tolerance", options.gap_tolerance_over_d);
+    m.set_number("certificate_residual_tolerance", options.residual_tolerance);
+    m.set_number("certificate_residual_max", c->residual_max);
+    m.set_number("certificate_residual_sum", c->residual_sum);
+    m.set_integer("certificate_worst_id", particles.at(c->worst_sphere).id);
+    m.set_integer("certificate_contacts", static_cast<long long>(c->contacts));
+    m.set_integer("certificate_underconstrained", static_cast<long long>(c->underconstrained));
+    m.set_number("certificate_overlap_max", c->overlap_max_over_d);
+}
+
 }  // namespace
 
 void validate(const PackRequest& request) {
@@ -170,6 +194,11 @@ Pack make_pack(const PackRequest& request, const ProgressCallback& progress, Pac
     release_free_memory();  // the neighbour grid's, before the relaxation and the checks
     if (request.relax.mode != RelaxMode::None) {
         local.relax = relax_pack(particles, container, request.relax, d);
+        if (request.relax.mode == RelaxMode::Frictionless) {
+            local.certificate = certify_frictionless(particles, container, d);
+            local.certificate->residual.clear();  // the summary is kept, not the fields
+            local.certificate->force.clear();
+        }
     }
 
     Pack pack;
@@ -186,6 +215,9 @@ Pack make_pack(const PackRequest& request, const ProgressCallback& progress, Pac
     m.set_integer("stalled", static_cast<long long>(local.stalled));
     m.set_integer("move_limit", static_cast<long long>(local.move_limit));
     record_relaxation(request.relax, local.relax, m);
+    if (request.relax.mode != RelaxMode::None) {
+        record_certificate(local.certificate, pack.particles, m);
+    }
     if (stats != nullptr) {
         *stats = local;
     }

@@ -23,7 +23,7 @@ make_pack small-dense-2000 --count 2000 --arrangement small-dense --seed 5
 make_pack column-1500 --count 1500 --arrangement single-column --seed 6
 make_pack bidisperse-3000 --count 3000 --arrangement loose-random --seed 7 --size-modes 1:0.7,0.5:0.3
 make_pack roll-2000 --count 2000 --arrangement loose-random --seed 8 --contact roll --walls block
-make_pack relaxed-2000 --count 2000 --arrangement loose-random --seed 9 --relax frictionless
+make_pack relaxed-2000 --count 2000 --arrangement loose-random --seed 9 --relax frictionless --keep-uncertified
 for pour in n0750-mu0.5-seed1 n0300-mu0.01-seed2; do
     cp -n "$repo/data/reference/$pour.xyz.gz" "$work/packs/"
 done

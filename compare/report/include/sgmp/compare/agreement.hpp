@@ -160,6 +160,9 @@ struct Comparison {
     std::size_t candidate_packs = 0;
     std::size_t reference_packs = 0;
     std::vector<MetricRow> rows;  // in metric_rules() order
+    /// Set when a pack claims an equilibrium it does not have (uncertified_reason): every
+    /// row is then info, with this reason, and no verdict is given.
+    std::string invalid;
     GroupCurves candidate_curves;
     GroupCurves reference_curves;
 
@@ -195,6 +198,12 @@ Report build_report(std::vector<Group> groups, ReportPlan plan);
 /// the rules above.
 MetricRow judge(const MetricRule& rule, const std::vector<const PackSummary*>& candidate,
                 const std::vector<const PackSummary*>& reference);
+
+/// Why a pack may not be judged, or "" when it may: a relaxed pack (provenance `relax`
+/// frictionless or frictional) claims a mechanical equilibrium and is judged only with
+/// `certified=true` (the engine's equilibrium certificate); packs that claim none (the
+/// thesis' protocol, DEM pours) are judged as they are.
+std::string uncertified_reason(const PackSummary& pack);
 
 /// Throws std::invalid_argument, naming the pack, the value and the rule, when a summary
 /// holds a value outside its physical range: a scalar that is not finite, φ outside

@@ -28,6 +28,7 @@ const std::vector<std::string>& headline_metrics();
 struct HeadlineVerdict {
     std::string reference;
     std::vector<MetricRow> rows;  // every metric of the comparison, metric_rules() order
+    std::string invalid;          // Comparison::invalid: not judged
     std::optional<double> reference_seconds;  // mean wall seconds of the reference's packs
     std::optional<double> speedup;            // reference_seconds / candidate seconds
 
@@ -55,8 +56,9 @@ inline constexpr double kFamilyAlpha = 0.05;
 /// The least share of a count's judged metrics that must agree for a stand-in there.
 inline constexpr double kStandInAgreeShare = 0.5;
 
-enum class StandInDecision { StandsIn, Differs, Undecided };
-/// "stands in", "differs", "undecided".
+enum class StandInDecision { StandsIn, Differs, Undecided, Invalid };
+/// "stands in", "differs", "undecided", "invalid" (a pack claims an equilibrium it does
+/// not have: not judged).
 std::string_view to_string(StandInDecision decision);
 
 /// Whether one group stands in for another, under a stated family-wise rule.
@@ -79,6 +81,7 @@ struct StandIn {
     std::size_t counts = 0;             // counts compared
     std::size_t counts_standing = 0;    // counts where it stands in by the rule
     StandInDecision decision = StandInDecision::Undecided;
+    std::string invalid;            // why, for an invalid one (the first count's reason)
     std::optional<double> speedup;  // at the largest count compared
     std::size_t speedup_count = 0;
     /// The largest difference kept by Holm (else the largest row `differ`): metric label,

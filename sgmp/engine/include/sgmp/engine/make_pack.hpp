@@ -14,6 +14,7 @@
 #include <string>
 
 #include "sgmp/engine/arrangement.hpp"
+#include "sgmp/engine/equilibrium_certificate.hpp"
 #include "sgmp/engine/protocol_params.hpp"
 #include "sgmp/engine/relax.hpp"
 #include "sgmp/engine/relax_params.hpp"
@@ -48,6 +49,8 @@ struct PackStats {
     std::size_t stalled = 0;     ///< particles that moved stall_moves times without falling
     std::size_t move_limit = 0;  ///< particles that reached max_moves
     RelaxStats relax;            ///< the relaxation's, when one was asked for
+    /// A frictionless relaxation's equilibrium certificate (its per-sphere fields empty).
+    std::optional<EquilibriumCertificate> certificate;
 };
 
 /// Called as (particles dropped, total) now and then while packing.
@@ -59,7 +62,9 @@ void validate(const PackRequest& request);
 
 /// The pack made by the request, with metadata: generator=sgmp, version, count, diameter,
 /// phi_target, arrangement, seed, every protocol parameter, container, start_height and
-/// the statistics; with a relaxation, its parameters and statistics follow (`relax_*`). Throws
+/// the statistics; with a relaxation, its parameters and statistics follow (`relax_*`),
+/// then its equilibrium certificate (`certified`, `certificate`, `certificate_*`:
+/// equilibrium_certificate.hpp; a frictional relaxation has none yet: certified=false). Throws
 /// ParameterError (see `validate`) for bad requests.
 Pack make_pack(const PackRequest& request, const ProgressCallback& progress = {},
                PackStats* stats = nullptr);

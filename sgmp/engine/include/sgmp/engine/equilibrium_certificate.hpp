@@ -1,0 +1,53 @@
+#pragma once
+/// @file equilibrium_certificate.hpp
+/// The certificate that a pack of frictionless spheres is a mechanical equilibrium under
+/// gravity: non-negative contact forces exist that balance every sphere's weight.
+///
+/// Contacts: every pair with gap |cᵢ − cⱼ| − rᵢ − rⱼ ≤ ε·d and every sphere whose gap to
+/// a wall or the floor is ≤ ε·d (ε = gap_tolerance_over_d, default 10⁻⁶; d the scale
+/// diameter). Each contact c carries a normal force f_c ≥ 0, in units of m·g (m the mass of
+/// a sphere of diameter d); nᵢ,c is the unit normal pushing sphere i away from its partner
+/// (the wall's inward normal for a wall). Sphere i of weight wᵢ = (dᵢ/d)³ has the residual
+///
+///     Rᵢ = Σ_c f_c·nᵢ,c − wᵢ·ŷ        (ŷ up; gravity −ŷ)
+///
+/// The forces are the non-negative least-squares solution, min ½·Σᵢ|Rᵢ|² over f ≥ 0, by
+/// a spectral projected gradient (src/equilibrium_certificate.cpp). Any f ≥ 0 is a valid
+/// set of forces, so a small residual certifies however the solver stopped; a large one
+/// says no forces were found (the tests check it against scipy's bounded least squares and
+/// HiGHS's least L1 residual: tests/python/test_certificate.py).
+/// The pack is certified when no pair or wall overlaps by more than ε·d and every |Rᵢ| is
+/// at most residual_tolerance (default 10⁻³ m·g).
+#include <cstddef>
+#include <vector>
+
+#include "sgmp/pack/geometry.hpp"
+#include "sgmp/pack/particle.hpp"
+
+namespace sgmp::engine {
+
+struct CertificateOptions {
+    double gap_tolerance_over_d = 1e-6;
+    double residual_tolerance = 1e-3;  ///< in m·g
+};
+
+struct EquilibriumCertificate {
+    bool certified = false;
+    double residual_max = 0.0;         ///< largest |Rᵢ|, m·g
+    std::size_t worst_sphere = 0;      ///< index of the sphere with residual_max
+    double residual_sum = 0.0;         ///< Σᵢ|Rᵢ|₁, the LP optimum, m·g
+    double weight_sum = 0.0;           ///< Σᵢ wᵢ, m·g
+    std::size_t contacts = 0;          ///< pairs plus wall and floor contacts
+    std::size_t underconstrained = 0;  ///< spheres on fewer than 3 contacts
+    double overlap_max_over_d = 0.0;   ///< deepest pair or wall overlap, over d
+    std::vector<double> residual;      ///< |Rᵢ| per sphere, m·g
+    std::vector<double> force;         ///< f_c per contact, m·g, in contact order
+};
+
+/// Certifies `particles` (scale diameter `diameter`) in `container` as above; throws
+/// std::invalid_argument for a diameter ≤ 0 or tolerances out of range.
+EquilibriumCertificate certify_frictionless(const std::vector<Particle>& particles,
+                                            const Container& container, double diameter,
+                                            const CertificateOptions& options = {});
+
+}  // namespace sgmp::engine

@@ -1,0 +1,125 @@
+// The equilibrium certificate (equilibrium_certificate.hpp) on cases with a closed-form
+// answer, and on DEM pours, whose settled spheres are balanced by their contact forces.
+#include <boost/test/unit_test.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "sgmp/engine/equilibrium_certificate.hpp"
+#include "sgmp/pack/pack_file.hpp"
+
+using namespace sgmp;
+using namespace sgmp::engine;
+
+namespace {
+
+const Container kBox{};
+constexpr double kD = 0.1;
+
+Particle sphere(double x, double y, double z, double d = kD) {
+    return Particle{0, Vec3(x, y, z), 0.5 * d, 0};
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(equilibrium_certificate)
+
+BOOST_AUTO_TEST_CASE(a_sphere_on_the_floor_is_balanced) {
+    const auto c = certify_frictionless({sphere(0, kBox.floor + 0.5 * kD, 0)}, kBox, kD);
+    BOOST_TEST(c.certified);
+    BOOST_TEST(c.contacts == 1u);
+    BOOST_TEST(c.force.at(0) == 1.0, boost::test_tools::tolerance(1e-12));  // its weight
+    BOOST_TEST(c.residual_max <= 1e-12);
+    BOOST_TEST(c.underconstrained == 1u);
+}
+
+BOOST_AUTO_TEST_CASE(a_floating_sphere_is_out_of_balance_by_its_weight) {
+    const auto c = certify_frictionless({sphere(0, kBox.floor + 0.51 * kD, 0)}, kBox, kD);
+    BOOST_TEST(!c.certified);
+    BOOST_TEST(c.contacts == 0u);
+    BOOST_TEST(c.residual_max == 1.0, boost::test_tools::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(a_column_carries_the_weight_above_each_contact) {
+    // Three spheres stacked on the floor: the floor carries 3, the pairs 2 and 1.
+    const double y0 = kBox.floor + 0.5 * kD;
+    const auto c = certify_frictionless(
+        {sphere(0, y0, 0), sphere(0, y0 + kD, 0), sphere(0, y0 + 2 * kD, 0)}, kBox, kD);
+    BOOST_TEST(c.certified);
+    BOOST_TEST_REQUIRE(c.contacts == 3u);
+    double total = 0.0;
+    for (const double f : c.force) {
+        total += f;
+    }
+    // 1 + 2 + 3, to the solver's target: every residual below 10⁻⁴ m·g.
+    BOOST_TEST(total == 6.0, boost::test_tools::tolerance(1e-4));
+    BOOST_TEST(c.residual_max <= 1e-4);
+    // A sphere half the size weighs 1/8.
+    const auto small =
+        certify_frictionless({sphere(0, kBox.floor + 0.25 * kD, 0, 0.5 * kD)}, kBox, kD);
+    BOOST_TEST(small.force.at(0) == 0.125, boost::test_tools::tolerance(1e-3));
+}
+
+BOOST_AUTO_TEST_CASE(a_sphere_on_two_others_needs_the_walls) {
+    // Two spheres on the floor, 1.6 d apart, and one resting on both: the lower ones are
+    // pushed apart, so without walls nothing holds them; against the walls all balance.
+    const double y0 = kBox.floor + 0.5 * kD;
+    const double half = 0.8 * kD;
+    const double lift = std::sqrt(kD * kD - half * half);
+    const auto loose = certify_frictionless(
+        {sphere(-half, y0, 0), sphere(half, y0, 0), sphere(0, y0 + lift, 0)}, kBox, kD);
+    BOOST_TEST(!loose.certified);
+    // Least squares over f ≥ 0 (closed form for this symmetric case; the floor balances the
+    // lower spheres' vertical load): the pair forces f leave |R_top| = 1 − 1.2·f and a
+    // thrust 0.8·f on each lower sphere; ½[(1 − 1.2 f)² + 2·(0.8 f)²] is least at
+    // f = 1.2 / (1.44 + 1.28) = 0.441, where the top keeps 1 − 1.2·f = 0.471 of its weight.
+    const double f = 1.2 / (1.44 + 2.0 * 0.64);
+    BOOST_TEST(loose.residual_max == 1.0 - 1.2 * f, boost::test_tools::tolerance(1e-3));
+    BOOST_TEST(loose.worst_sphere == 2u);
+    Container narrow = kBox;
+    narrow.x_min = -half - 0.5 * kD;
+    narrow.x_max = half + 0.5 * kD;
+    const auto held = certify_frictionless(
+        {sphere(-half, y0, 0), sphere(half, y0, 0), sphere(0, y0 + lift, 0)}, narrow, kD);
+    BOOST_TEST(held.certified);
+    BOOST_TEST(held.contacts == 6u);  // 2 pairs, 2 floor, 2 walls
+}
+
+BOOST_AUTO_TEST_CASE(an_overlap_deeper_than_the_tolerance_is_not_certified) {
+    const double y0 = kBox.floor + 0.5 * kD;
+    const auto c =
+        certify_frictionless({sphere(0, y0, 0), sphere(0, y0 + 0.999 * kD, 0)}, kBox, kD);
+    BOOST_TEST(c.residual_max <= 1e-12);  // balanced, but the spheres overlap by 1e-3 d
+    BOOST_TEST(!c.certified);
+    BOOST_TEST(c.overlap_max_over_d == 1e-3, boost::test_tools::tolerance(1e-9));
+}
+
+// A settled frictionless DEM pour (μ = 0; its contacts overlap by up to ~5·10⁻³ d) is in
+// balance on the normal forces of its overlapping pairs. Measured: largest residual
+// 0.025 m·g (4 spheres above 0.01, still creeping when the pour stopped), 0.066 m·g over
+// all 1002; the bound 0.05 and 10⁻⁴ of the weight keep that. A frictional pour (μ = 0.5)
+// leans on friction: most of its weight is out of frictionless balance (894 of 1002 m·g).
+BOOST_AUTO_TEST_CASE(a_settled_frictionless_pour_is_balanced) {
+    const Pack pack =
+        read_pack_file(std::string(SGMP_SOURCE_DIR) + "/data/reference/n1002-mu0-seed1.xyz.gz");
+    const double d = 2.0 * pack.particles.front().radius;
+    CertificateOptions options;
+    options.gap_tolerance_over_d = 0.0;  // the overlapping and touching pairs only
+    const auto began = std::chrono::steady_clock::now();
+    const auto c = certify_frictionless(pack.particles, Container{}, d, options);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+    BOOST_TEST_MESSAGE("mu = 0 pour, N = 1002: largest residual "
+                       << c.residual_max << " m g, " << c.contacts << " contacts, " << seconds
+                       << " s");
+    BOOST_TEST(c.residual_max <= 0.05);
+    BOOST_TEST(c.residual_sum <= 1e-4 * c.weight_sum);
+    BOOST_TEST(!c.certified);  // it overlaps
+    const Pack frictional =
+        read_pack_file(std::string(SGMP_SOURCE_DIR) + "/data/reference/n1002-mu0.5-seed1.xyz.gz");
+    const auto f = certify_frictionless(frictional.particles, Container{}, d, options);
+    BOOST_TEST(f.residual_sum >= 0.5 * f.weight_sum);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -1,0 +1,114 @@
+"""The equilibrium certificate in a relaxed pack's header, checked by independent code:
+scipy's kd-tree for the contacts, scipy's bounded least squares (lsq_linear) for the
+residual the pack's own solver reports, and HiGHS (linprog) for the least L1 residual any
+non-negative forces can reach, which decides certification whatever the norm."""
+
+import os
+import pathlib
+import subprocess
+
+import numpy as np
+import pytest
+
+scipy = pytest.importorskip("scipy")
+from scipy.optimize import linprog, lsq_linear  # noqa: E402
+from scipy.sparse import coo_matrix  # noqa: E402
+from scipy.spatial import cKDTree  # noqa: E402
+
+SOURCE = pathlib.Path(os.environ.get("SGMP_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
+SGMP = os.environ.get("SGMP_EXECUTABLE", SOURCE / "build" / "sgmp" / "sgmp")
+HALF = 0.625  # the thesis container: |x|, |z| <= 0.625, floor y = -0.625
+
+
+def read_xyz(path):
+    lines = pathlib.Path(path).read_text().splitlines()
+    header = dict(kv.split("=", 1) for kv in lines[1].split() if "=" in kv)
+    rows = np.array([[float(v) for v in line.split()[1:5]] for line in lines[2:2 + int(lines[0])]])
+    return header, rows[:, :3], rows[:, 3]
+
+
+def balance_matrix(centres, radii, d, tolerance):
+    """Columns: one unit normal force per contact (gap <= tolerance*d); rows: 3 per sphere."""
+    n = len(radii)
+    rows, cols, vals = [], [], []
+    column = 0
+    for i, j in sorted(cKDTree(centres).query_pairs(2 * radii.max() + tolerance * d)):
+        gap = np.linalg.norm(centres[i] - centres[j]) - radii[i] - radii[j]
+        if gap <= tolerance * d:
+            normal = (centres[i] - centres[j]) / np.linalg.norm(centres[i] - centres[j])
+            for a in range(3):
+                rows += [3 * i + a, 3 * j + a]
+                cols += [column, column]
+                vals += [normal[a], -normal[a]]
+            column += 1
+    walls = [(1, -HALF, 1.0), (0, -HALF, 1.0), (0, HALF, -1.0), (2, -HALF, 1.0), (2, HALF, -1.0)]
+    for i in range(n):
+        for axis, plane, sign in walls:
+            gap = sign * (centres[i, axis] - plane) - radii[i]
+            if gap <= tolerance * d:
+                rows.append(3 * i + axis)
+                cols.append(column)
+                vals.append(sign)
+                column += 1
+    a = coo_matrix((vals, (rows, cols)), shape=(3 * n, column)).tocsr()
+    b = np.zeros(3 * n)
+    b[1::3] = (2 * radii / d) ** 3  # weights, m*g
+    return a, b
+
+
+@pytest.fixture(scope="module")
+def relaxed(tmp_path_factory):
+    out = tmp_path_factory.mktemp("certificate") / "relaxed.xyz"
+    r = subprocess.run([str(SGMP), "pack", "--count", "300", "--arrangement", "loose-random",
+                        "--seed", "4", "--relax", "frictionless", "--keep-uncertified",
+                        "--out", str(out)], capture_output=True, text=True, check=False)
+    assert r.returncode == 0, r.stderr
+    return read_xyz(out)
+
+
+def test_the_header_counts_the_contacts_scipy_finds(relaxed):
+    header, centres, radii = relaxed
+    d = float(header["diameter"])
+    a, _ = balance_matrix(centres, radii, d, float(header["certificate_gap_tolerance"]))
+    assert a.shape[1] == int(header["certificate_contacts"])
+
+
+def test_the_reported_residual_is_the_least_squares_one(relaxed):
+    header, centres, radii = relaxed
+    d = float(header["diameter"])
+    a, b = balance_matrix(centres, radii, d, float(header["certificate_gap_tolerance"]))
+    solution = lsq_linear(a.toarray(), b, bounds=(0, np.inf), method="bvls", tol=1e-12)
+    residual = np.linalg.norm((a @ solution.x - b).reshape(-1, 3), axis=1)
+    # The pack's own solver stops within 1e-4 of its objective (equilibrium_certificate.cpp);
+    # the worst sphere's residual then agrees with scipy's optimum to a few per cent.
+    ours = float(header["certificate_residual_max"])
+    print(f"largest residual: ours {ours:.6g}, scipy bvls {residual.max():.6g} m*g")
+    assert abs(ours - residual.max()) <= 0.05 * max(1.0, residual.max()), (ours, residual.max())
+
+
+def test_no_forces_balance_an_uncertified_pack(relaxed):
+    header, centres, radii = relaxed
+    d = float(header["diameter"])
+    a, b = balance_matrix(centres, radii, d, float(header["certificate_gap_tolerance"]))
+    n_rows, n_cols = a.shape
+    # min sum(s+ + s-) subject to A f + s+ - s- = b, f, s+, s- >= 0 (HiGHS).
+    from scipy.sparse import eye, hstack
+    a_eq = hstack([a, eye(n_rows), -eye(n_rows)]).tocsc()
+    cost = np.concatenate([np.zeros(n_cols), np.ones(2 * n_rows)])
+    lp = linprog(cost, A_eq=a_eq, b_eq=b, bounds=(0, None), method="highs")
+    assert lp.status == 0
+    s = lp.x[n_cols:n_cols + n_rows] - lp.x[n_cols + n_rows:]
+    worst = np.linalg.norm(s.reshape(-1, 3), axis=1).max()
+    certified = header["certified"] == "true"
+    # Both solvers reach the same decision at the certificate's tolerance.
+    assert certified == (worst <= float(header["certificate_residual_tolerance"]))
+    assert not certified  # today's relaxation leaves spheres out of balance
+
+
+def test_a_column_on_the_floor_is_certified_by_both():
+    d = 0.1
+    centres = np.array([[0.0, -HALF + 0.5 * d + k * d, 0.0] for k in range(3)])
+    radii = np.full(3, 0.5 * d)
+    a, b = balance_matrix(centres, radii, d, 1e-6)
+    solution = lsq_linear(a.toarray(), b, bounds=(0, np.inf), method="bvls")
+    assert np.allclose(sorted(solution.x), [1.0, 2.0, 3.0])

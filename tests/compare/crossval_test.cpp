@@ -272,23 +272,42 @@ BOOST_AUTO_TEST_CASE(regression_passes_identical_runs_and_flags_moved_metrics) {
     const std::string table = render_regression_table(rows, true);
     BOOST_TEST(table.find("missing") != std::string::npos);
     BOOST_TEST(table.find("FAIL") != std::string::npos);
-    BOOST_CHECK_THROW(
-        parse_baseline(nlohmann::json::parse("{\"entries\": [{\"group\": 1}]}"), "b.json"),
-        InputError);
+    BOOST_CHECK_THROW(parse_baseline(nlohmann::json::parse(
+                                         "{\"schema_version\": 2, \"entries\": [{\"group\": 1}]}"),
+                                     "b.json"),
+                      InputError);
     // A count must be a whole number as JSON holds it: 1e50, 150.5, 150.0 and -3 are refused
     // with one line naming the value (1e50 used to reach an undefined float conversion).
     for (const std::string count : {"1E50", "150.5", "150.0", "-3", "\"150\""}) {
-        const std::string text = "{\"entries\": [{\"group\": \"g\", \"count\": " + count +
-                                 ", \"metric\": \"phi\", \"value\": 0.6, \"tolerance\": 0.01}]}";
+        const std::string text =
+            "{\"schema_version\": 2, \"entries\": [{\"group\": \"g\", \"count\": " + count +
+            ", \"metric\": \"phi\", \"value\": 0.6, \"tolerance\": 0.01}]}";
         const std::string message = sgmp::testing::input_error_of(
             [&] { (void)parse_baseline(nlohmann::json::parse(text), "b.json"); });
         BOOST_TEST(message.find("b.json: entry 0 is malformed: count ") == 0, message);
         BOOST_TEST(message.find("must be a whole number >= 0") != std::string::npos, message);
     }
-    const std::string good =
-        "{\"entries\": [{\"group\": \"g\", \"count\": 150, \"metric\": "
-        "\"phi\", \"value\": 0.6, \"tolerance\": 0.01}]}";
+    const std::string entry =
+        "{\"group\": \"g\", \"count\": 150, \"metric\": \"phi\", \"value\": 0.6, "
+        "\"tolerance\": 0.01}";
+    const std::string good = "{\"schema_version\": 2, \"entries\": [" + entry + "]}";
     BOOST_TEST(parse_baseline(nlohmann::json::parse(good), "b.json").at(0).count == 150u);
+    // A repeated entry (the last would have won, so a wrong first one passed) and a
+    // missing or non-numeric schema_version are refused in one line.
+    const std::string twice =
+        "{\"schema_version\": 2, \"entries\": [" + entry + ", " + entry + "]}";
+    BOOST_TEST(sgmp::testing::input_error_of([&] {
+                   (void)parse_baseline(nlohmann::json::parse(twice), "b.json");
+               }).find("entry 1 is malformed: it repeats group, count and metric of entry 0") !=
+               std::string::npos);
+    for (const std::string version :
+         {"", "\"schema_version\": \"2\", ", "\"schema_version\": 99, "}) {
+        const std::string text = "{" + version + "\"entries\": [" + entry + "]}";
+        BOOST_TEST(sgmp::testing::input_error_of([&] {
+                       (void)parse_baseline(nlohmann::json::parse(text), "b.json");
+                   }).find("b.json: schema_version ") == 0u,
+                   text);
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

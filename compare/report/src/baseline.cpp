@@ -69,9 +69,9 @@ nlohmann::ordered_json baseline_json(const std::vector<BaselineEntry>& entries,
     return {{"schema_version", kSchemaVersion},
             {"provenance", provenance},
             {"rule",
-             "value: the candidate group's mean over its seeds; tolerance: the smallest over "
-             "reference groups of max(2 sqrt(sd of the reference's seeds^2 + model spread^2), "
-             "floor of the metric); a later run passes when |current - value| <= tolerance"},
+             "value: the candidate group's mean over its seeds; tolerance: the metric's declared "
+             "equivalence margin (compare/README.md, Margins); a later run passes when "
+             "|current - value| <= tolerance"},
             {"entries", list}};
 }
 
@@ -79,7 +79,16 @@ std::vector<BaselineEntry> parse_baseline(const nlohmann::json& json, const std:
     if (!json.is_object() || !json.contains("entries") || !json["entries"].is_array()) {
         throw InputError(source, 0, "not a baseline: no \"entries\" array");
     }
+    const auto version = json.find("schema_version");
+    if (version == json.end() || !version->is_number_unsigned() || *version < 1 ||
+        *version > kSchemaVersion) {
+        throw InputError(source, 0,
+                         "schema_version " + (version == json.end() ? "missing" : version->dump()) +
+                             ": must be a whole number from 1 to " +
+                             std::to_string(kSchemaVersion));
+    }
     std::vector<BaselineEntry> entries;
+    std::map<Key, std::size_t> first_of;
     std::size_t index = 0;
     for (const auto& item : json["entries"]) {
         try {
@@ -100,6 +109,12 @@ std::vector<BaselineEntry> parse_baseline(const nlohmann::json& json, const std:
             e.tolerance_source = item.value("tolerance_source", "");
             if (!std::isfinite(e.value) || !std::isfinite(e.tolerance) || e.tolerance < 0.0) {
                 throw std::invalid_argument("value and tolerance must be finite, tolerance >= 0");
+            }
+            const auto [seen, fresh] = first_of.emplace(key_of(e), index);
+            if (!fresh) {
+                throw std::invalid_argument("it repeats group, count and metric of entry " +
+                                            std::to_string(seen->second) +
+                                            " (which one would be checked?)");
             }
             entries.push_back(std::move(e));
         } catch (const std::exception& error) {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -233,8 +235,8 @@ Comparison compare_at(const Group& candidate, const Group& reference, std::size_
         reason = reason.empty() ? why : reason;
     }
     if (uncertified > 0) {
-        c.invalid = std::to_string(uncertified) + " of " + std::to_string(all.size()) +
-                    " packs not certified (" + reason + ")";
+        c.invalid = std::to_string(uncertified) + (uncertified == 1 ? " pack" : " packs") +
+                    " not certified (" + reason + ")";
         for (auto& row : c.rows) {
             if (row.verdict != Verdict::Info) {
                 row.tolerance_rule =
@@ -505,8 +507,13 @@ std::string uncertified_reason(const PackSummary& pack) {
     if (certified.empty()) {
         return "relaxed without an equilibrium certificate";
     }
-    return residual.empty() ? "no equilibrium certificate for --relax " + relax
-                            : "largest residual " + residual + " m*g";
+    if (residual.empty()) {
+        return "no equilibrium certificate for --relax " + relax;
+    }
+    char text[64];
+    std::snprintf(text, sizeof text, "largest residual %.3g m*g",
+                  std::strtod(residual.c_str(), nullptr));
+    return text;
 }
 
 void check_physical(const PackSummary& pack) {

@@ -155,6 +155,21 @@ BOOST_AUTO_TEST_CASE(a_file_size_limit_fails_like_a_full_disk) {
     }
 }
 
+// An endless line (/dev/zero) is refused at 16 MiB, under a 1 GB address-space limit (it
+// used to grow until the memory limit, then fail with std::bad_alloc).
+BOOST_AUTO_TEST_CASE(an_endless_input_is_refused_within_bounded_memory) {
+    const Result r =
+        sgmp::testing::run_command("cd '" + scratch().string() + "' && ulimit -v 1000000 && '" +
+                                       kTool.string() + "' measure /dev/zero --out z",
+                                   scratch());
+    BOOST_TEST(r.status == 1, r.err);
+    BOOST_TEST(r.err ==
+                   "sgmp-compare: /dev/zero:1: line longer than 16777216 bytes (the "
+                   "readers' limit)\n",
+               r.err);
+    BOOST_TEST(!fs::exists(scratch() / "z"));
+}
+
 BOOST_AUTO_TEST_CASE(bad_pack_files_give_one_line_and_status_1) {
     write("empty.xyz", "");
     write("short.xyz", "3\n" + kHeader + "1 0 0 0 0.05 0\n2 0.2 0 0 0.05 0\n");

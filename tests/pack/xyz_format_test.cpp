@@ -3,6 +3,7 @@
 #include <boost/test/unit_test.hpp>
 #include <sstream>
 
+#include "sgmp/pack/line_reader.hpp"
 #include "sgmp/pack/random.hpp"
 #include "test_support.hpp"
 
@@ -119,6 +120,29 @@ BOOST_AUTO_TEST_CASE(column_counts_cannot_overflow_the_line_width) {
     }
     std::istringstream in("1\nProperties=pos:R:3:radius:R:1:a:R:9996\n" + line + "\n");
     BOOST_TEST(read_xyz(in, "pack.xyz").particles.size() == 1u);
+}
+
+// Readers have stated limits (line_reader.hpp, xyz_format.cpp): a line of 16 MiB, 10,000
+// header keys, each key once. Memory stays bounded on an endless line (/dev/zero, a gzip
+// holding one 1 GB line) and on a header of millions of keys.
+BOOST_AUTO_TEST_CASE(readers_refuse_what_would_allocate_without_bound) {
+    const std::string endless(sgmp::kMaxLineBytes + 10, '0');
+    BOOST_TEST(read_error(endless) ==
+               "pack.xyz:1: line longer than 16777216 bytes (the readers' limit)");
+    BOOST_TEST(read_error("1\n" + endless) ==
+               "pack.xyz:2: line longer than 16777216 bytes (the readers' limit)");
+    std::string keys;
+    for (int k = 0; k < 10001; ++k) {
+        keys += "k" + std::to_string(k) + "=1 ";
+    }
+    BOOST_TEST(read_error("1\n" + keys + kHeader + "1 0 0 0 0.05 0\n") ==
+               "pack.xyz:2: more than 10000 header keys (the readers' limit)");
+    BOOST_TEST(read_error("1\nseed=1 seed=2 " + kHeader + "1 0 0 0 0.05 0\n") ==
+               "pack.xyz:2: header key 'seed' appears twice");
+    // A line just under the limit is read whole (the chunked reader appends its pieces).
+    const std::string comment(100000, 'x');
+    std::istringstream in("1\nnote=" + comment + " " + kHeader + "1 0 0 0 0.05 0\n");
+    BOOST_TEST(read_xyz(in, "pack.xyz").metadata.get("note")->size() == comment.size());
 }
 
 BOOST_AUTO_TEST_CASE(binary_bytes_are_escaped_in_messages) {

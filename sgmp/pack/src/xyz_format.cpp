@@ -5,6 +5,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <set>
 #include <stdexcept>
 
 #include "sgmp/pack/pack_extent.hpp"
@@ -51,10 +52,25 @@ std::string lower(std::string_view text) {
     return out;
 }
 
-/// key=value pairs of the comment line; values may be double-quoted.
+/// The most keys a header may hold (a real one holds a few dozen): memory stays bounded.
+constexpr std::size_t kMaxHeaderKeys = 10000;
+
+/// key=value pairs of the comment line; values may be double-quoted. At most kMaxHeaderKeys
+/// keys, each at most once (a repeated key would leave which value counts to chance).
 std::vector<std::pair<std::string, std::string>> parse_comment(const std::string& line,
                                                                const LineReader& reader) {
     std::vector<std::pair<std::string, std::string>> pairs;
+    std::set<std::string> seen;
+    const auto add = [&](std::string key, std::string value) {
+        if (pairs.size() >= kMaxHeaderKeys) {
+            throw reader.error("more than " + std::to_string(kMaxHeaderKeys) +
+                               " header keys (the readers' limit)");
+        }
+        if (!seen.insert(key).second) {
+            throw reader.error("header key '" + key + "' appears twice");
+        }
+        pairs.emplace_back(std::move(key), std::move(value));
+    };
     std::size_t pos = 0;
     while (true) {
         pos = line.find_first_not_of(" \t", pos);
@@ -70,7 +86,7 @@ std::vector<std::pair<std::string, std::string>> parse_comment(const std::string
                 throw reader.error("expected key=value or a bare key in the header, found '" +
                                    word + "'");
             }
-            pairs.emplace_back(std::move(word), "T");  // a bare key is a true flag (ASE)
+            add(std::move(word), "T");  // a bare key is a true flag (ASE)
             pos = space == std::string::npos ? line.size() : space;
             continue;
         }
@@ -89,7 +105,7 @@ std::vector<std::pair<std::string, std::string>> parse_comment(const std::string
             value = line.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
             pos = end == std::string::npos ? line.size() : end;
         }
-        pairs.emplace_back(std::move(key), std::move(value));
+        add(std::move(key), std::move(value));
     }
     return pairs;
 }

@@ -12,12 +12,17 @@
 
 namespace sgmp {
 
+/// The longest line any reader accepts (16 MiB): memory stays bounded on a file of one
+/// endless line (/dev/zero, a gzip bomb). The longest real lines are headers of a few kB.
+inline constexpr std::size_t kMaxLineBytes = std::size_t{1} << 24;
+
 /// Reads lines while counting them, so every error can name source:line.
 class LineReader {
   public:
     LineReader(std::istream& in, std::string source) : in_(in), source_(std::move(source)) {}
 
     /// Next line without its terminator (a trailing '\r' is dropped); false at the end.
+    /// Throws InputError for a line longer than kMaxLineBytes, and on a read error.
     bool next(std::string& line);
     /// Makes `line` the next one returned again (one level of look-back).
     void put_back(std::string line);
@@ -33,6 +38,8 @@ class LineReader {
     }
 
   private:
+    bool read_bounded(std::string& line);
+
     std::istream& in_;
     std::string source_;
     std::size_t line_number_ = 0;

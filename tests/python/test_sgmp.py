@@ -191,3 +191,22 @@ def test_every_format_through_the_pack_library(tmp_path):
     (tmp_path / "two.xyz").write_text(text + text)
     assert np.array_equal(sgmp.read(tmp_path / "two.xyz", frame=1).positions, p.positions)
     assert np.all(sgmp.read(tmp_path / "two.xyz", radius=0.01).radii == 0.01)
+
+
+@pytest.mark.parametrize(
+    "positions, radii, bins, message",
+    [
+        ([[0.0, 0.0, np.nan]], [0.05], None, "positions: row 0 is not finite"),
+        ([[0.0, np.inf, 0.0]], [0.05], None, "positions: row 0 is not finite"),
+        ([[0.0, 0.0, 0.0]], [-0.05], None, "radii: entry 0 = -0.05 must be a finite number > 0"),
+        ([[0.0, 0.0, 0.0]], [np.nan], None, "radii: entry 0 = nan must be a finite number > 0"),
+        ([[0.0, 0.0, 0.0]], [0.05 + 0j], None, "radii: must be real numbers (dtype complex128)"),
+        ([[0.0, 0.0, 0.0j]], [0.05], None, "positions: must be real numbers (dtype complex128)"),
+        ([[0.0, 0.0, 0.0]], [0.05], [2**32 + 1], "bins: entry 0 = 4294967297 must be from 0"),
+        ([[0.0, 0.0, 0.0]], [0.05], [-1], "bins: entry 0 = -1 must be from 0"),
+    ],
+)
+def test_pack_refuses_impossible_particles(positions, radii, bins, message):
+    # They used to be accepted and written, so the project's own readers refused the file.
+    with pytest.raises(ValueError, match=message.replace("(", r"\(").replace(")", r"\)")):
+        sgmp.Pack(np.array(positions), np.array(radii), bins=bins)

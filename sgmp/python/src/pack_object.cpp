@@ -2,6 +2,8 @@
 // dict of strings in header order.
 #include <pybind11/stl.h>
 
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -44,8 +46,25 @@ py::dict header(const Pack& pack) {
 using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
 using Longs = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
 
-Pack make(const Doubles& xyz, const Doubles& radii, const std::optional<Longs>& bins,
+/// `values` as a float array, refusing what a float cannot hold without loss of meaning
+/// (complex numbers, strings, objects) instead of casting it silently.
+Doubles real_array(const py::object& object, const char* name) {
+    const py::array values = py::array::ensure(object);
+    if (!values) {
+        throw std::invalid_argument(std::string(name) + ": must be an array of numbers");
+    }
+    const char kind = values.dtype().kind();
+    if (kind != 'f' && kind != 'i' && kind != 'u' && kind != 'b') {
+        throw std::invalid_argument(std::string(name) + ": must be real numbers (dtype " +
+                                    py::str(values.dtype()).cast<std::string>() + ")");
+    }
+    return Doubles::ensure(values);
+}
+
+Pack make(const py::object& xyz_in, const py::object& radii_in, const std::optional<Longs>& bins,
           const std::optional<Longs>& ids, const std::optional<py::dict>& head) {
+    const Doubles xyz = real_array(xyz_in, "positions");
+    const Doubles radii = real_array(radii_in, "radii");
     if (xyz.ndim() != 2 || xyz.shape(1) != 3) {
         throw std::invalid_argument("positions: must be an array of shape (N, 3)");
     }
@@ -72,7 +91,24 @@ Pack make(const Doubles& xyz, const Doubles& radii, const std::optional<Longs>& 
         particle.id = ids ? ids->at(i) : static_cast<std::int64_t>(i + 1);
         particle.center = Vec3(p(i, 0), p(i, 1), p(i, 2));
         particle.radius = r(i);
-        particle.color = bins ? static_cast<int>(bins->at(i)) : 0;
+        if (!particle.center.allFinite()) {
+            throw std::invalid_argument("positions: row " + std::to_string(i) +
+                                        " is not finite (every coordinate must be a number)");
+        }
+        if (!(particle.radius > 0.0) || !std::isfinite(particle.radius)) {
+            throw std::invalid_argument("radii: entry " + std::to_string(i) + " = " +
+                                        format_number(particle.radius) +
+                                        " must be a finite number > 0");
+        }
+        if (bins) {
+            const std::int64_t bin = bins->at(i);
+            if (bin < 0 || bin > std::numeric_limits<int>::max()) {
+                throw std::invalid_argument("bins: entry " + std::to_string(i) + " = " +
+                                            std::to_string(bin) + " must be from 0 to " +
+                                            std::to_string(std::numeric_limits<int>::max()));
+            }
+            particle.color = static_cast<int>(bin);
+        }
         pack.particles.push_back(particle);
     }
     if (head) {

@@ -1,5 +1,7 @@
 #include "command_support.hpp"
 
+#include "sgmp/compare/pack_content_error.hpp"
+
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -138,7 +140,9 @@ Measurement measure_pack(const std::string& path, const Pack& pack, const Common
     Measurement m;
     try {
         m = measure(pack, o.measure);
-    } catch (const std::invalid_argument& error) {
+    } catch (const PackContentError& error) {  // the file's fault: status 1
+        throw InputError(path, 0, error.what());
+    } catch (const std::invalid_argument& error) {  // an option's: status 2
         throw UsageError(path + ": " + error.what());
     }
     if (o.timings) {

@@ -182,8 +182,12 @@ BOOST_AUTO_TEST_CASE(bad_pack_files_give_one_line_and_status_1) {
     write("container.xyz",
           "1\nProperties=id:I:1:pos:R:3:radius:R:1:color:I:1 container=\"1 2 3\"\n"
           "1 0 0 0 0.05 0\n");
-    for (const char* file : {"empty.xyz", "short.xyz", "word.xyz", "columns.xyz", "nan.xyz",
-                             "inf.xyz", "radius.xyz", "zero.xyz", "container.xyz", "missing.xyz"}) {
+    // Two spheres in one place: the Voronoi cell of one is empty (a content error, once
+    // reported with the usage status 2).
+    write("swallowed.xyz", "2\n" + kHeader + "1 0 0 0 0.05 0\n2 0 0 0 0.05 0\n");
+    for (const char* file :
+         {"empty.xyz", "short.xyz", "word.xyz", "columns.xyz", "nan.xyz", "inf.xyz", "radius.xyz",
+          "zero.xyz", "container.xyz", "missing.xyz", "swallowed.xyz"}) {
         const Result r = run(std::string("measure ") + file + " --out out-bad");
         BOOST_TEST(r.status == 1, file << ": " << r.err);
         BOOST_TEST(lines(r.err) == 1u, file << ": " << r.err);

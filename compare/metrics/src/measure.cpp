@@ -1,5 +1,7 @@
 #include "sgmp/compare/measure.hpp"
 
+#include "sgmp/compare/pack_content_error.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -170,7 +172,7 @@ std::vector<Particle> spatially_ordered(const std::vector<Particle>& particles, 
 Measurement measure(const Pack& pack, const MeasureOptions& options) {
     validate(options);
     if (pack.particles.empty()) {
-        throw std::invalid_argument("the pack has no particles");
+        throw PackContentError("the pack has no particles");
     }
     release_free_heap();
     Stopwatch watch;
@@ -193,7 +195,7 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     }
     const double d = m.mean_diameter;
     if (!(d > 0.0) || !std::isfinite(d)) {
-        throw std::invalid_argument("the pack's mean diameter must be positive and finite");
+        throw PackContentError("the pack's mean diameter must be positive and finite");
     }
     const double slabs =
         (std::max(m.top, m.region.hi.y()) - m.container.floor) / (options.slab_thickness * d);

@@ -1,5 +1,7 @@
 #include "sgmp/compare/voronoi.hpp"
 
+#include "sgmp/compare/pack_content_error.hpp"
+
 #include <voro++/voro++.hh>
 
 #include <algorithm>
@@ -35,7 +37,7 @@ std::string text_of(const Vec3& v) {
 }
 
 [[noreturn]] void reject(const std::string& what) {
-    throw std::invalid_argument("voronoi local phi: " + what);
+    throw PackContentError("voronoi local phi: " + what);
 }
 
 void check_input(const std::vector<Particle>& particles, const Container& container,

@@ -105,11 +105,9 @@ BOOST_AUTO_TEST_CASE(the_truth_set_is_judged_right) {
 }
 
 // Each held-out pour (n = 1) against the rest of its class and against the other class, per
-// count: it never differs from its own class and always differs from the other. Measured
-// when the rule was written: own class stands in 30 of 50 (undecided at N = 1002 and 2001,
-// where one pack gives only 3–6 of 13 metrics an interval inside the margin: the split
-// ratio, g(r), P(Z), Q6 and the Voronoi sd are too noisy there), other class differs 50
-// of 50. The aim is ≥ 95 % for both; the test keeps what holds.
+// count: it stands in for its own class and differs from the other, at ≥ 95 % of the
+// 50 (measured: 50 and 50; counting all judged metrics in the agree share, not only the
+// decidable ones, gave 30 own-class stand-ins: one pack leaves 3–6 of 13 decidable).
 BOOST_AUTO_TEST_CASE(a_held_out_seed_stands_in_for_its_own_class_only) {
     int own = 0;
     int own_differs = 0;
@@ -157,7 +155,7 @@ BOOST_AUTO_TEST_CASE(a_held_out_seed_stands_in_for_its_own_class_only) {
                        << trials);
     BOOST_TEST(trials >= 2 * 5 * 5);  // 2 classes × 5 counts ≥ 1002 × 5 seeds
     BOOST_TEST(own_differs == 0);
-    BOOST_TEST(own >= 0.6 * trials);
+    BOOST_TEST(own >= 0.95 * trials);
     BOOST_TEST(other >= 0.95 * trials);
 }
 

@@ -188,7 +188,9 @@ StandIn stand_in_from(
             if (!judged(m)) {
                 continue;
             }
-            ++judged_here;
+            // A test that could not agree at these n (interval wider than the margin) is no
+            // evidence either way: the share counts the decidable ones.
+            judged_here += m.power || m.verdict == Verdict::Differ ? 1 : 0;
             agree_here += m.verdict == Verdict::Agree ? 1 : 0;
             s.agree += m.verdict == Verdict::Agree ? 1 : 0;
             s.differ += m.verdict == Verdict::Differ ? 1 : 0;

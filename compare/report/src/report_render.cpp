@@ -171,7 +171,8 @@ std::vector<std::string> rule_statements() {
         "certificate); otherwise their comparisons are not judged (info, 'not certified').",
         "Stands in: no test differs under Holm's procedure on the tests' p-values of "
         "|difference| <= m over every judged metric and count (family-wise error <= 5 %), and "
-        "at every count at least half the judged metrics agree. Differs: Holm keeps a "
+        "at every count at least half the decidable metrics agree (interval narrower than "
+        "the margin). Differs: Holm keeps a "
         "difference. Otherwise undecided. Pairs of reference classes are judged the same way; "
         "classes that stand in for each other are one family.",
         "Lengths are in units of the mean diameter d. Z at tolerance X counts neighbours with "

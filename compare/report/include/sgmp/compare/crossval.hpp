@@ -53,7 +53,7 @@ struct HeadlineRow {
 
 /// The family-wise level of the stand-in rule.
 inline constexpr double kFamilyAlpha = 0.05;
-/// The least share of a count's judged metrics that must agree for a stand-in there.
+/// The least share of a count's decidable metrics that must agree for a stand-in there.
 inline constexpr double kStandInAgreeShare = 0.5;
 
 enum class StandInDecision { StandsIn, Differs, Undecided, Invalid };
@@ -67,7 +67,9 @@ std::string_view to_string(StandInDecision decision);
 /// step-down procedure at family-wise level α = 5 % on the rows' p_differ (the p-value of
 /// "|Δ| ≤ margin"): sorted p₍₁₎ ≤ … ≤ p₍ₘ₎, p₍ᵢ₎ is rejected while p₍ᵢ₎ ≤ α/(m − i + 1).
 ///   differs    some row is rejected: the difference exceeds its margin, family-wise;
-///   stands in  no row is rejected, and at every count at least half the judged rows agree;
+///   stands in  no row is rejected, and at every count at least half the decidable rows
+///              agree (decidable: `power`, an interval narrower than the margin, so agree
+///              was reachable; or a differ), and at least one does;
 ///   undecided  otherwise (too few agree: the data cannot tell).
 /// Per count the same rule over that count's rows gives `counts_standing`.
 /// A single row's `differ` that Holm does not keep is counted in `differ` and named.

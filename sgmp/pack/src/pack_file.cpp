@@ -9,6 +9,7 @@
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/dump_format.hpp"
 #include "sgmp/pack/lammps_data_format.hpp"
+#include "sgmp/pack/interrupt.hpp"
 #include "sgmp/pack/vtk_format.hpp"
 #include "sgmp/pack/xyz_format.hpp"
 #include "text_fields.hpp"
@@ -183,6 +184,9 @@ void write_pack_as(const std::filesystem::path& path, const Pack& pack, PackForm
     write_vtk_container(box, pack);
     write_text(container, box.str(), options.overwrite);
     try {
+        // Until the particles are in place, an interrupt removes the container too: the
+        // pair is published whole or not at all (a re-run would refuse a lone container).
+        const TemporaryGuard pair(container);
         write_text(path, text, options.overwrite);
     } catch (...) {
         std::error_code ignored;

@@ -210,6 +210,18 @@ int run_sweep(const Settings& s, const World& world) {
     } catch (const std::runtime_error& e) {
         throw FileProblem{std::string("--summary ") + e.what()};
     }
+    // Each job keeps its summary row (about 0.9 kB, measured at 10⁶ jobs: 884 MB) until the
+    // table is written, so one batch runs at most kMaxJobsPerBatch of them.
+    const std::uint64_t total = plan.job_count();
+    const std::uint64_t in_shard =
+        total >= shard.index ? (total - shard.index) / shard.count + 1 : 0;
+    if (in_shard > kMaxJobsPerBatch) {
+        const std::uint64_t shards = (total + kMaxJobsPerBatch - 1) / kMaxJobsPerBatch;
+        throw BadValue{"the grid holds " + std::to_string(total) + " jobs (" +
+                       std::to_string(in_shard) + " in this shard); one batch runs at most " +
+                       std::to_string(kMaxJobsPerBatch) + ": split it with --shard I/" +
+                       std::to_string(shards) + " or more shards"};
+    }
     const std::vector<std::size_t> shard_jobs = assigned_jobs(plan.job_count(), shard);
     if (const std::string existing =
             first_existing(s, plan, pattern ? &*pattern : nullptr, shard_jobs);

@@ -110,6 +110,12 @@ BOOST_AUTO_TEST_CASE(bad_input_gets_one_line_and_writes_nothing) {
         {"--seeds 1-2 --count 50 --arrangement small-dense --out-pattern p.xyz", 2,
          "sgmp: --out-pattern p.xyz: must hold {seed}"},
         {base + "--seeds 1", 2, "sgmp: --seeds: needed"},
+        // 10^8 jobs: refused at once (it used to plan past 10 GB), with the shards to use.
+        {"--seeds 1-10000000 --count 10,20,30,40,50,60,70,80,90,100 --arrangement small-dense "
+         "--no-packs",
+         2,
+         "sgmp: the grid holds 100000000 jobs (100000000 in this shard); one batch runs at most "
+         "1000000: split it with --shard I/100 or more shards"},
     };
     for (const auto& c : cases) {
         const std::string args = c.args == base + "--seeds 1"

@@ -16,8 +16,11 @@
 
 namespace sgmp::batch {
 
-/// Most jobs one plan may hold.
+/// Most jobs one plan may hold (a plan stores its value lists and seeds, not its jobs).
 inline constexpr std::uint64_t kMaxJobs = 100'000'000;
+/// Most jobs one batch process runs (its shard): each keeps its summary row, about 0.9 kB,
+/// until the table is written, so memory stays near 1 GB.
+inline constexpr std::uint64_t kMaxJobsPerBatch = 1'000'000;
 
 /// Value lists as given; an empty list means the parameter's default (count and
 /// arrangement have none and must be given).

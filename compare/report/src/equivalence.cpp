@@ -60,7 +60,18 @@ struct CurveNoise {
     double bin_weight;
     std::vector<double> variance;
 
-    [[nodiscard]] double quantile(double p, double scale) const {  // scale: variance factor
+    /// The noise norm's approximating law, the variances scaled by `scale`: L2, a·χ²_f
+    /// (Satterthwaite); TV, normal with `mean` and `var`. `degenerate` when it is a point.
+    struct Law {
+        double a = 0.0;
+        double f = 0.0;
+        double mean = 0.0;
+        double var = 0.0;
+        bool degenerate = false;
+    };
+
+    [[nodiscard]] Law law(double scale) const {
+        Law law;
         if (norm == CurveNorm::L2) {
             double sum = 0.0;
             double sum2 = 0.0;
@@ -69,23 +80,32 @@ struct CurveNoise {
                 sum += l;
                 sum2 += l * l;
             }
-            if (sum <= 0.0) {
-                return 0.0;
+            law.degenerate = sum <= 0.0;
+            if (!law.degenerate) {
+                law.a = sum2 / sum;
+                law.f = sum * sum / sum2;
             }
-            const double a = sum2 / sum;
-            const double f = sum * sum / sum2;
-            return std::sqrt(a * boost::math::quantile(boost::math::chi_squared(f), 1.0 - p));
+            return law;
         }
-        double mean = 0.0;
-        double var = 0.0;
         for (const double v : variance) {
-            mean += 0.5 * std::sqrt(2.0 * v * scale / std::numbers::pi);
-            var += 0.25 * v * scale * (1.0 - 2.0 / std::numbers::pi);
+            law.mean += 0.5 * std::sqrt(2.0 * v * scale / std::numbers::pi);
+            law.var += 0.25 * v * scale * (1.0 - 2.0 / std::numbers::pi);
         }
-        if (var <= 0.0) {
-            return mean;
+        law.degenerate = law.var <= 0.0;
+        return law;
+    }
+
+    /// The (1 − p) quantile of the noise norm, the variances scaled by `scale`.
+    [[nodiscard]] double quantile(double p, double scale) const {
+        const Law l = law(scale);
+        if (norm == CurveNorm::L2) {
+            return l.degenerate ? 0.0
+                                : std::sqrt(l.a * boost::math::quantile(
+                                                      boost::math::chi_squared(l.f), 1.0 - p));
         }
-        return mean + std::sqrt(var) * boost::math::quantile(boost::math::normal(), 1.0 - p);
+        return l.degenerate ? l.mean
+                            : l.mean + std::sqrt(l.var) *
+                                           boost::math::quantile(boost::math::normal(), 1.0 - p);
     }
 
     /// P(noise norm ≥ x).
@@ -93,33 +113,17 @@ struct CurveNoise {
         if (x <= 0.0) {
             return 1.0;
         }
+        const Law l = law(1.0);
         if (norm == CurveNorm::L2) {
-            double sum = 0.0;
-            double sum2 = 0.0;
-            for (const double v : variance) {
-                const double l = v * bin_weight;
-                sum += l;
-                sum2 += l * l;
-            }
-            if (sum <= 0.0) {
-                return 0.0;
-            }
-            const double a = sum2 / sum;
-            const double f = sum * sum / sum2;
-            return boost::math::cdf(
-                boost::math::complement(boost::math::chi_squared(f), x * x / a));
+            return l.degenerate ? 0.0
+                                : boost::math::cdf(boost::math::complement(
+                                      boost::math::chi_squared(l.f), x * x / l.a));
         }
-        double mean = 0.0;
-        double var = 0.0;
-        for (const double v : variance) {
-            mean += 0.5 * std::sqrt(2.0 * v / std::numbers::pi);
-            var += 0.25 * v * (1.0 - 2.0 / std::numbers::pi);
-        }
-        if (var <= 0.0) {
-            return x > mean ? 0.0 : 1.0;
+        if (l.degenerate) {
+            return x > l.mean ? 0.0 : 1.0;
         }
         return boost::math::cdf(
-            boost::math::complement(boost::math::normal(mean, std::sqrt(var)), x));
+            boost::math::complement(boost::math::normal(l.mean, std::sqrt(l.var)), x));
     }
 };
 

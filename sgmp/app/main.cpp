@@ -259,14 +259,11 @@ void check_out(const Options& o) {
 /// Why a relaxed pack is not certified, in one line.
 std::string uncertified_reason(const Pack& pack) {
     const auto& m = pack.metadata;
-    if (m.get("certificate") != std::optional<std::string>("frictionless")) {
-        return "the frictional relaxation has no equilibrium certificate yet";
-    }
-    return "the relaxed pack is not a certified equilibrium: sphere " +
-           m.get("certificate_worst_id").value_or("?") + " is out of balance by " +
-           m.get("certificate_residual_max").value_or("?") + " m*g (at most " +
-           m.get("certificate_residual_tolerance").value_or("?") + "), deepest overlap " +
-           m.get("certificate_overlap_max").value_or("?") + " d";
+    return "the relaxed pack is not a certified " + m.get("certificate").value_or("") +
+           " equilibrium: sphere " + m.get("certificate_worst_id").value_or("?") +
+           " is out of balance by " + m.get("certificate_residual_max").value_or("?") +
+           " m*g (at most " + m.get("certificate_residual_tolerance").value_or("?") +
+           "), deepest overlap " + m.get("certificate_overlap_max").value_or("?") + " d";
 }
 
 int run_pack(const Options& o) {

@@ -86,6 +86,30 @@ BOOST_AUTO_TEST_CASE(a_sphere_on_two_others_needs_the_walls) {
     BOOST_TEST(held.contacts == 6u);  // 2 pairs, 2 floor, 2 walls
 }
 
+BOOST_AUTO_TEST_CASE(friction_holds_a_sphere_wedged_between_two_walls) {
+    // A sphere touching both x walls and nothing below: the normal forces cancel in any
+    // magnitude, so friction at any μ > 0 carries its weight (the two tangential forces
+    // give opposite torques about the centre); without friction it is out of balance by
+    // its weight.
+    Container wedge = kBox;
+    wedge.x_min = -0.5 * kD;
+    wedge.x_max = 0.5 * kD;
+    const std::vector<Particle> one{sphere(0, kBox.floor + 2 * kD, 0)};
+    const auto held = certify_frictional(one, wedge, kD, 0.1);
+    BOOST_TEST(held.certified);
+    BOOST_TEST(held.contacts == 2u);
+    BOOST_TEST(held.residual_max <= 1e-4);
+    const auto smooth = certify_frictional(one, wedge, kD, 0.0);
+    BOOST_TEST(!smooth.certified);
+    BOOST_TEST(smooth.residual_max == 1.0, boost::test_tools::tolerance(1e-6));
+    BOOST_TEST(!certify_frictionless(one, wedge, kD).certified);
+    // On the floor it is certified with or without friction; the column too.
+    const double y0 = kBox.floor + 0.5 * kD;
+    BOOST_TEST(
+        certify_frictional({sphere(0, y0, 0), sphere(0, y0 + kD, 0)}, kBox, kD, 0.5).certified);
+    BOOST_CHECK_THROW(certify_frictional(one, wedge, kD, -0.1), std::invalid_argument);
+}
+
 BOOST_AUTO_TEST_CASE(an_overlap_deeper_than_the_tolerance_is_not_certified) {
     const double y0 = kBox.floor + 0.5 * kD;
     const auto c =
@@ -98,8 +122,10 @@ BOOST_AUTO_TEST_CASE(an_overlap_deeper_than_the_tolerance_is_not_certified) {
 // A settled frictionless DEM pour (μ = 0; its contacts overlap by up to ~5·10⁻³ d) is in
 // balance on the normal forces of its overlapping pairs. Measured: largest residual
 // 0.025 m·g (4 spheres above 0.01, still creeping when the pour stopped), 0.066 m·g over
-// all 1002; the bound 0.05 and 10⁻⁴ of the weight keep that. A frictional pour (μ = 0.5)
-// leans on friction: most of its weight is out of frictionless balance (894 of 1002 m·g).
+// all 1002 with the solver run to its end; it stops sooner while a residual is 10× its
+// target (0.034 and 0.21 m·g then), so the bounds are 0.05 and 3·10⁻⁴ of the weight. A frictional
+// pour (μ = 0.5) leans on friction: most of its weight is out of frictionless balance (894 of 1002
+// m·g).
 BOOST_AUTO_TEST_CASE(a_settled_frictionless_pour_is_balanced) {
     const Pack pack =
         read_pack_file(std::string(SGMP_SOURCE_DIR) + "/data/reference/n1002-mu0-seed1.xyz.gz");
@@ -114,7 +140,7 @@ BOOST_AUTO_TEST_CASE(a_settled_frictionless_pour_is_balanced) {
                        << c.residual_max << " m g, " << c.contacts << " contacts, " << seconds
                        << " s");
     BOOST_TEST(c.residual_max <= 0.05);
-    BOOST_TEST(c.residual_sum <= 1e-4 * c.weight_sum);
+    BOOST_TEST(c.residual_sum <= 3e-4 * c.weight_sum);
     BOOST_TEST(!c.certified);  // it overlaps
     const Pack frictional =
         read_pack_file(std::string(SGMP_SOURCE_DIR) + "/data/reference/n1002-mu0.5-seed1.xyz.gz");

@@ -1,8 +1,13 @@
 #include "sgmp/engine/equilibrium_certificate.hpp"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -22,6 +27,8 @@ struct Contact {
 };
 
 constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+/// Edges of the pyramid that stands for the Coulomb cone.
+constexpr int kConeEdges = 8;
 
 std::vector<Contact> find_contacts(const std::vector<Particle>& particles, const Container& box,
                                    double tolerance, double& deepest) {
@@ -60,88 +67,119 @@ std::vector<Contact> find_contacts(const std::vector<Particle>& particles, const
     return contacts;
 }
 
-/// Rᵢ = Σ_c f_c·nᵢ,c − wᵢ·ŷ for every sphere.
-std::vector<Vec3> residuals(const std::vector<Contact>& contacts, const std::vector<double>& weight,
-                            const std::vector<double>& force) {
-    std::vector<Vec3> r(weight.size());
-    for (std::size_t i = 0; i < weight.size(); ++i) {
-        r[i] = Vec3(0.0, -weight[i], 0.0);
+/// The linear system A·f ≈ b of a certificate, column by column (compressed columns):
+/// `rows` residual rows per sphere (3 forces, or 3 forces and 3 torques over d).
+struct System {
+    std::size_t rows = 3;
+    std::vector<std::size_t> start{0};
+    std::vector<std::uint32_t> row;
+    std::vector<double> value;
+    std::vector<double> b;
+
+    void add(std::size_t sphere, std::size_t offset, const Vec3& v) {
+        for (int a = 0; a < 3; ++a) {
+            row.push_back(
+                static_cast<std::uint32_t>(rows * sphere + offset + static_cast<std::size_t>(a)));
+            value.push_back(v[a]);
+        }
     }
-    for (std::size_t k = 0; k < contacts.size(); ++k) {
-        const Contact& c = contacts[k];
-        r[c.first] += force[k] * c.normal;
-        if (!c.wall) {
-            r[c.second] -= force[k] * c.normal;
+    void close_column() { start.push_back(row.size()); }
+    [[nodiscard]] std::size_t columns() const { return start.size() - 1; }
+};
+
+/// r = A·f − b.
+std::vector<double> residuals(const System& s, const std::vector<double>& f) {
+    std::vector<double> r(s.b.size());
+    for (std::size_t i = 0; i < r.size(); ++i) {
+        r[i] = -s.b[i];
+    }
+    for (std::size_t k = 0; k < s.columns(); ++k) {
+        for (std::size_t e = s.start[k]; e < s.start[k + 1]; ++e) {
+            r[s.row[e]] += s.value[e] * f[k];
         }
     }
     return r;
 }
 
-/// ½·Σ|Rᵢ|² and its gradient with respect to each f_c.
-double objective(const std::vector<Contact>& contacts, const std::vector<Vec3>& r,
-                 std::vector<double>& gradient) {
+/// ½·|r|² and its gradient Aᵀ·r.
+double objective(const System& s, const std::vector<double>& r, std::vector<double>& gradient) {
     double sum = 0.0;
-    for (const Vec3& v : r) {
-        sum += v.squaredNorm();
+    for (const double v : r) {
+        sum += v * v;
     }
-    gradient.resize(contacts.size());
-    for (std::size_t k = 0; k < contacts.size(); ++k) {
-        const Contact& c = contacts[k];
-        gradient[k] = c.normal.dot(c.wall ? r[c.first] : Vec3(r[c.first] - r[c.second]));
+    gradient.assign(s.columns(), 0.0);
+    for (std::size_t k = 0; k < s.columns(); ++k) {
+        for (std::size_t e = s.start[k]; e < s.start[k + 1]; ++e) {
+            gradient[k] += s.value[e] * r[s.row[e]];
+        }
     }
     return 0.5 * sum;
 }
 
-double largest(const std::vector<Vec3>& r) {
-    double m = 0.0;
-    for (const Vec3& v : r) {
-        m = std::max(m, v.norm());
+/// Per sphere, the Euclidean norm of its residual rows.
+std::vector<double> per_sphere(const System& s, const std::vector<double>& r) {
+    std::vector<double> norms(r.size() / s.rows, 0.0);
+    for (std::size_t i = 0; i < r.size(); ++i) {
+        norms[i / s.rows] += r[i] * r[i];
     }
-    return m;
+    for (double& v : norms) {
+        v = std::sqrt(v);
+    }
+    return norms;
 }
 
-/// Non-negative least squares min ½·Σ|Rᵢ(f)|², f ≥ 0, by the spectral projected gradient
+double largest(const System& s, const std::vector<double>& r) {
+    const auto norms = per_sphere(s, r);
+    return norms.empty() ? 0.0 : *std::max_element(norms.begin(), norms.end());
+}
+
+/// Non-negative least squares min ½·|A·f − b|², f ≥ 0, by the spectral projected gradient
 /// (Birgin, Martínez & Raydan, SIAM J. Optim. 10, 1196, 2000): Barzilai–Borwein steps,
 /// projected on f ≥ 0, with a non-monotone line search over the last 10 values. Stops
-/// when every |Rᵢ| ≤ `target`, when 500 iterations lower the objective by less than 10⁻⁴
-/// of itself, or after kMaxIterations; any f ≥ 0 it returns is a valid set of forces, so
-/// a small residual certifies, whatever the stopping reason.
-std::vector<double> solve_forces(const std::vector<Contact>& contacts,
-                                 const std::vector<double>& weight, double target) {
+/// when every sphere's residual is ≤ `target`, when 500 iterations lower the objective by
+/// less than 10⁻⁴ of itself (10⁻² while a residual is 10× the target), or after
+/// kMaxIterations; any f ≥ 0 it returns is a valid set
+/// of forces, so a small residual certifies, whatever the stopping reason.
+std::vector<double> solve_forces(const System& system, double target) {
     constexpr int kMaxIterations = 200000;
     constexpr int kMemory = 10;
     constexpr int kCheckEvery = 500;  // stop when 500 iterations gain less than kStall
     constexpr double kStall = 1e-4;
-    std::vector<double> f(contacts.size(), 0.0);
+    // ... or less than kHopeless while some residual is still 10× the target: the pack is
+    // out of balance by far more than the tolerance, and the last digits would not change
+    // the verdict (this bounds the work on packs that are no equilibrium).
+    constexpr double kHopeless = 1e-2;
+    std::vector<double> f(system.columns(), 0.0);
     std::vector<double> g;
-    auto r = residuals(contacts, weight, f);
-    double value = objective(contacts, r, g);
+    auto r = residuals(system, f);
+    double value = objective(system, r, g);
     std::vector<double> history(kMemory, value);
-    double step = 0.5;  // 1 / the largest column norm² (a pair's column has norm² 2)
+    double step = 0.5;  // about 1 / the largest column norm² (a pair's normal column: 2)
     std::vector<double> trial(f.size());
     std::vector<double> g_trial;
     double checkpoint = value;
-    for (int it = 0; it < kMaxIterations && largest(r) > target; ++it) {
+    for (int it = 0; it < kMaxIterations && largest(system, r) > target; ++it) {
         if (it % kCheckEvery == kCheckEvery - 1) {
-            if (checkpoint - value <= kStall * checkpoint) {
-                break;  // the least-squares optimum, to the solver's precision
+            const double gain = checkpoint - value;
+            if (gain <= kStall * checkpoint ||
+                (gain <= kHopeless * checkpoint && largest(system, r) > 10.0 * target)) {
+                break;  // the least-squares optimum, to the precision the verdict needs
             }
             checkpoint = value;
         }
         const double reference = *std::max_element(history.begin(), history.end());
         double lambda = 1.0;
-        std::vector<Vec3> r_trial;
+        std::vector<double> r_trial;
         double value_trial = 0.0;
-        double descent = 0.0;
         for (int tries = 0; tries < 40; ++tries) {
-            descent = 0.0;
+            double descent = 0.0;
             for (std::size_t k = 0; k < f.size(); ++k) {
                 const double projected = std::max(0.0, f[k] - step * g[k]);
                 trial[k] = f[k] + lambda * (projected - f[k]);
                 descent += g[k] * (trial[k] - f[k]);
             }
-            r_trial = residuals(contacts, weight, trial);
-            value_trial = objective(contacts, r_trial, g_trial);
+            r_trial = residuals(system, trial);
+            value_trial = objective(system, r_trial, g_trial);
             if (value_trial <= reference + 1e-4 * descent) {
                 break;
             }
@@ -167,16 +205,61 @@ std::vector<double> solve_forces(const std::vector<Contact>& contacts,
     return f;
 }
 
-}  // namespace
+/// Two unit tangents of the plane normal to n.
+std::pair<Vec3, Vec3> tangents(const Vec3& n) {
+    const Vec3 helper = std::abs(n.x()) < 0.9 ? Vec3(1.0, 0.0, 0.0) : Vec3(0.0, 1.0, 0.0);
+    const Vec3 t1 = n.cross(helper).normalized();
+    return {t1, n.cross(t1)};
+}
 
-EquilibriumCertificate certify_frictionless(const std::vector<Particle>& particles,
-                                            const Container& container, double diameter,
-                                            const CertificateOptions& options) {
+/// The certificate's system: one column per contact (frictionless), or per edge of an
+/// inscribed pyramid of the Coulomb cone (frictional, with torques over d).
+System build_system(const std::vector<Particle>& particles, const std::vector<Contact>& contacts,
+                    const std::vector<double>& weight, double diameter,
+                    std::optional<double> friction) {
+    System s;
+    s.rows = friction ? 6 : 3;
+    s.b.assign(s.rows * particles.size(), 0.0);
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        s.b[s.rows * i + 1] = weight[i];
+    }
+    for (const Contact& c : contacts) {
+        if (!friction) {
+            s.add(c.first, 0, c.normal);
+            if (!c.wall) {
+                s.add(c.second, 0, -c.normal);
+            }
+            s.close_column();
+            continue;
+        }
+        // Edges n + μ'·(cos θ t₁ + sin θ t₂), θ = 2πk/8, μ' = μ·cos(π/8): the pyramid lies
+        // inside the cone, so forces it finds obey Coulomb's law.
+        const auto [t1, t2] = tangents(c.normal);
+        const double mu = *friction * std::cos(std::numbers::pi / kConeEdges);
+        for (int k = 0; k < kConeEdges; ++k) {
+            const double theta = 2.0 * std::numbers::pi * k / kConeEdges;
+            const Vec3 edge = c.normal + mu * (std::cos(theta) * t1 + std::sin(theta) * t2);
+            const Vec3 moment = c.normal.cross(edge);  // torque per unit lever (−r n) × edge
+            s.add(c.first, 0, edge);
+            s.add(c.first, 3, -particles[c.first].radius / diameter * moment);
+            if (!c.wall) {
+                s.add(c.second, 0, -edge);
+                s.add(c.second, 3, -particles[c.second].radius / diameter * moment);
+            }
+            s.close_column();
+        }
+    }
+    return s;
+}
+
+EquilibriumCertificate certify(const std::vector<Particle>& particles, const Container& container,
+                               double diameter, std::optional<double> friction,
+                               const CertificateOptions& options) {
     if (!(diameter > 0.0) || !(options.gap_tolerance_over_d >= 0.0) ||
-        !(options.residual_tolerance > 0.0)) {
+        !(options.residual_tolerance > 0.0) || (friction && !(*friction >= 0.0))) {
         throw std::invalid_argument(
-            "certificate needs a diameter > 0, a gap tolerance >= 0 and "
-            "a residual tolerance > 0");
+            "certificate needs a diameter > 0, a gap tolerance >= 0, a residual tolerance > 0 "
+            "and a friction >= 0");
     }
     EquilibriumCertificate cert;
     const std::size_t n = particles.size();
@@ -185,7 +268,6 @@ EquilibriumCertificate certify_frictionless(const std::vector<Particle>& particl
         find_contacts(particles, container, options.gap_tolerance_over_d * diameter, deepest);
     cert.contacts = contacts.size();
     cert.overlap_max_over_d = deepest / diameter;
-
     const double d3 = diameter * diameter * diameter;
     std::vector<double> weight(n);
     std::vector<int> degree(n, 0);
@@ -193,26 +275,51 @@ EquilibriumCertificate certify_frictionless(const std::vector<Particle>& particl
         ++degree[c.first];
         degree[c.second == kNone ? c.first : c.second] += c.wall ? 0 : 1;
     }
+    const int enough = friction ? 1 : 3;
     for (std::size_t i = 0; i < n; ++i) {
         const double r = particles[i].radius;
         weight[i] = 8.0 * r * r * r / d3;
         cert.weight_sum += weight[i];
-        cert.underconstrained += degree[i] < 3 ? 1 : 0;
+        cert.underconstrained += degree[i] < enough ? 1 : 0;
     }
-    cert.force = solve_forces(contacts, weight, 0.1 * options.residual_tolerance);
-    const auto residual = residuals(contacts, weight, cert.force);
-    cert.residual.assign(n, 0.0);
+    const System system = build_system(particles, contacts, weight, diameter, friction);
+    const auto f = solve_forces(system, 0.1 * options.residual_tolerance);
+    const auto r = residuals(system, f);
+    cert.residual = per_sphere(system, r);
     for (std::size_t i = 0; i < n; ++i) {
-        cert.residual[i] = residual[i].norm();
-        cert.residual_sum += residual[i].lpNorm<1>();
+        for (std::size_t a = 0; a < system.rows; ++a) {
+            cert.residual_sum += std::abs(r[system.rows * i + a]);
+        }
         if (cert.residual[i] > cert.residual_max) {
             cert.residual_max = cert.residual[i];
             cert.worst_sphere = i;
         }
     }
+    // Per contact, the total force (the sum over its pyramid's edges, for friction).
+    const std::size_t per = friction ? static_cast<std::size_t>(kConeEdges) : 1;
+    cert.force.assign(contacts.size(), 0.0);
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+        for (std::size_t e = 0; e < per; ++e) {
+            cert.force[k] += f[per * k + e];  // the normal part: each edge has n·edge = 1
+        }
+    }
     cert.certified = cert.overlap_max_over_d <= options.gap_tolerance_over_d &&
                      cert.residual_max <= options.residual_tolerance;
     return cert;
+}
+
+}  // namespace
+
+EquilibriumCertificate certify_frictionless(const std::vector<Particle>& particles,
+                                            const Container& container, double diameter,
+                                            const CertificateOptions& options) {
+    return certify(particles, container, diameter, std::nullopt, options);
+}
+
+EquilibriumCertificate certify_frictional(const std::vector<Particle>& particles,
+                                          const Container& container, double diameter,
+                                          double friction, const CertificateOptions& options) {
+    return certify(particles, container, diameter, friction, options);
 }
 
 }  // namespace sgmp::engine

@@ -108,18 +108,20 @@ void record_relaxation(const RelaxParams& params, const RelaxStats& stats, Metad
     m.set_number("relax_finish_move_mean", stats.finish_move_mean);
 }
 
-/// The equilibrium certificate's header keys (equilibrium_certificate.hpp); a frictional
-/// pack has no certificate yet: certified=false, certificate=none.
-void record_certificate(const std::optional<EquilibriumCertificate>& c,
+/// The equilibrium certificate's header keys (equilibrium_certificate.hpp).
+void record_certificate(const std::optional<EquilibriumCertificate>& c, const RelaxParams& relax,
                         const std::vector<Particle>& particles, Metadata& m) {
     if (!c) {
-        m.set("certified", "false");
-        m.set("certificate", "none");
         return;
     }
     const CertificateOptions options;
     m.set("certified", c->certified ? "true" : "false");
-    m.set("certificate", "frictionless");
+    if (relax.mode == RelaxMode::Frictional) {
+        m.set("certificate", "frictional");
+        m.set_number("certificate_friction", relax.friction);
+    } else {
+        m.set("certificate", "frictionless");
+    }
     m.set_number("certificate_gap_tolerance", options.gap_tolerance_over_d);
     m.set_number("certificate_residual_tolerance", options.residual_tolerance);
     m.set_number("certificate_residual_max", c->residual_max);
@@ -194,11 +196,12 @@ Pack make_pack(const PackRequest& request, const ProgressCallback& progress, Pac
     release_free_memory();  // the neighbour grid's, before the relaxation and the checks
     if (request.relax.mode != RelaxMode::None) {
         local.relax = relax_pack(particles, container, request.relax, d);
-        if (request.relax.mode == RelaxMode::Frictionless) {
-            local.certificate = certify_frictionless(particles, container, d);
-            local.certificate->residual.clear();  // the summary is kept, not the fields
-            local.certificate->force.clear();
-        }
+        local.certificate =
+            request.relax.mode == RelaxMode::Frictionless
+                ? certify_frictionless(particles, container, d)
+                : certify_frictional(particles, container, d, request.relax.friction);
+        local.certificate->residual.clear();  // the summary is kept, not the fields
+        local.certificate->force.clear();
     }
 
     Pack pack;
@@ -216,7 +219,7 @@ Pack make_pack(const PackRequest& request, const ProgressCallback& progress, Pac
     m.set_integer("move_limit", static_cast<long long>(local.move_limit));
     record_relaxation(request.relax, local.relax, m);
     if (request.relax.mode != RelaxMode::None) {
-        record_certificate(local.certificate, pack.particles, m);
+        record_certificate(local.certificate, request.relax, pack.particles, m);
     }
     if (stats != nullptr) {
         *stats = local;

@@ -50,4 +50,14 @@ EquilibriumCertificate certify_frictionless(const std::vector<Particle>& particl
                                             const Container& container, double diameter,
                                             const CertificateOptions& options = {});
 
+/// The frictional certificate at sliding friction μ: each contact force lies in the
+/// pyramid of 8 edges n + μ'·(cos θₖ t₁ + sin θₖ t₂), μ' = μ·cos(π/8), inscribed in the
+/// Coulomb cone |f_t| ≤ μ·f_n (so any forces it finds obey Coulomb's law), and every sphere
+/// balances force and torque: the residual of sphere i is √(|R_F,i|² + |R_T,i/d|²), its
+/// torque taken about the centre, the contact at the surface point cᵢ − rᵢ·n. No rolling
+/// resistance. Spheres on no contact are counted as underconstrained.
+EquilibriumCertificate certify_frictional(const std::vector<Particle>& particles,
+                                          const Container& container, double diameter,
+                                          double friction, const CertificateOptions& options = {});
+
 }  // namespace sgmp::engine

@@ -49,7 +49,7 @@ struct PackStats {
     std::size_t stalled = 0;     ///< particles that moved stall_moves times without falling
     std::size_t move_limit = 0;  ///< particles that reached max_moves
     RelaxStats relax;            ///< the relaxation's, when one was asked for
-    /// A frictionless relaxation's equilibrium certificate (its per-sphere fields empty).
+    /// The relaxation's equilibrium certificate (its per-sphere fields empty).
     std::optional<EquilibriumCertificate> certificate;
 };
 
@@ -64,7 +64,7 @@ void validate(const PackRequest& request);
 /// phi_target, arrangement, seed, every protocol parameter, container, start_height and
 /// the statistics; with a relaxation, its parameters and statistics follow (`relax_*`),
 /// then its equilibrium certificate (`certified`, `certificate`, `certificate_*`:
-/// equilibrium_certificate.hpp; a frictional relaxation has none yet: certified=false). Throws
+/// equilibrium_certificate.hpp; frictional at the relaxation's own μ). Throws
 /// ParameterError (see `validate`) for bad requests.
 Pack make_pack(const PackRequest& request, const ProgressCallback& progress = {},
                PackStats* stats = nullptr);

@@ -76,6 +76,9 @@ BOOST_AUTO_TEST_CASE(malformed_dumps_name_the_line_and_the_reason) {
     BOOST_TEST(read_error(missing_y) ==
                "pour.dump:9: ATOMS section lacks the 'y' column (scaled coordinates are not "
                "accepted)");
+    std::string twice = kSnapshot1;  // x given twice: the last used to win
+    twice.replace(twice.find(" y "), 3, " x ");
+    BOOST_TEST(read_error(twice) == "pour.dump:9: ATOMS section names 'x' twice");
     std::string no_radius = kSnapshot1;
     no_radius.replace(no_radius.find("radius"), 6, "mass");
     BOOST_TEST(read_error(no_radius) ==

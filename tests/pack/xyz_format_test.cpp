@@ -139,6 +139,17 @@ BOOST_AUTO_TEST_CASE(readers_refuse_what_would_allocate_without_bound) {
                "pack.xyz:2: more than 10000 header keys (the readers' limit)");
     BOOST_TEST(read_error("1\nseed=1 seed=2 " + kHeader + "1 0 0 0 0.05 0\n") ==
                "pack.xyz:2: header key 'seed' appears twice");
+    // Ambiguous columns: a repeated name, radius beside diameter, bin beside color.
+    BOOST_TEST(
+        read_error("1\nProperties=id:I:1:pos:R:3:radius:R:1:pos:R:3\n1 0 0 0 0.05 1 1 1\n") ==
+        "pack.xyz:2: Properties names 'pos' twice");
+    BOOST_TEST(
+        read_error("1\nProperties=id:I:1:pos:R:3:radius:R:1:diameter:R:1\n1 0 0 0 0.05 0.2\n")
+            .find("pack.xyz:2: Properties holds both 'radius' and 'diameter'") == 0u);
+    BOOST_TEST(
+        read_error(
+            "1\nProperties=id:I:1:pos:R:3:radius:R:1:bin:I:1:color:I:1\n1 0 0 0 0.05 1 2\n") ==
+        "pack.xyz:2: Properties holds both 'bin' and 'color': give one");
     // A line just under the limit is read whole (the chunked reader appends its pieces).
     const std::string comment(100000, 'x');
     std::istringstream in("1\nnote=" + comment + " " + kHeader + "1 0 0 0 0.05 0\n");

@@ -27,6 +27,10 @@ DumpColumns parse_atom_labels(const std::vector<std::string_view>& labels,
     for (std::size_t i = 0; i < labels.size(); ++i) {
         const auto label = labels[i];
         const int index = static_cast<int>(i);
+        if (std::find(labels.begin(), labels.begin() + static_cast<std::ptrdiff_t>(i), label) !=
+            labels.begin() + static_cast<std::ptrdiff_t>(i)) {  // the last would silently win
+            throw reader.error("ATOMS section names '" + std::string(label) + "' twice");
+        }
         if (label == "id") {
             columns.id = index;
         } else if (label == "radius") {

@@ -137,9 +137,13 @@ Columns parse_properties(const std::string& descriptor, bool have_radius,
         throw reader.error("Properties='" + descriptor + "' is not a list of name:type:count");
     }
     Columns columns;
+    std::set<std::string> names;
     for (std::size_t i = 0; i < parts.size(); i += 3) {
         const std::string& name = parts[i];
         const std::string key = lower(name);
+        if (!names.insert(key).second) {  // the last would silently win
+            throw reader.error("Properties names '" + name + "' twice");
+        }
         const auto count = detail::parse_integer(parts[i + 2]);
         if (!count || *count < 1 || *count > kMaxColumns - columns.width) {
             throw reader.error("Properties entry '" + name + "' has count '" + parts[i + 2] +
@@ -167,12 +171,20 @@ Columns parse_properties(const std::string& descriptor, bool have_radius,
             columns.diameter = columns.width;
         } else if (key == "bin" || key == "color") {
             expect(1);
+            if (columns.color >= 0) {
+                throw reader.error("Properties holds both 'bin' and 'color': give one");
+            }
             columns.color = columns.width;
         }
         columns.width += static_cast<int>(*count);
     }
     if (columns.x < 0) {
         throw reader.error("Properties lacks the 'pos' column");
+    }
+    if (columns.radius >= 0 && columns.diameter >= 0) {
+        throw reader.error(
+            "Properties holds both 'radius' and 'diameter': give one (which "
+            "would count is not clear)");
     }
     if (columns.radius < 0 && columns.diameter < 0 && !have_radius) {
         throw reader.error(

@@ -139,6 +139,10 @@ BOOST_AUTO_TEST_CASE(readers_refuse_what_would_allocate_without_bound) {
                "pack.xyz:2: more than 10000 header keys (the readers' limit)");
     BOOST_TEST(read_error("1\nseed=1 seed=2 " + kHeader + "1 0 0 0 0.05 0\n") ==
                "pack.xyz:2: header key 'seed' appears twice");
+    // ESC and BEL in a value (terminal escapes; `header` printed them raw, `convert` copied
+    // them): refused, the bytes escaped in the message.
+    BOOST_TEST(read_error("1\nnote=\x1b[31mred\x07 " + kHeader + "1 0 0 0 0.05 0\n") ==
+               "pack.xyz:2: header entry 'note=\\x1b[31mred\\x07' holds a control character");
     // Ambiguous columns: a repeated name, radius beside diameter, bin beside color.
     BOOST_TEST(
         read_error("1\nProperties=id:I:1:pos:R:3:radius:R:1:pos:R:3\n1 0 0 0 0.05 1 1 1\n") ==

@@ -69,6 +69,16 @@ std::vector<std::pair<std::string, std::string>> parse_comment(const std::string
         if (!seen.insert(key).second) {
             throw reader.error("header key '" + key + "' appears twice");
         }
+        const auto control = [](const std::string& text) {
+            return std::any_of(text.begin(), text.end(), [](char c) {
+                const auto byte = static_cast<unsigned char>(c);
+                return (byte < 0x20 && byte != '\t') || byte == 0x7f;
+            });
+        };
+        if (control(key) || control(value)) {  // would reach terminals and copies raw
+            throw reader.error("header entry '" + key + "=" + value +
+                               "' holds a control character");
+        }
         pairs.emplace_back(std::move(key), std::move(value));
     };
     std::size_t pos = 0;

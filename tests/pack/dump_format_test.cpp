@@ -76,6 +76,13 @@ BOOST_AUTO_TEST_CASE(malformed_dumps_name_the_line_and_the_reason) {
     BOOST_TEST(read_error(missing_y) ==
                "pour.dump:9: ATOMS section lacks the 'y' column (scaled coordinates are not "
                "accepted)");
+    std::string inverted = kSnapshot1;  // lo > hi, and NaN: accepted before
+    inverted.replace(inverted.find("-0.625 5"), 8, "5 -0.625");
+    BOOST_TEST(read_error(inverted) ==
+               "pour.dump:7: box bounds '5 -0.625' must be finite with lo <= hi");
+    std::string nan_box = kSnapshot1;
+    nan_box.replace(nan_box.find("-0.625 5"), 8, "nan 5");
+    BOOST_TEST(read_error(nan_box).find("pour.dump:7: box bounds") == 0u);
     std::string twice = kSnapshot1;  // x given twice: the last used to win
     twice.replace(twice.find(" y "), 3, " x ");
     BOOST_TEST(read_error(twice) == "pour.dump:9: ATOMS section names 'x' twice");

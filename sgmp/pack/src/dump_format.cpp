@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "text_fields.hpp"
 
@@ -114,10 +115,14 @@ Pack read_snapshot(LineReader& reader) {
     for (int axis = 0; axis < 3; ++axis) {
         const std::string line = expect_line(reader, "a box bounds line");
         const auto fields = detail::split_fields(line);
-        if (fields.size() < 2 || !detail::parse_double(fields[0]) ||
-            !detail::parse_double(fields[1])) {
+        const auto lo = fields.size() >= 2 ? detail::parse_double(fields[0]) : std::nullopt;
+        const auto hi = fields.size() >= 2 ? detail::parse_double(fields[1]) : std::nullopt;
+        if (!lo || !hi) {
             throw reader.error("box bounds line must start with two numbers 'lo hi', found '" +
                                line + "'");
+        }
+        if (!std::isfinite(*lo) || !std::isfinite(*hi) || !(*lo <= *hi)) {
+            throw reader.error("box bounds '" + line + "' must be finite with lo <= hi");
         }
         if (axis > 0) {
             box += ' ';

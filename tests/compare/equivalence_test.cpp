@@ -1,6 +1,6 @@
 // The equivalence test behind every verdict (equivalence.hpp), against values computed
 // independently with scipy.stats (pooled Student t, two one-sided tests; scipy 1.10.1) and, for the
-// curve tests, against a Monte Carlo of the noise norm with a fixed seed.
+// curve tests, against Monte Carlo runs with fixed seeds (the L2 test of g(r): l2_test.cpp).
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
@@ -108,32 +108,17 @@ BOOST_AUTO_TEST_CASE(the_test_keeps_its_level_over_many_seeds) {
     }
 }
 
-// The L2 noise norm's 95 % quantile (Satterthwaite) against a Monte Carlo of ‖ε‖ with
-// ε_k ~ N(0, v_k): within 3 % (the approximation's error for 20 unequal bins is ~1 %).
-BOOST_AUTO_TEST_CASE(the_curve_noise_quantile_matches_a_monte_carlo) {
+// The total-variation noise norm ½Σ|ε_k| (normal approximation), ε_k ~ N(0, v_k), against a
+// Monte Carlo: within 3 % (the approximation's error for 20 unequal bins is ~1 %).
+BOOST_AUTO_TEST_CASE(the_total_variation_noise_quantile_matches_a_monte_carlo) {
     std::vector<double> variance;
     for (int k = 0; k < 20; ++k) {
         variance.push_back(1e-4 * (1.0 + k % 7));
     }
-    const double w = 0.05;
-    const auto r = test_curve(0.0, variance, w, CurveNorm::L2, 1.0, 2);
+    const auto tv = test_total_variation(0.0, variance, 1.0, 2);
     std::mt19937_64 rng(7);
     std::normal_distribution<double> unit(0.0, 1.0);
     std::vector<double> norms;
-    for (int t = 0; t < 40000; ++t) {
-        double s = 0.0;
-        for (const double v : variance) {
-            const double e = std::sqrt(v) * unit(rng);
-            s += w * e * e;
-        }
-        norms.push_back(std::sqrt(s));
-    }
-    std::sort(norms.begin(), norms.end());
-    const double q95 = norms[static_cast<std::size_t>(0.95 * norms.size())];
-    BOOST_TEST(std::abs(r.ci_high - q95) < 0.03 * q95);
-    // Total variation: ½Σ|ε_k| (normal approximation) against the same Monte Carlo.
-    const auto tv = test_curve(0.0, variance, 1.0, CurveNorm::TotalVariation, 1.0, 2);
-    norms.clear();
     for (int t = 0; t < 40000; ++t) {
         double s = 0.0;
         for (const double v : variance) {
@@ -144,15 +129,16 @@ BOOST_AUTO_TEST_CASE(the_curve_noise_quantile_matches_a_monte_carlo) {
     std::sort(norms.begin(), norms.end());
     const double tv95 = norms[static_cast<std::size_t>(0.95 * norms.size())];
     BOOST_TEST(std::abs(tv.ci_high - tv95) < 0.03 * tv95);
+    BOOST_TEST(tv.zero_bound == tv.ci_high);  // at D = 0 the bound is q
 }
 
-BOOST_AUTO_TEST_CASE(curve_decisions_follow_the_interval) {
-    const std::vector<double> variance(10, 1e-6);  // noise norm ~ 0.003 at w = 1
-    BOOST_TEST(static_cast<int>(test_curve(0.01, variance, 1.0, CurveNorm::L2, 0.05, 2).decision) ==
+BOOST_AUTO_TEST_CASE(total_variation_decisions_follow_the_interval) {
+    const std::vector<double> variance(10, 1e-6);  // noise norm ~ 0.004
+    BOOST_TEST(static_cast<int>(test_total_variation(0.01, variance, 0.05, 2).decision) ==
                static_cast<int>(Decision::Agree));
-    BOOST_TEST(static_cast<int>(test_curve(0.20, variance, 1.0, CurveNorm::L2, 0.05, 2).decision) ==
+    BOOST_TEST(static_cast<int>(test_total_variation(0.20, variance, 0.05, 2).decision) ==
                static_cast<int>(Decision::Differ));
-    const auto mid = test_curve(0.05, variance, 1.0, CurveNorm::L2, 0.05, 2);
+    const auto mid = test_total_variation(0.05, variance, 0.05, 2);
     BOOST_TEST(static_cast<int>(mid.decision) == static_cast<int>(Decision::Inconclusive));
     BOOST_TEST(mid.ci_low >= 0.0);
 }

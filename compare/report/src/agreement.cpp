@@ -128,7 +128,7 @@ double overlap_depth(const std::vector<const PackSummary*>& packs) {
 }
 
 /// Copies the test's numbers into the row and sets its verdict.
-void take(MetricRow& row, const EquivalenceResult& r, double half_width) {
+void take(MetricRow& row, const EquivalenceResult& r) {
     row.margin = r.margin;
     row.tolerance = r.margin;
     row.tolerance_rule = "margin";
@@ -138,7 +138,7 @@ void take(MetricRow& row, const EquivalenceResult& r, double half_width) {
     row.p_agree = r.p_agree;
     row.p_differ = r.p_differ;
     row.seeds_to_decide = r.seeds_to_decide;
-    row.power = half_width < r.margin;
+    row.power = r.zero_bound < r.margin || r.decision == Decision::Agree;
     if (r.margin > 0.0) {
         row.ratio = std::abs(r.estimate) / r.margin;
     }
@@ -167,7 +167,7 @@ MetricRow judge_scalar(const MetricRule& rule, const std::vector<const PackSumma
     row.difference = sa.mean - sb.mean;
     row.seed_spread = b.size() >= 2 ? 2.0 * sb.sd : 0.0;
     const EquivalenceResult r = test_scalar(sa, sb, rule.margin);
-    take(row, r, 0.5 * (r.ci_high - r.ci_low));
+    take(row, r);
     return row;
 }
 
@@ -198,16 +198,16 @@ MetricRow judge_curve(const MetricRule& rule, const std::vector<const PackSummar
     row.difference = distance_between(rule, *b.front(), mean_values(rule, a), mean_values(rule, b));
     row.seed_spread = b.size() >= 2 ? mean_replicate_distance(rule, b) : 0.0;
     if (b.size() < 2) {  // no reference scatter: the noise is unknown
-        take(row, test_scalar({row.difference, 0.0, 1}, {0.0, 0.0, 1}, rule.margin), 1e300);
+        take(row, test_scalar({row.difference, 0.0, 1}, {0.0, 0.0, 1}, rule.margin));
         row.ci_low = 0.0;
         return row;
     }
-    const bool l2 = rule.name == "g_r";
-    const EquivalenceResult r = test_curve(
-        row.difference, noise_variance(judged_bins(rule, a), judged_bins(rule, b)),
-        l2 ? b.front()->gr_bin_width : 1.0, l2 ? CurveNorm::L2 : CurveNorm::TotalVariation,
-        rule.margin, std::min(a.size(), b.size()));
-    take(row, r, r.ci_high - row.difference);
+    const auto bins_a = judged_bins(rule, a);
+    const auto bins_b = judged_bins(rule, b);
+    take(row, rule.name == "g_r"
+                  ? test_l2_curves(bins_a, bins_b, b.front()->gr_bin_width, rule.margin)
+                  : test_total_variation(row.difference, noise_variance(bins_a, bins_b),
+                                         rule.margin, std::min(a.size(), b.size())));
     return row;
 }
 

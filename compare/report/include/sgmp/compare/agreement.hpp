@@ -13,9 +13,10 @@
 ///   agree        the 90 % interval of the difference lies inside ±m;
 ///   differ       it lies wholly outside ±m;
 ///   inconclusive it straddles a margin; seeds_to_decide says how many seeds would decide.
-/// Scalars: Δ = mean_candidate − mean_reference (Welch). Curves: D, the L2 distance of the
-/// mean g(r) on [1.1·d, 5·d] or the total-variation distance ½Σ|p − q| of the mean P(Z),
-/// against the noise norm of the mean difference. Nothing rewrites a verdict afterwards:
+/// Scalars: Δ = mean_candidate − mean_reference (Welch). Curves: the L2 distance of the
+/// mean g(r) on [1.1·d, 5·d], by an unbiased estimate of its square with variance bounds for
+/// every direction of the difference; the total-variation distance ½Σ|p − q| of the mean
+/// P(Z), against the noise norm of the mean difference. Nothing rewrites a verdict afterwards:
 /// there is no model spread and no power rule; the power of each test is reported as its
 /// minimum detectable difference `mdd` at the candidate's n.
 ///

@@ -92,16 +92,16 @@ BOOST_AUTO_TEST_CASE(relax_none_writes_the_bytes_of_no_relaxation_and_relaxed_pa
     BOOST_TEST(s.run(common + "'" + s.path("none.xyz") + "' --relax none").status == 0);
     BOOST_TEST(sgmp::testing::read_bytes(s.path("plain.xyz")) ==
                sgmp::testing::read_bytes(s.path("none.xyz")));
-    // Not certified (certificate_test.cpp): refused without --keep-uncertified, no file.
-    const Run refused = s.run(common + "'" + s.path("r.xyz") + "' --relax frictionless");
+    // The frictional relaxation is not certified (certificate_test.cpp): refused without
+    // --keep-uncertified, no file.
+    const Run refused = s.run(common + "'" + s.path("r.xyz") + "' --relax frictional");
     BOOST_TEST(refused.status == 1);
-    BOOST_TEST(refused.err.find("not a certified frictionless equilibrium") != std::string::npos,
+    BOOST_TEST(refused.err.find("not a certified frictional equilibrium") != std::string::npos,
                refused.err);
     BOOST_TEST(!std::filesystem::exists(s.path("r.xyz")));
-    const Run a =
-        s.run(common + "'" + s.path("a.xyz") + "' --relax frictionless --keep-uncertified");
-    const Run b =
-        s.run(common + "'" + s.path("b.xyz") + "' --relax frictionless --keep-uncertified");
+    // The frictionless one ends in a certified equilibrium (settle_test.cpp).
+    const Run a = s.run(common + "'" + s.path("a.xyz") + "' --relax frictionless");
+    const Run b = s.run(common + "'" + s.path("b.xyz") + "' --relax frictionless");
     BOOST_TEST(a.status == 0);
     BOOST_TEST(b.status == 0);
     BOOST_TEST(sgmp::testing::read_bytes(s.path("a.xyz")) ==
@@ -111,6 +111,7 @@ BOOST_AUTO_TEST_CASE(relax_none_writes_the_bytes_of_no_relaxation_and_relaxed_pa
     BOOST_TEST(a.out.find("overlaps=0") != std::string::npos);
     const auto pack = sgmp::read_pack_file(s.path("a.xyz"));
     BOOST_TEST(pack.metadata.get("relax").value_or("") == "frictionless");
+    BOOST_TEST(pack.metadata.get("certified").value_or("") == "true");
     BOOST_TEST(!sgmp::read_pack_file(s.path("plain.xyz")).metadata.contains("relax"));
 }
 

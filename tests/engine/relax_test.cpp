@@ -29,11 +29,6 @@ RelaxParams frictionless(double shell) {
     return params;
 }
 
-/// The last stage's stiffness in m·g/d.
-double last_stiffness(const RelaxParams& p) {
-    return p.stiffness * std::pow(p.stiffness_factor, p.stages - 1);
-}
-
 /// Σ wᵢ·yᵢ with wᵢ ∝ rᵢ³: the gravitational energy up to a constant factor.
 double potential_energy(const std::vector<Particle>& ps) {
     double e = 0.0;
@@ -57,14 +52,9 @@ BOOST_AUTO_TEST_CASE(one_sphere_comes_to_rest_on_the_floor) {
         const RelaxStats stats = relax_pack(ps, box, params, d);
         BOOST_TEST_INFO("shell " << shell);
         BOOST_TEST(stats.stages_converged == params.stages);
-        // Soft equilibrium: the floor carries the weight, k·δ = m·g, so the soft sphere of
-        // radius (1 + s)·r sinks by δ = d/k_last. Its residual force (≤ 1e-4 m·g) moves it by
-        // at most 1e-4·d/k_last ≈ 5e-11·d; 1e-10·d allows for that. With s = 0 the real
-        // sphere overlaps the floor by δ, and the clearing (FIRE without gravity) parts them:
-        // its inertia leaves the sphere up to 1e-9·d above touching (measured 2.0e-10·d).
-        const double soft = box.floor + (1.0 + shell) * r - d / last_stiffness(params);
-        const double expected = std::max(soft, box.floor + r);
-        BOOST_TEST(std::abs(ps[0].center.y() - expected) <= (shell > 0.0 ? 1e-10 : 1e-9) * d);
+        // The hard-sphere settling ends it exactly on the floor (the floor is a bound of its
+        // LP): rounding of a few operations on coordinates of order 1, 1e-12.
+        BOOST_TEST(std::abs(ps[0].center.y() - (box.floor + r)) <= 1e-12);
         // Frictionless floor: nothing pushes sideways.
         BOOST_TEST(ps[0].center.x() == 0.1);
         BOOST_TEST(ps[0].center.z() == -0.1);
@@ -93,8 +83,9 @@ BOOST_AUTO_TEST_CASE(two_spheres_wedge_between_the_walls_at_the_analytic_height)
     BOOST_TEST(std::abs(ps[0].center.y() - (box.floor + r)) <= tolerance);
     BOOST_TEST(std::abs(ps[1].center.x() - (box.x_min + r)) <= tolerance);
     BOOST_TEST(std::abs(ps[1].center.y() - upper) <= tolerance);
-    BOOST_TEST(std::abs(ps[0].center.z()) <= tolerance);
-    BOOST_TEST(std::abs(ps[1].center.z()) <= tolerance);
+    // Along z nothing holds them (frictionless walls): a move of no energy, which the
+    // settling may take; they stay level with each other.
+    BOOST_TEST(std::abs(ps[0].center.z() - ps[1].center.z()) <= tolerance);
 }
 
 BOOST_AUTO_TEST_CASE(a_sphere_settles_into_the_pocket_of_four_corner_spheres) {

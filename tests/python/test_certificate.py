@@ -79,14 +79,14 @@ def test_the_reported_residual_is_the_least_squares_one(relaxed):
     a, b = balance_matrix(centres, radii, d, float(header["certificate_gap_tolerance"]))
     solution = lsq_linear(a.toarray(), b, bounds=(0, np.inf), method="bvls", tol=1e-12)
     residual = np.linalg.norm((a @ solution.x - b).reshape(-1, 3), axis=1)
-    # The pack's own solver stops within 1e-4 of its objective (equilibrium_certificate.cpp);
-    # the worst sphere's residual then agrees with scipy's optimum to a few per cent.
+    # The pack's own forces are the least-L1 ones (CLP); at an equilibrium both optima are 0,
+    # and out of one the two norms' worst spheres agree to a few per cent of m*g.
     ours = float(header["certificate_residual_max"])
     print(f"largest residual: ours {ours:.6g}, scipy bvls {residual.max():.6g} m*g")
     assert abs(ours - residual.max()) <= 0.05 * max(1.0, residual.max()), (ours, residual.max())
 
 
-def test_no_forces_balance_an_uncertified_pack(relaxed):
+def test_highs_reaches_the_certificate_decision(relaxed):
     header, centres, radii = relaxed
     d = float(header["diameter"])
     a, b = balance_matrix(centres, radii, d, float(header["certificate_gap_tolerance"]))
@@ -102,7 +102,7 @@ def test_no_forces_balance_an_uncertified_pack(relaxed):
     certified = header["certified"] == "true"
     # Both solvers reach the same decision at the certificate's tolerance.
     assert certified == (worst <= float(header["certificate_residual_tolerance"]))
-    assert not certified  # today's relaxation leaves spheres out of balance
+    assert certified  # the frictionless relaxation ends in a certified equilibrium
 
 
 def test_a_column_on_the_floor_is_certified_by_both():

@@ -1,5 +1,7 @@
 #include "sgmp/engine/equilibrium_certificate.hpp"
 
+#include <ClpSimplex.hpp>
+#include <CoinPackedMatrix.hpp>
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -78,6 +80,9 @@ struct System {
 
     void add(std::size_t sphere, std::size_t offset, const Vec3& v) {
         for (int a = 0; a < 3; ++a) {
+            if (v[a] == 0.0) {
+                continue;  // no explicit zeros: the LP solver may pivot on them
+            }
             row.push_back(
                 static_cast<std::uint32_t>(rows * sphere + offset + static_cast<std::size_t>(a)));
             value.push_back(v[a]);
@@ -101,21 +106,6 @@ std::vector<double> residuals(const System& s, const std::vector<double>& f) {
     return r;
 }
 
-/// ½·|r|² and its gradient Aᵀ·r.
-double objective(const System& s, const std::vector<double>& r, std::vector<double>& gradient) {
-    double sum = 0.0;
-    for (const double v : r) {
-        sum += v * v;
-    }
-    gradient.assign(s.columns(), 0.0);
-    for (std::size_t k = 0; k < s.columns(); ++k) {
-        for (std::size_t e = s.start[k]; e < s.start[k + 1]; ++e) {
-            gradient[k] += s.value[e] * r[s.row[e]];
-        }
-    }
-    return 0.5 * sum;
-}
-
 /// Per sphere, the Euclidean norm of its residual rows.
 std::vector<double> per_sphere(const System& s, const std::vector<double>& r) {
     std::vector<double> norms(r.size() / s.rows, 0.0);
@@ -128,79 +118,51 @@ std::vector<double> per_sphere(const System& s, const std::vector<double>& r) {
     return norms;
 }
 
-double largest(const System& s, const std::vector<double>& r) {
-    const auto norms = per_sphere(s, r);
-    return norms.empty() ? 0.0 : *std::max_element(norms.begin(), norms.end());
-}
-
-/// Non-negative least squares min ½·|A·f − b|², f ≥ 0, by the spectral projected gradient
-/// (Birgin, Martínez & Raydan, SIAM J. Optim. 10, 1196, 2000): Barzilai–Borwein steps,
-/// projected on f ≥ 0, with a non-monotone line search over the last 10 values. Stops
-/// when every sphere's residual is ≤ `target`, when 500 iterations lower the objective by
-/// less than 10⁻⁴ of itself (10⁻² while a residual is 10× the target), or after
-/// kMaxIterations; any f ≥ 0 it returns is a valid set
-/// of forces, so a small residual certifies, whatever the stopping reason.
-std::vector<double> solve_forces(const System& system, double target) {
-    constexpr int kMaxIterations = 200000;
-    constexpr int kMemory = 10;
-    constexpr int kCheckEvery = 500;  // stop when 500 iterations gain less than kStall
-    constexpr double kStall = 1e-4;
-    // ... or less than kHopeless while some residual is still 10× the target: the pack is
-    // out of balance by far more than the tolerance, and the last digits would not change
-    // the verdict (this bounds the work on packs that are no equilibrium).
-    constexpr double kHopeless = 1e-2;
-    std::vector<double> f(system.columns(), 0.0);
-    std::vector<double> g;
-    auto r = residuals(system, f);
-    double value = objective(system, r, g);
-    std::vector<double> history(kMemory, value);
-    double step = 0.5;  // about 1 / the largest column norm² (a pair's normal column: 2)
-    std::vector<double> trial(f.size());
-    std::vector<double> g_trial;
-    double checkpoint = value;
-    for (int it = 0; it < kMaxIterations && largest(system, r) > target; ++it) {
-        if (it % kCheckEvery == kCheckEvery - 1) {
-            const double gain = checkpoint - value;
-            if (gain <= kStall * checkpoint ||
-                (gain <= kHopeless * checkpoint && largest(system, r) > 10.0 * target)) {
-                break;  // the least-squares optimum, to the precision the verdict needs
-            }
-            checkpoint = value;
+/// The least-L1 residual forces: min Σ|A·f − b|₁ over f ≥ 0, as the LP
+///     min Σ (pₖ + qₖ)  subject to  A·f + p − q = b,  f, p, q ≥ 0
+/// by COIN-OR CLP's dual simplex (one thread, a fixed order: the same system gives the
+/// same forces). Its optimum is 0 exactly when some f ≥ 0 balances every sphere; any f ≥ 0
+/// it returns is a valid set of forces, so a small residual certifies.
+std::vector<double> solve_forces(const System& system) {
+    const std::size_t m = system.b.size();
+    const std::size_t k = system.columns();
+    std::vector<CoinBigIndex> start(system.start.begin(), system.start.end());
+    std::vector<int> row(system.row.begin(), system.row.end());
+    std::vector<double> value = system.value;
+    for (std::size_t i = 0; i < m; ++i) {  // p (+1) then q (−1) for residual row i
+        for (const double sign : {1.0, -1.0}) {
+            row.push_back(static_cast<int>(i));
+            value.push_back(sign);
+            start.push_back(static_cast<CoinBigIndex>(row.size()));
         }
-        const double reference = *std::max_element(history.begin(), history.end());
-        double lambda = 1.0;
-        std::vector<double> r_trial;
-        double value_trial = 0.0;
-        for (int tries = 0; tries < 40; ++tries) {
-            double descent = 0.0;
-            for (std::size_t k = 0; k < f.size(); ++k) {
-                const double projected = std::max(0.0, f[k] - step * g[k]);
-                trial[k] = f[k] + lambda * (projected - f[k]);
-                descent += g[k] * (trial[k] - f[k]);
-            }
-            r_trial = residuals(system, trial);
-            value_trial = objective(system, r_trial, g_trial);
-            if (value_trial <= reference + 1e-4 * descent) {
-                break;
-            }
-            lambda *= 0.5;
-        }
-        double ss = 0.0;
-        double sy = 0.0;
-        for (std::size_t k = 0; k < f.size(); ++k) {
-            const double sk = trial[k] - f[k];
-            ss += sk * sk;
-            sy += sk * (g_trial[k] - g[k]);
-        }
-        if (ss == 0.0) {
-            break;  // a fixed point of the projection: the least-squares optimum
-        }
-        step = sy > 0.0 ? std::clamp(ss / sy, 1e-10, 1e10) : 1e10;
-        f.swap(trial);
-        g.swap(g_trial);
-        r.swap(r_trial);
-        value = value_trial;
-        history[static_cast<std::size_t>(it % kMemory)] = value;
+    }
+    const int columns = static_cast<int>(k + 2 * m);
+    const CoinPackedMatrix matrix(true, static_cast<int>(m), columns,
+                                  static_cast<CoinBigIndex>(value.size()), value.data(), row.data(),
+                                  start.data(), nullptr);
+    std::vector<double> lower(static_cast<std::size_t>(columns), 0.0);
+    std::vector<double> upper(static_cast<std::size_t>(columns), COIN_DBL_MAX);
+    std::vector<double> cost(static_cast<std::size_t>(columns), 1.0);
+    std::fill(cost.begin(), cost.begin() + static_cast<std::ptrdiff_t>(k), 0.0);
+    ClpSimplex model;
+    model.setLogLevel(0);
+    model.loadProblem(matrix, lower.data(), upper.data(), cost.data(), system.b.data(),
+                      system.b.data());
+    model.scaling(0);  // CLP's scaling leaves this LP's unscaled optimum infeasible
+    model.setPrimalTolerance(1e-10);
+    model.dual();
+    if (model.status() == 0 && model.secondaryStatus() != 0) {
+        model.primal(1);  // clean up on the unscaled problem
+    }
+    if (model.status() != 0 || model.secondaryStatus() != 0) {
+        throw std::runtime_error("equilibrium certificate: the force LP failed (CLP status " +
+                                 std::to_string(model.status()) + ", " +
+                                 std::to_string(model.secondaryStatus()) + ")");
+    }
+    const double* x = model.primalColumnSolution();
+    std::vector<double> f(x, x + k);
+    for (double& v : f) {
+        v = std::max(v, 0.0);  // within the LP's tolerance of its bound
     }
     return f;
 }
@@ -283,7 +245,7 @@ EquilibriumCertificate certify(const std::vector<Particle>& particles, const Con
         cert.underconstrained += degree[i] < enough ? 1 : 0;
     }
     const System system = build_system(particles, contacts, weight, diameter, friction);
-    const auto f = solve_forces(system, 0.1 * options.residual_tolerance);
+    const auto f = solve_forces(system);
     const auto r = residuals(system, f);
     cert.residual = per_sphere(system, r);
     for (std::size_t i = 0; i < n; ++i) {

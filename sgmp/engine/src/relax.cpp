@@ -11,6 +11,7 @@
 #include "friction.hpp"
 #include "relax_state.hpp"
 #include "sgmp/engine/hard_sphere_finish.hpp"
+#include "sgmp/engine/hard_sphere_settle.hpp"
 #include "sgmp/engine/neighbour_list.hpp"
 
 namespace sgmp::engine {
@@ -475,6 +476,13 @@ RelaxStats relax_pack(std::vector<Particle>& particles, const Container& contain
     stats.finish_lifted = static_cast<long long>(finish.lifted);
     stats.finish_move_max = finish.move_max / diameter;
     stats.finish_move_mean = finish.move_sum / static_cast<double>(particles.size()) / diameter;
+    if (params.mode == RelaxMode::Frictionless) {
+        const SettleStats settle = settle_hard_spheres(particles, container, diameter);
+        stats.settle_iterations = settle.iterations;
+        stats.settle_converged = settle.converged;
+        stats.settle_move_max = settle.move_max;
+        stats.settle_energy_drop = settle.energy_drop;
+    }
     return stats;
 }
 

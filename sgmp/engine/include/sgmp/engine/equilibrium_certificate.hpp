@@ -11,11 +11,11 @@
 ///
 ///     Rᵢ = Σ_c f_c·nᵢ,c − wᵢ·ŷ        (ŷ up; gravity −ŷ)
 ///
-/// The forces are the non-negative least-squares solution, min ½·Σᵢ|Rᵢ|² over f ≥ 0, by
-/// a spectral projected gradient (src/equilibrium_certificate.cpp). Any f ≥ 0 is a valid
-/// set of forces, so a small residual certifies however the solver stopped; a large one
-/// says no forces were found (the tests check it against scipy's bounded least squares and
-/// HiGHS's least L1 residual: tests/python/test_certificate.py).
+/// The forces are the least-L1 solution, min Σᵢ|Rᵢ|₁ over f ≥ 0, an LP solved exactly by
+/// COIN-OR CLP's simplex (src/equilibrium_certificate.cpp): its optimum is 0 exactly when
+/// forces balancing every sphere exist. Any f ≥ 0 is a valid set of forces, so a small
+/// residual certifies; a large one says no forces exist (the tests check the optimum
+/// against HiGHS's: tests/python/test_certificate.py).
 /// The pack is certified when no pair or wall overlaps by more than ε·d and every |Rᵢ| is
 /// at most residual_tolerance (default 10⁻³ m·g).
 #include <cstddef>

@@ -46,6 +46,10 @@
 /// stages before the tolerance is met; `relax_force_max` in the header says what is left
 /// (about 1–5 m·g on the worst sphere at N = 3000–9000: a few spheres still sliding).
 ///
+/// Settle (frictionless): the hard-sphere pack is then settled under gravity by sequential
+/// linear programming (hard_sphere_settle.hpp) into an exact frictionless equilibrium, which
+/// the pack's certificate checks (equilibrium_certificate.hpp).
+///
 /// Finish: the real spheres are (1 + s) times smaller than the soft ones (default s = 0: the
 /// same), so a soft overlap below s·(rᵢ + rⱼ) is a real gap of at most s·(rᵢ + rⱼ); deeper
 /// ones — with s = 0 every loaded contact — are parted by the clearing, and whatever is left
@@ -68,13 +72,17 @@ namespace sgmp::engine {
 
 /// What the relaxation did (also recorded in the pack's metadata).
 struct RelaxStats {
-    long long steps = 0;            ///< minimiser steps over all stages
-    int stages_converged = 0;       ///< stages that reached the force tolerance
-    double force_max = 0.0;         ///< largest net force on a sphere at the end, in m·g
-    double overlap_max = 0.0;       ///< deepest soft overlap at the end (pairs, walls), over d
-    long long finish_lifted = 0;    ///< spheres the finish had to lift straight up
-    double finish_move_max = 0.0;   ///< largest displacement by the hard-sphere finish, over d
-    double finish_move_mean = 0.0;  ///< mean displacement by the hard-sphere finish, over d
+    long long steps = 0;              ///< minimiser steps over all stages
+    int stages_converged = 0;         ///< stages that reached the force tolerance
+    double force_max = 0.0;           ///< largest net force on a sphere at the end, in m·g
+    double overlap_max = 0.0;         ///< deepest soft overlap at the end (pairs, walls), over d
+    long long finish_lifted = 0;      ///< spheres the finish had to lift straight up
+    double finish_move_max = 0.0;     ///< largest displacement by the hard-sphere finish, over d
+    double finish_move_mean = 0.0;    ///< mean displacement by the hard-sphere finish, over d
+    int settle_iterations = 0;        ///< LP iterations of the hard-sphere settling (frictionless)
+    bool settle_converged = false;    ///< the settling ended by its trust region
+    double settle_move_max = 0.0;     ///< largest displacement by the settling, over d
+    double settle_energy_drop = 0.0;  ///< potential energy the settling released, m·g·d
 };
 
 /// Relaxes `particles` (of scale diameter `diameter`) in `container` as described above and

@@ -163,8 +163,10 @@ void add_relax(CLI::App& app, Options& o) {
     add_choice(app, o, "--relax", r.mode, relax_modes(),
                "after deposition: none | frictionless (relax the whole pack under gravity "
                "to an equilibrium of frictionless soft spheres by FIRE energy "
-               "minimisation, then finish it as hard spheres) | frictional (the same "
-               "with Coulomb friction: tangential springs capped at mu*F_n)");
+               "minimisation, then settle it as hard spheres into a certified equilibrium "
+               "by linear programming; slow: about 15 s at N = 1002) | frictional (the "
+               "FIRE stages with Coulomb friction: tangential springs capped at mu*F_n; "
+               "not yet certified)");
     app.add_option("--relax-stiffness", r.stiffness,
                    "contact stiffness k of the first relaxation stage in m*g/d (a contact "
                    "carrying one weight m*g overlaps by d/k)")

@@ -4,6 +4,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <cstdint>
 
 #include "sgmp/engine/equilibrium_certificate.hpp"
 #include "sgmp/engine/hard_sphere_settle.hpp"
@@ -20,6 +21,16 @@ constexpr double kD = 0.1;
 
 Particle sphere(double x, double y, double z) {
     return Particle{0, Vec3(x, y, z), 0.5 * kD, 0};
+}
+
+/// A loose-random pack of 150 relaxed by `--relax frictionless`.
+Pack relaxed_pack(std::uint64_t seed) {
+    PackRequest request;
+    request.count = 150;
+    request.arrangement = Arrangement::LooseRandom;
+    request.seed = seed;
+    request.relax.mode = RelaxMode::Frictionless;
+    return make_pack(request);
 }
 
 }  // namespace
@@ -68,29 +79,20 @@ BOOST_AUTO_TEST_CASE(relaxed_packs_are_certified_equilibria_over_seeds) {
     // `--relax frictionless` ends in a certified equilibrium: every weight balanced to
     // 10⁻³ m·g by non-negative forces at gaps ≤ 10⁻⁶·d, no overlap, every sphere inside.
     for (const unsigned seed : {1u, 2u, 3u, 4u}) {
-        PackRequest request;
-        request.count = 150;
-        request.arrangement = Arrangement::LooseRandom;
-        request.seed = seed;
-        request.relax.mode = RelaxMode::Frictionless;
-        const Pack pack = make_pack(request);
+        const Pack pack = relaxed_pack(seed);
         BOOST_TEST(pack.metadata.get("certified").value_or("") == "true",
                    "seed " << seed << ": residual "
                            << pack.metadata.get("certificate_residual_max").value_or(""));
         BOOST_TEST(pack.metadata.get("relax_settle_converged").value_or("") == "true");
         const auto overlaps = count_overlaps(pack.particles, kBox, 1e-12 * kD);
         BOOST_TEST(overlaps.pairs == 0u);
+        BOOST_TEST(overlaps.walls == 0u);
     }
 }
 
 BOOST_AUTO_TEST_CASE(the_same_pack_settles_to_the_same_bytes) {
-    PackRequest request;
-    request.count = 150;
-    request.arrangement = Arrangement::LooseRandom;
-    request.seed = 7;
-    request.relax.mode = RelaxMode::Frictionless;
-    const Pack a = make_pack(request);
-    const Pack b = make_pack(request);
+    const Pack a = relaxed_pack(7);
+    const Pack b = relaxed_pack(7);
     BOOST_TEST_REQUIRE(a.particles.size() == b.particles.size());
     for (std::size_t i = 0; i < a.particles.size(); ++i) {
         BOOST_TEST((a.particles[i].center == b.particles[i].center));

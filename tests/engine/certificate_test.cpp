@@ -110,6 +110,39 @@ BOOST_AUTO_TEST_CASE(friction_holds_a_sphere_wedged_between_two_walls) {
     BOOST_CHECK_THROW(certify_frictional(one, wedge, kD, -0.1), std::invalid_argument);
 }
 
+BOOST_AUTO_TEST_CASE(a_witness_certifies_only_when_its_forces_balance) {
+    // The column of three on the floor: floor 3, pairs 2 and 1, in m·g (closed form).
+    const double y0 = kBox.floor + 0.5 * kD;
+    const std::vector<Particle> column{sphere(0, y0, 0), sphere(0, y0 + kD, 0),
+                                       sphere(0, y0 + 2 * kD, 0)};
+    const std::vector<ContactForce> exact{{0, 0, Partner::Floor, 3.0},
+                                          {1, 0, Partner::Sphere, 2.0},  // either order
+                                          {1, 2, Partner::Sphere, 1.0},
+                                          {2, 0, Partner::Sphere, 7.0}};  // not a contact
+    const auto by_witness = certify_frictionless(column, kBox, kD, {}, exact);
+    BOOST_TEST(by_witness.by_witness);
+    BOOST_TEST(by_witness.certified);
+    BOOST_TEST(by_witness.residual_max <= 1e-15);  // exact forces, exact geometry
+    // A witness 10 % short on the floor is not enough: the LP runs and certifies, as
+    // without a witness (its residual within the LP's 10⁻¹⁰ tolerances).
+    std::vector<ContactForce> short_floor = exact;
+    short_floor[0].force = 2.7;
+    const auto by_lp = certify_frictionless(column, kBox, kD, {}, short_floor);
+    const auto plain = certify_frictionless(column, kBox, kD);
+    BOOST_TEST(!by_lp.by_witness);
+    BOOST_TEST(by_lp.certified);
+    BOOST_TEST(by_lp.residual_max == plain.residual_max, boost::test_tools::tolerance(1e-12));
+    // A witness on the floating sphere cannot make it balanced.
+    const auto floating =
+        certify_frictionless({sphere(0, kBox.floor + 0.51 * kD, 0)}, kBox, kD, {},
+                             std::vector<ContactForce>{{0, 0, Partner::Floor, 1.0}});
+    BOOST_TEST(!floating.certified);
+    BOOST_TEST(floating.residual_max == 1.0, boost::test_tools::tolerance(1e-12));
+    BOOST_CHECK_THROW(certify_frictionless(column, kBox, kD, {},
+                                           std::vector<ContactForce>{{0, 0, Partner::Floor, -1.0}}),
+                      std::invalid_argument);
+}
+
 BOOST_AUTO_TEST_CASE(an_overlap_deeper_than_the_tolerance_is_not_certified) {
     const double y0 = kBox.floor + 0.5 * kD;
     const auto c =

@@ -56,6 +56,17 @@ BOOST_AUTO_TEST_CASE(a_floating_column_falls_onto_the_floor) {
     // Energy released: (0.3) + (0.3 + 0.2) + (0.3 + 0.2 + 0.1) = 1.4 weights·d.
     BOOST_TEST(s.energy_drop == 1.4, boost::test_tools::tolerance(1e-9));
     BOOST_TEST(certify_frictionless(p, kBox, kD).certified);
+    // The LP's multipliers are the contact forces: floor 3, pairs 2 and 1 (closed form),
+    // and they certify on their own (no certificate LP).
+    const auto witness = certify_frictionless(p, kBox, kD, {}, s.forces);
+    BOOST_TEST(witness.by_witness);
+    BOOST_TEST(witness.residual_max <= 1e-9);
+    BOOST_TEST_REQUIRE(witness.force.size() == 3u);
+    double total = 0.0;
+    for (const double f : witness.force) {
+        total += f;
+    }
+    BOOST_TEST(total == 6.0, boost::test_tools::tolerance(1e-9));
 }
 
 BOOST_AUTO_TEST_CASE(a_sphere_on_a_single_sphere_slides_off_into_a_pocket) {
@@ -73,6 +84,8 @@ BOOST_AUTO_TEST_CASE(a_sphere_on_a_single_sphere_slides_off_into_a_pocket) {
     const auto c = certify_frictionless(p, kBox, kD);
     BOOST_TEST(c.certified, "residual " << c.residual_max);
     BOOST_TEST(c.overlap_max_over_d <= 1e-12);
+    const auto witness = certify_frictionless(p, kBox, kD, {}, s.forces);
+    BOOST_TEST(witness.by_witness, "witness residual " << witness.residual_max);
 }
 
 BOOST_AUTO_TEST_CASE(relaxed_packs_are_certified_equilibria_over_seeds) {

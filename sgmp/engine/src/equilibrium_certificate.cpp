@@ -12,6 +12,8 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <unordered_map>
 
 #include "sgmp/pack/cell_grid.hpp"
 #include "sgmp/pack/pack_overlaps.hpp"
@@ -26,6 +28,7 @@ struct Contact {
     std::size_t second = 0;
     bool wall = false;
     Vec3 normal = Vec3::Zero();
+    Partner partner = Partner::Sphere;
 };
 
 constexpr std::size_t kNone = static_cast<std::size_t>(-1);
@@ -44,25 +47,26 @@ std::vector<Contact> find_contacts(const std::vector<Particle>& particles, const
             const double gap = distance - particles[i].radius - particles[j].radius;
             if (gap <= tolerance && distance > 0.0) {
                 deepest = std::max(deepest, -gap);
-                contacts.push_back(
-                    {i, j, false, (particles[i].center - particles[j].center) / distance});
+                contacts.push_back({i, j, false,
+                                    (particles[i].center - particles[j].center) / distance,
+                                    Partner::Sphere});
             }
         });
     }
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const Vec3& c = particles[i].center;
         const double r = particles[i].radius;
-        const std::array<std::pair<double, Vec3>, 5> walls{{
-            {c.y() - r - box.floor, Vec3(0.0, 1.0, 0.0)},
-            {c.x() - r - box.x_min, Vec3(1.0, 0.0, 0.0)},
-            {box.x_max - c.x() - r, Vec3(-1.0, 0.0, 0.0)},
-            {c.z() - r - box.z_min, Vec3(0.0, 0.0, 1.0)},
-            {box.z_max - c.z() - r, Vec3(0.0, 0.0, -1.0)},
+        const std::array<std::tuple<double, Vec3, Partner>, 5> walls{{
+            {c.y() - r - box.floor, Vec3(0.0, 1.0, 0.0), Partner::Floor},
+            {c.x() - r - box.x_min, Vec3(1.0, 0.0, 0.0), Partner::XMin},
+            {box.x_max - c.x() - r, Vec3(-1.0, 0.0, 0.0), Partner::XMax},
+            {c.z() - r - box.z_min, Vec3(0.0, 0.0, 1.0), Partner::ZMin},
+            {box.z_max - c.z() - r, Vec3(0.0, 0.0, -1.0), Partner::ZMax},
         }};
-        for (const auto& [gap, normal] : walls) {
+        for (const auto& [gap, normal, partner] : walls) {
             if (gap <= tolerance) {
                 deepest = std::max(deepest, -gap);
-                contacts.push_back({i, kNone, true, normal});
+                contacts.push_back({i, kNone, true, normal, partner});
             }
         }
     }
@@ -167,6 +171,36 @@ std::vector<double> solve_forces(const System& system) {
     return f;
 }
 
+/// A contact's key: its spheres in increasing order, or its sphere and its wall.
+std::uint64_t contact_key(std::size_t first, std::size_t second, Partner partner) {
+    if (partner != Partner::Sphere) {
+        second = static_cast<std::size_t>(partner);  // walls: small partners, sphere first
+        return (static_cast<std::uint64_t>(first) << 32) | (0xFFFFFFF0U + second);
+    }
+    const auto [lo, hi] = std::minmax(first, second);
+    return (static_cast<std::uint64_t>(lo) << 32) | hi;
+}
+
+/// The witness's forces on `contacts` (0 where it names none); throws on a negative one.
+std::vector<double> witness_forces(const std::vector<Contact>& contacts,
+                                   std::span<const ContactForce> witness) {
+    std::unordered_map<std::uint64_t, double> by_key;
+    by_key.reserve(witness.size());
+    for (const ContactForce& w : witness) {
+        if (!(w.force >= 0.0)) {
+            throw std::invalid_argument("certificate: a witness force is negative or NaN");
+        }
+        by_key[contact_key(w.first, w.second, w.partner)] += w.force;
+    }
+    std::vector<double> f(contacts.size(), 0.0);
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+        const Contact& c = contacts[k];
+        const auto it = by_key.find(contact_key(c.first, c.second, c.partner));
+        f[k] = it != by_key.end() ? it->second : 0.0;
+    }
+    return f;
+}
+
 /// Two unit tangents of the plane normal to n.
 std::pair<Vec3, Vec3> tangents(const Vec3& n) {
     const Vec3 helper = std::abs(n.x()) < 0.9 ? Vec3(1.0, 0.0, 0.0) : Vec3(0.0, 1.0, 0.0);
@@ -214,9 +248,29 @@ System build_system(const std::vector<Particle>& particles, const std::vector<Co
     return s;
 }
 
+/// Per-sphere residuals of forces `f` into `cert`.
+void record_residuals(const System& system, const std::vector<double>& f,
+                      EquilibriumCertificate& cert) {
+    const auto r = residuals(system, f);
+    cert.residual = per_sphere(system, r);
+    cert.residual_sum = 0.0;
+    cert.residual_max = 0.0;
+    cert.worst_sphere = 0;
+    for (std::size_t i = 0; i < cert.residual.size(); ++i) {
+        for (std::size_t a = 0; a < system.rows; ++a) {
+            cert.residual_sum += std::abs(r[system.rows * i + a]);
+        }
+        if (cert.residual[i] > cert.residual_max) {
+            cert.residual_max = cert.residual[i];
+            cert.worst_sphere = i;
+        }
+    }
+}
+
 EquilibriumCertificate certify(const std::vector<Particle>& particles, const Container& container,
                                double diameter, std::optional<double> friction,
-                               const CertificateOptions& options) {
+                               const CertificateOptions& options,
+                               std::span<const ContactForce> witness) {
     if (!(diameter > 0.0) || !(options.gap_tolerance_over_d >= 0.0) ||
         !(options.residual_tolerance > 0.0) || (friction && !(*friction >= 0.0))) {
         throw std::invalid_argument(
@@ -245,17 +299,16 @@ EquilibriumCertificate certify(const std::vector<Particle>& particles, const Con
         cert.underconstrained += degree[i] < enough ? 1 : 0;
     }
     const System system = build_system(particles, contacts, weight, diameter, friction);
-    const auto f = solve_forces(system);
-    const auto r = residuals(system, f);
-    cert.residual = per_sphere(system, r);
-    for (std::size_t i = 0; i < n; ++i) {
-        for (std::size_t a = 0; a < system.rows; ++a) {
-            cert.residual_sum += std::abs(r[system.rows * i + a]);
-        }
-        if (cert.residual[i] > cert.residual_max) {
-            cert.residual_max = cert.residual[i];
-            cert.worst_sphere = i;
-        }
+    const bool fits = cert.overlap_max_over_d <= options.gap_tolerance_over_d;
+    std::vector<double> f;
+    if (!witness.empty() && !friction) {
+        f = witness_forces(contacts, witness);
+        record_residuals(system, f, cert);
+        cert.by_witness = fits && cert.residual_max <= options.residual_tolerance;
+    }
+    if (!cert.by_witness) {
+        f = solve_forces(system);
+        record_residuals(system, f, cert);
     }
     // Per contact, the total force (the sum over its pyramid's edges, for friction).
     const std::size_t per = friction ? static_cast<std::size_t>(kConeEdges) : 1;
@@ -265,8 +318,7 @@ EquilibriumCertificate certify(const std::vector<Particle>& particles, const Con
             cert.force[k] += f[per * k + e];  // the normal part: each edge has n·edge = 1
         }
     }
-    cert.certified = cert.overlap_max_over_d <= options.gap_tolerance_over_d &&
-                     cert.residual_max <= options.residual_tolerance;
+    cert.certified = fits && cert.residual_max <= options.residual_tolerance;
     return cert;
 }
 
@@ -274,14 +326,15 @@ EquilibriumCertificate certify(const std::vector<Particle>& particles, const Con
 
 EquilibriumCertificate certify_frictionless(const std::vector<Particle>& particles,
                                             const Container& container, double diameter,
-                                            const CertificateOptions& options) {
-    return certify(particles, container, diameter, std::nullopt, options);
+                                            const CertificateOptions& options,
+                                            std::span<const ContactForce> witness) {
+    return certify(particles, container, diameter, std::nullopt, options, witness);
 }
 
 EquilibriumCertificate certify_frictional(const std::vector<Particle>& particles,
                                           const Container& container, double diameter,
                                           double friction, const CertificateOptions& options) {
-    return certify(particles, container, diameter, friction, options);
+    return certify(particles, container, diameter, friction, options, {});
 }
 
 }  // namespace sgmp::engine

@@ -184,6 +184,35 @@ void save_basis(const ClpSimplex& model, const Step& st, Basis& basis) {
     }
 }
 
+/// The contact forces of the step's LP optimum (see the header): pair rows' −y, and the
+/// reduced costs of columns held by a wall or the floor.
+std::vector<ContactForce> lp_forces(const ClpSimplex& model, const Step& st) {
+    std::vector<ContactForce> forces;
+    const double* y = model.dualRowSolution();
+    for (std::size_t r = 0; r < st.row_pair.size(); ++r) {
+        if (-y[r] > 0.0) {
+            forces.push_back({static_cast<std::size_t>(st.row_pair[r] >> 32),
+                              static_cast<std::size_t>(st.row_pair[r] & 0xFFFFFFFFU),
+                              Partner::Sphere, -y[r]});
+        }
+    }
+    const double* z = model.getReducedCost();
+    constexpr std::array<std::pair<Partner, Partner>, kColumns> walls{
+        {{Partner::XMin, Partner::XMax},
+         {Partner::Floor, Partner::Floor},
+         {Partner::ZMin, Partner::ZMax}}};
+    for (std::size_t col = 0; col < st.objective.size(); ++col) {
+        const auto [low, high] = walls[col % kColumns];
+        const std::size_t sphere = col / kColumns;
+        if (z[col] > 0.0 && st.col_lower[col] > -1.0) {  // held from below by a wall
+            forces.push_back({sphere, 0, low, z[col]});
+        } else if (z[col] < 0.0 && st.col_upper[col] < 1.0 && col % kColumns != 1) {
+            forces.push_back({sphere, 0, high, -z[col]});
+        }
+    }
+    return forces;
+}
+
 }  // namespace
 
 SettleStats settle_hard_spheres(std::vector<Particle>& particles, const Container& container,
@@ -225,10 +254,17 @@ SettleStats settle_hard_spheres(std::vector<Particle>& particles, const Containe
                 u[kColumns * i + 1] = st.col_lower[kColumns * i + 1];
             }
             basis.columns.clear();
+            stats.forces.clear();  // a sphere resting on the floor carries its weight there
+            for (std::size_t i = 0; i < n; ++i) {
+                if (st.col_lower[kColumns * i + 1] > -1.0) {
+                    stats.forces.push_back({i, 0, Partner::Floor, weight[i]});
+                }
+            }
         } else {
             solve_step(model, st, basis, true, stats);
             std::copy_n(model.primalColumnSolution(), kColumns * n, u.begin());
             save_basis(model, st, basis);
+            stats.forces = lp_forces(model, st);
         }
         ++stats.iterations;
         double drop = 0.0;

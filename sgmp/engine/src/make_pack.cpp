@@ -204,8 +204,10 @@ Pack make_pack(const PackRequest& request, const ProgressCallback& progress, Pac
         local.relax = relax_pack(particles, container, request.relax, d);
         local.certificate =
             request.relax.mode == RelaxMode::Frictionless
-                ? certify_frictionless(particles, container, d)
+                ? certify_frictionless(particles, container, d, {}, local.relax.settle_forces)
                 : certify_frictional(particles, container, d, request.relax.friction);
+        local.relax.settle_forces.clear();
+        local.relax.settle_forces.shrink_to_fit();
         local.certificate->residual.clear();  // the summary is kept, not the fields
         local.certificate->force.clear();
     }

@@ -482,6 +482,7 @@ RelaxStats relax_pack(std::vector<Particle>& particles, const Container& contain
         stats.settle_converged = settle.converged;
         stats.settle_move_max = settle.move_max;
         stats.settle_energy_drop = settle.energy_drop;
+        stats.settle_forces = settle.forces;
     }
     return stats;
 }

@@ -18,7 +18,17 @@
 /// against HiGHS's: tests/python/test_certificate.py).
 /// The pack is certified when no pair or wall overlaps by more than ε·d and every |Rᵢ| is
 /// at most residual_tolerance (default 10⁻³ m·g).
+///
+/// A witness: forces found by whoever made the pack (the settling's LP multipliers,
+/// hard_sphere_settle.hpp) may be offered. They are tried first, on this pack's contacts
+/// (a contact the witness does not name carries 0, a witness force not on a contact is
+/// ignored, a negative one is refused); when they certify, the LP is not run. Either way
+/// the forces reported are non-negative forces on the pack's contacts with the residuals
+/// reported, so the certificate means the same; the witness only saves the LP (10 s at
+/// N = 3000).
 #include <cstddef>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "sgmp/pack/geometry.hpp"
@@ -29,6 +39,18 @@ namespace sgmp::engine {
 struct CertificateOptions {
     double gap_tolerance_over_d = 1e-6;
     double residual_tolerance = 1e-3;  ///< in m·g
+};
+
+/// What a contact touches besides its sphere `first`.
+enum class Partner : std::uint8_t { Sphere, Floor, XMin, XMax, ZMin, ZMax };
+
+/// A normal contact force, in m·g: between spheres `first` and `second` (either order), or
+/// between sphere `first` and a wall or the floor.
+struct ContactForce {
+    std::size_t first = 0;
+    std::size_t second = 0;  ///< used when partner is Sphere
+    Partner partner = Partner::Sphere;
+    double force = 0.0;
 };
 
 struct EquilibriumCertificate {
@@ -42,13 +64,16 @@ struct EquilibriumCertificate {
     double overlap_max_over_d = 0.0;   ///< deepest pair or wall overlap, over d
     std::vector<double> residual;      ///< |Rᵢ| per sphere, m·g
     std::vector<double> force;         ///< f_c per contact, m·g, in contact order
+    bool by_witness = false;           ///< the offered witness certified; no LP was solved
 };
 
-/// Certifies `particles` (scale diameter `diameter`) in `container` as above; throws
-/// std::invalid_argument for a diameter ≤ 0 or tolerances out of range.
+/// Certifies `particles` (scale diameter `diameter`) in `container` as above, trying
+/// `witness` first; throws std::invalid_argument for a diameter ≤ 0, tolerances out of
+/// range or a negative witness force.
 EquilibriumCertificate certify_frictionless(const std::vector<Particle>& particles,
                                             const Container& container, double diameter,
-                                            const CertificateOptions& options = {});
+                                            const CertificateOptions& options = {},
+                                            std::span<const ContactForce> witness = {});
 
 /// The frictional certificate at sliding friction μ: each contact force lies in the
 /// pyramid of 8 edges n + μ'·(cos θₖ t₁ + sin θₖ t₂), μ' = μ·cos(π/8), inscribed in the

@@ -29,9 +29,15 @@
 /// `trust_min`, or after `max_iterations`. The LP is COIN-OR CLP's dual simplex, each
 /// iteration warm-started from the previous basis (pairs keyed by their sphere indices),
 /// on one thread in a fixed order: the same pack gives the same bytes.
+///
+/// Multipliers: with u at an optimum strictly inside its trust box, the KKT conditions
+/// read wᵢ·ŷ = Σⱼ λᵢⱼ·(−nᵢⱼ) + Σ_walls z·n_wall: the rows' multipliers λ = −y (CLP's row
+/// duals y ≤ 0 on active ≤ rows) and the reduced costs z of the wall-held columns are the
+/// contact forces, in m·g (the objective is in m·g per unit of u).
 #include <cstddef>
 #include <vector>
 
+#include "sgmp/engine/equilibrium_certificate.hpp"
 #include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/particle.hpp"
 
@@ -51,6 +57,10 @@ struct SettleStats {
     double move_max = 0.0;     ///< largest displacement of a sphere, over d
     double lp_seconds = 0.0;   ///< time in the LP solver (not recorded in packs)
     long long lp_pivots = 0;   ///< simplex iterations over all LPs
+    /// The last LP's multipliers: λᵢⱼ ≥ 0 of the pair rows and the reduced costs of the
+    /// columns held by a wall or the floor, the contact forces in m·g of the equilibrium
+    /// found (the certificate's witness, equilibrium_certificate.hpp).
+    std::vector<ContactForce> forces;
 };
 
 /// Settles `particles` (scale diameter `diameter`, no overlaps deeper than rounding) in

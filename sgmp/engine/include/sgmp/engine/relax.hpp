@@ -64,6 +64,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "sgmp/engine/equilibrium_certificate.hpp"
 #include "sgmp/engine/relax_params.hpp"
 #include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/particle.hpp"
@@ -83,6 +84,9 @@ struct RelaxStats {
     bool settle_converged = false;    ///< the settling ended by its trust region
     double settle_move_max = 0.0;     ///< largest displacement by the settling, over d
     double settle_energy_drop = 0.0;  ///< potential energy the settling released, m·g·d
+    /// The settling's contact forces, offered to the certificate as its witness (not
+    /// recorded in packs).
+    std::vector<ContactForce> settle_forces;
 };
 
 /// Relaxes `particles` (of scale diameter `diameter`) in `container` as described above and

@@ -242,7 +242,15 @@ BOOST_AUTO_TEST_CASE(parameters_are_validated_with_the_option_named) {
     BOOST_TEST(error_for([](auto& p) { p.sweep_stages = {2}; }).find("--sweep-positions 2") == 0u);
     BOOST_TEST(error_for([](auto& p) { p.sweep_stages = {8, 8}; }).find("--sweep-stages") == 0u);
     BOOST_TEST(error_for([](auto& p) { p.fall_step = 0; }).find("--fall-step 0") == 0u);
-    BOOST_TEST(error_for([](auto& p) { p.fall_step = 0.1; }).find("--fall-step 0.1") == 0u);
+    // A step at least the (smallest) diameter is refused for the step fall only: the exact
+    // fall never uses it (a blend with fines below the default step must pack).
+    BOOST_TEST(error_for([](auto& p) {
+                   p.fall = FallMode::Step;
+                   p.fall_step = 0.1;
+               }).find("--fall-step 0.1") == 0u);
+    BOOST_TEST(error_for([](auto& p) { p.fall_step = 0.1; }).empty());
+    BOOST_TEST(error_for([](auto& p) { p.fall_step = INFINITY; }).find("--fall-step") == 0u);
+    BOOST_TEST(error_for([](auto& p) { p.fall_step = NAN; }).find("--fall-step") == 0u);
     BOOST_TEST(error_for([](auto& p) { p.lower_neighbours = 0; }).find("--lower-neighbours") == 0u);
     BOOST_TEST(error_for([](auto& p) { p.momentum = 1; }).find("--momentum 1") == 0u);
     BOOST_TEST((parse_stages("8,120,720") == std::vector<int>({8, 120, 720})));

@@ -1,4 +1,5 @@
 #include "sgmp/pack/pack_file.hpp"
+#include "sgmp/pack/executables.hpp"
 
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -213,6 +214,25 @@ BOOST_AUTO_TEST_CASE(unwritable_targets_are_refused_before_any_work) {
     const fs::path blocker = scratch.path() / "file";
     write_text(blocker, "x");
     BOOST_CHECK_THROW(check_writable(blocker / "sub" / "pack.xyz", false), std::runtime_error);
+}
+
+BOOST_AUTO_TEST_CASE(a_program_found_by_a_relative_name_runs_from_any_directory) {
+    // `--liggghts ./x` must not be looked up again inside the pour's temporary directory.
+    const auto here = std::filesystem::current_path();
+    const auto dir = std::filesystem::temp_directory_path() / "sgmp-exe-test";
+    std::filesystem::create_directories(dir);
+    write_text(dir / "tool", "#!/bin/sh\n");
+    std::filesystem::permissions(dir / "tool", std::filesystem::perms::owner_all);
+    std::filesystem::current_path(dir);
+    const auto found = find_executable("./tool");
+    std::filesystem::current_path(here);
+    BOOST_TEST_REQUIRE(found.has_value());
+    BOOST_TEST(found->is_absolute());
+    BOOST_TEST(std::filesystem::equivalent(*found, dir / "tool"));
+    const auto sh = find_executable("sh");  // on $PATH
+    BOOST_TEST_REQUIRE(sh.has_value());
+    BOOST_TEST(sh->is_absolute());
+    std::filesystem::remove_all(dir);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -102,6 +102,27 @@ BOOST_AUTO_TEST_CASE(malformed_files_name_the_line_and_the_reason) {
                "pack.xyz:2: expected key=value or a bare key in the header, found '\"x'");
 }
 
+BOOST_AUTO_TEST_CASE(a_cell_the_reader_skips_must_still_be_a_cell) {
+    // Lattice and Origin are derived on writing, but ASE and OVITO read them: a NaN, a
+    // wrong count or a negative side is refused, not passed on.
+    const std::string props = "Properties=id:I:1:pos:R:3:radius:R:1:bin:I:1";
+    const std::string line = "1 0 0 0 0.1 0\n";
+    BOOST_TEST(read_error("1\n" + props + " Lattice=\"nan 0 0 0 1 0 0 0 1\"\n" + line) ==
+               "pack.xyz:2: Lattice=\"nan 0 0 0 1 0 0 0 1\" must be 9 finite numbers, its "
+               "diagonal >= 0");
+    BOOST_TEST(read_error("1\n" + props + " Lattice=\"1 0 0 0 -1 0 0 0 1\"\n" + line) ==
+               "pack.xyz:2: Lattice=\"1 0 0 0 -1 0 0 0 1\" must be 9 finite numbers, its "
+               "diagonal >= 0");
+    BOOST_TEST(read_error("1\n" + props + " Origin=\"0 0\"\n" + line) ==
+               "pack.xyz:2: Origin=\"0 0\" must be 3 finite numbers");
+    BOOST_TEST(read_error("1\n" + props + " Origin=\"0 inf 0\"\n" + line) ==
+               "pack.xyz:2: Origin=\"0 inf 0\" must be 3 finite numbers");
+    std::istringstream good(
+        "1\n" + props + " Lattice=\"1.25 0 0 0 2 0 0 0 1.25\" Origin=\"-0.625 -0.625 -0.625\"\n" +
+        line);
+    BOOST_TEST(read_xyz(good, "pack.xyz").particles.size() == 1u);
+}
+
 BOOST_AUTO_TEST_CASE(column_counts_cannot_overflow_the_line_width) {
     // A count near 2^32 once wrapped the width, so a line passed the width check while the
     // position column pointed past its fields.

@@ -31,7 +31,9 @@ void validate(const ProtocolParams& p, double diameter) {
         throw ParameterError("lower_neighbours", std::to_string(p.lower_neighbours),
                              "must be at least 1");
     }
-    if (!(p.fall_step > 0.0) || !(p.fall_step < diameter)) {
+    // The step fall needs a step below the smallest diameter; the exact fall ignores it.
+    if (!(p.fall_step > 0.0) || !std::isfinite(p.fall_step) ||
+        (p.fall == FallMode::Step && !(p.fall_step < diameter))) {
         throw ParameterError(
             "fall_step", format_number(p.fall_step),
             "must be greater than 0 and less than the diameter " + format_number(diameter));

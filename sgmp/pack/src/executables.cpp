@@ -12,8 +12,15 @@ std::optional<std::filesystem::path> find_executable(const std::string& name) {
         std::error_code ec;
         return std::filesystem::is_regular_file(p, ec) && access(p.c_str(), X_OK) == 0;
     };
+    // Absolute, so a caller may run it from another working directory (the pours run
+    // inside their temporary directory).
+    const auto absolute = [](const std::filesystem::path& p) {
+        std::error_code ec;
+        const auto a = std::filesystem::absolute(p, ec);
+        return ec ? p : a;
+    };
     if (name.find('/') != std::string::npos) {
-        return runnable(name) ? std::optional<std::filesystem::path>(name) : std::nullopt;
+        return runnable(name) ? std::optional<std::filesystem::path>(absolute(name)) : std::nullopt;
     }
     const char* path = std::getenv("PATH");
     std::string_view dirs = path != nullptr ? path : "/usr/local/bin:/usr/bin:/bin";
@@ -23,7 +30,7 @@ std::optional<std::filesystem::path> find_executable(const std::string& name) {
         const std::filesystem::path candidate =
             std::filesystem::path(dir.empty() ? "." : std::string(dir)) / name;
         if (runnable(candidate)) {
-            return candidate;
+            return absolute(candidate);
         }
         if (colon == std::string_view::npos) {
             return std::nullopt;

@@ -366,6 +366,38 @@ bool is_derived_key(const std::string& key) {
     return name == "properties" || name == "pbc" || name == "lattice" || name == "origin";
 }
 
+/// A `Lattice` (9 numbers) or `Origin` (3) the reader does not use must still be a cell:
+/// finite numbers, and a Lattice's diagonal ≥ 0 (ASE and OVITO read it).
+void check_cell_key(const std::string& key, const std::string& value, const LineReader& reader) {
+    const std::string name = lower(key);
+    const std::size_t expected = name == "lattice" ? 9 : name == "origin" ? 3 : 0;
+    if (expected == 0) {
+        return;
+    }
+    std::vector<double> numbers;
+    const char* p = value.data();
+    const char* const last = value.data() + value.size();
+    while (p != last) {
+        while (p != last && (*p == ' ' || *p == '\t')) {
+            ++p;
+        }
+        double v = 0.0;
+        const auto [end, ec] = std::from_chars(p, last, v);
+        if (p == last || ec != std::errc()) {
+            break;
+        }
+        numbers.push_back(v);
+        p = end;
+    }
+    const bool finite =
+        std::all_of(numbers.begin(), numbers.end(), [](double v) { return std::isfinite(v); });
+    if (p != last || numbers.size() != expected || !finite ||
+        (expected == 9 && (numbers[0] < 0.0 || numbers[4] < 0.0 || numbers[8] < 0.0))) {
+        throw reader.error(key + "=\"" + value + "\" must be " + std::to_string(expected) +
+                           " finite numbers" + (expected == 9 ? ", its diagonal >= 0" : ""));
+    }
+}
+
 std::string lattice_text(const Container& c, double height) {
     return format_number(c.x_max - c.x_min) + " 0 0 0 " + format_number(height) + " 0 0 0 " +
            format_number(c.z_max - c.z_min);
@@ -395,6 +427,8 @@ PackRead read_frame(const std::string& count_line, std::size_t frame, const Read
             columns = parse_properties(value, options.radius.has_value(), reader);
         } else if (!is_derived_key(key)) {
             read.pack.metadata.set(key, std::move(value));
+        } else {
+            check_cell_key(key, value, reader);
         }
     }
     if (!columns) {

@@ -9,7 +9,8 @@
 namespace sgmp {
 
 /// `name` itself when it contains a '/', else the first executable file of that name in
-/// the directories of $PATH; nullopt when there is none.
+/// the directories of $PATH, made absolute (so it runs from any working directory);
+/// nullopt when there is none.
 std::optional<std::filesystem::path> find_executable(const std::string& name);
 
 }  // namespace sgmp

@@ -52,7 +52,8 @@ BOOST_AUTO_TEST_CASE(bad_values_are_refused_with_option_value_and_rule) {
     expect_refused(s, "--count 100 --sweep-positions 2", "--sweep-positions 2: every stage");
     expect_refused(s, "--count 100 --sweep-stages 8,4", "--sweep-stages 8,4: stages must");
     expect_refused(s, "--count 100 --fall-step 0", "--fall-step 0: must be greater than 0");
-    expect_refused(s, "--count 100 --fall-step 0.5",
+    // The diameter bound applies to the step fall alone: the exact fall does not use the step.
+    expect_refused(s, "--count 100 --fall step --fall-step 0.5",
                    "--fall-step 0.5: must be greater than 0 "
                    "and less than the diameter");
     expect_refused(s, "--count 100 --fall bounce", "--fall bounce: must be one of exact, step");

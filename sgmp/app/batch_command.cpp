@@ -29,6 +29,7 @@
 #include "sgmp/batch/shard.hpp"
 #include "sgmp/batch/world.hpp"
 #include "sgmp/compare/parallel.hpp"
+#include "sgmp/compare/summary_columns.hpp"
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/cpu_budget.hpp"
 #include "sgmp/pack/input_error.hpp"
@@ -76,6 +77,12 @@ std::string read_text(const fs::path& path) {
     return text.str();
 }
 
+/// The summary's columns: the batch's own and sgmp-compare's metric columns.
+const SummarySchema& schema() {
+    static const SummarySchema schema(compare::summary_column_names());
+    return schema;
+}
+
 void write_summary(const Settings& s, const std::string& text) {
     write_file_atomically(s.summary, s.force || s.skip_existing,
                           [&](std::ostream& out) { out << text; });
@@ -89,9 +96,9 @@ int run_merge(const Settings& s) {
     }
     std::vector<SummaryTable> tables;
     for (const std::string& path : s.merge) {
-        tables.push_back(parse_summary(read_text(path), path));
+        tables.push_back(schema().parse(read_text(path), path));
     }
-    const std::string text = merge_summaries(tables);
+    const std::string text = schema().merge(tables);
     write_file_atomically(s.summary, s.force, [&](std::ostream& out) { out << text; });
     std::size_t rows = 0;
     for (const auto& t : tables) {
@@ -115,13 +122,13 @@ std::map<std::string, std::string> earlier_seconds(const Settings& s) {
     if (!s.skip_existing || !fs::exists(s.summary)) {
         return seconds;
     }
-    const auto header = summary_header();
+    const auto header = schema().header();
     const auto column = [&](const char* name) {
         return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) -
                                         header.begin());
     };
     try {
-        for (const auto& row : parse_summary(read_text(s.summary), s.summary).rows) {
+        for (const auto& row : schema().parse(read_text(s.summary), s.summary).rows) {
             if (!row.fields[column("path")].empty()) {
                 seconds[row.fields[column("path")]] = row.fields[column("seconds")];
             }
@@ -241,7 +248,12 @@ int run_sweep(const Settings& s, const World& world) {
     const unsigned threads = s.threads > 0 ? s.threads : usable_threads();
     compare::set_thread_count(1);  // packs run side by side; each measurement is serial
     const auto seconds = earlier_seconds(s);
-    const JobOptions options{s.measure, s.voronoi};
+    JobOptions options;
+    if (s.measure) {
+        options.measure = [voronoi = s.voronoi](const Pack& pack) {
+            return compare::summary_fields(pack, voronoi);
+        };
+    }
     std::atomic<std::size_t> reused{0};
     const auto work = [&](std::size_t position) {
         const std::size_t job = jobs[position];
@@ -253,13 +265,13 @@ int run_sweep(const Settings& s, const World& world) {
                 row.seconds = std::stod(found->second);
             }
             ++reused;
-            return summary_line(row);
+            return schema().line(row);
         }
         const JobResult result = run_job(plan, job, options, path);
         if (!path.empty()) {
             write_pack_file(path, result.pack, s.force);
         }
-        return summary_line(result.row);
+        return schema().line(result.row);
     };
     const auto start = std::chrono::steady_clock::now();
     const ProgressLine progress(jobs.size(), world);
@@ -281,9 +293,9 @@ int run_sweep(const Settings& s, const World& world) {
     }
     std::vector<SummaryTable> tables;
     for (std::size_t r = 0; r < texts.size(); ++r) {
-        tables.push_back(parse_summary(summary_text({texts[r]}), "rank " + std::to_string(r)));
+        tables.push_back(schema().parse(schema().text({texts[r]}), "rank " + std::to_string(r)));
     }
-    write_summary(s, merge_summaries(tables));
+    write_summary(s, schema().merge(tables));
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf(

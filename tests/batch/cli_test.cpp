@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "sgmp/batch/summary.hpp"
+#include "sgmp/compare/summary_columns.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;
@@ -21,6 +22,12 @@ using namespace sgmp::batch;
 namespace {
 
 using Run = sgmp::testing::CommandRun;
+
+/// The schema `sgmp batch` writes: sgmp-compare's metric columns.
+const SummarySchema& schema() {
+    static const SummarySchema s(sgmp::compare::summary_column_names());
+    return s;
+}
 
 struct Scratch {
     sgmp::testing::TestDirectory scratch{
@@ -54,8 +61,8 @@ struct Scratch {
 
 /// The summary without its timing columns (seconds, measure_seconds), one string per row.
 std::vector<std::string> untimed(const fs::path& summary) {
-    const SummaryTable table = parse_summary(sgmp::testing::read_bytes(summary), summary.string());
-    const auto header = summary_header();
+    const SummaryTable table = schema().parse(sgmp::testing::read_bytes(summary), summary.string());
+    const auto header = schema().header();
     std::vector<std::string> rows;
     for (const auto& row : table.rows) {
         std::string text;
@@ -144,7 +151,7 @@ BOOST_AUTO_TEST_CASE(batch_packs_equal_sgmp_pack_and_reruns_are_refused) {
                sgmp::testing::read_bytes(s.path("io/p/frictionless-2.xyz")));
     // Row order: relax none before frictionless, seeds as listed.
     const auto rows =
-        parse_summary(sgmp::testing::read_bytes(s.path("io/summary.csv")), "summary").rows;
+        schema().parse(sgmp::testing::read_bytes(s.path("io/summary.csv")), "summary").rows;
     BOOST_REQUIRE(rows.size() == 4u);
     BOOST_TEST(rows[1].fields.back() == "p/none-2.xyz");
     BOOST_TEST(rows[2].fields.back() == "p/frictionless-4.xyz");
@@ -191,9 +198,9 @@ BOOST_AUTO_TEST_CASE(measured_rows_and_progress_lines) {
     BOOST_TEST(r.err.find("sgmp batch: ") != std::string::npos, r.err);
     BOOST_TEST(r.err.find(" / 2 packs") != std::string::npos);
     const SummaryTable t =
-        parse_summary(sgmp::testing::read_bytes(s.path("io/summary.csv")), "summary");
+        schema().parse(sgmp::testing::read_bytes(s.path("io/summary.csv")), "summary");
     BOOST_REQUIRE(t.rows.size() == 2u);
-    const auto header = summary_header();
+    const auto header = schema().header();
     const auto at = [&](std::size_t row, const std::string& name) {
         return t.rows[row].fields[std::find(header.begin(), header.end(), name) - header.begin()];
     };

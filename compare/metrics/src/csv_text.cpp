@@ -4,20 +4,6 @@
 
 namespace sgmp::compare {
 
-std::string csv_field(const std::string& text) {
-    if (text.find_first_of(",\"\r\n") == std::string::npos) {
-        return text;
-    }
-    std::string quoted = "\"";
-    for (const char c : text) {
-        quoted += c;
-        if (c == '"') {
-            quoted += '"';
-        }
-    }
-    return quoted + "\"";
-}
-
 void write_csv_preamble(std::ostream& out, const std::string& tool, const std::string& command,
                         const std::vector<std::string>& rules) {
     out << "# tool: " << tool << ' ' << sgmp::version() << '\n';

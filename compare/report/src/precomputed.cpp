@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "sgmp/compare/metrics_output.hpp"
+#include "sgmp/compare/summary_columns.hpp"
 #include "sgmp/pack/csv_fields.hpp"
 #include "sgmp/pack/input_error.hpp"
 
@@ -184,20 +185,14 @@ std::vector<std::pair<std::string, PackSummary>> summaries_from_batch(std::strin
                 continue;
             }
             double v = kUnknown;
-            if (rule.name == "phi" || rule.name == "split_ratio" || rule.name == "overlaps" ||
-                rule.name == "wall_overlaps") {
-                v = number(rule.name);
-            } else if (rule.name == "overlap_max_over_d") {
-                v = number("overlap_max");
-            } else if (rule.name.rfind("z_mean_tol_", 0) == 0) {
-                v = number("z_" + rule.name.substr(11));
-            } else if (rule.name == "voronoi_phi_mean" && !field("voronoi_phi_mean").empty()) {
-                v = number("voronoi_phi_mean");
+            if (const SummaryColumn* column = summary_column_of(rule.name);
+                column != nullptr && !(column->optional && field(column->column).empty())) {
+                v = number(column->column);
             }
             s.scalars.push_back(v);
         }
         for (const auto& name : names) {
-            s.z_mean.push_back(number("z_" + name));
+            s.z_mean.push_back(number(summary_column_of("z_mean_tol_" + name)->column));
         }
         s.p_z.assign(names.size(), {});
         out.emplace_back(s.source, std::move(s));

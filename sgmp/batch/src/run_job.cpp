@@ -4,7 +4,6 @@
 #include <chrono>
 #include <stdexcept>
 
-#include "sgmp/compare/measure.hpp"
 #include "sgmp/engine/make_pack.hpp"
 
 namespace sgmp::batch {
@@ -30,29 +29,11 @@ void add_metrics(SummaryRow& row, const Pack& pack, const JobOptions& options) {
         return;
     }
     const auto start = Clock::now();
-    row.metrics = measure_pack(pack, options.voronoi);
+    row.metric_fields = options.measure(pack);
     row.measure_seconds = since(start);
 }
 
 }  // namespace
-
-PackMetrics measure_pack(const Pack& pack, bool voronoi) {
-    compare::MeasureOptions options;
-    options.voronoi = voronoi;
-    options.gr_range = kSummaryGrRange;
-    const compare::Measurement m = compare::measure(pack, options);
-    PackMetrics metrics;
-    metrics.phi = m.phi;
-    metrics.z_mean = m.local.coordination.z_mean;
-    metrics.overlaps = m.overlaps.pairs.count;
-    metrics.overlap_max = m.overlaps.pairs.max_over_d;
-    metrics.wall_overlaps = m.overlaps.walls.count;
-    metrics.split_ratio = m.local.rdf.split_ratio;
-    if (m.voronoi) {
-        metrics.voronoi_phi = m.voronoi->mean;
-    }
-    return metrics;
-}
 
 JobResult run_job(const Plan& plan, std::size_t job, const JobOptions& options,
                   const std::string& path) {

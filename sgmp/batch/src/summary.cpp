@@ -5,8 +5,6 @@
 #include <charconv>
 #include <stdexcept>
 
-#include "sgmp/compare/csv_text.hpp"
-#include "sgmp/compare/measure.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/metadata.hpp"
 #include "sgmp/pack/version.hpp"
@@ -20,52 +18,47 @@ std::string optional_number(const std::optional<double>& value) {
 
 }  // namespace
 
-std::vector<std::string> summary_header() {
+SummarySchema::SummarySchema(std::vector<std::string> metric_columns)
+    : metric_columns_(std::move(metric_columns)) {}
+
+std::vector<std::string> SummarySchema::header() const {
     std::vector<std::string> header{"job"};
     for (const Parameter& p : parameters()) {
         header.push_back(p.name);
     }
-    header.insert(header.end(), {"seed", "seconds", "measure_seconds", "phi"});
-    for (const std::string& name : compare::coordination_tolerance_names()) {
-        header.push_back("z_" + name);
-    }
-    header.insert(header.end(), {"overlaps", "overlap_max", "wall_overlaps", "split_ratio",
-                                 "voronoi_phi_mean", "path"});
+    header.insert(header.end(), {"seed", "seconds", "measure_seconds"});
+    header.insert(header.end(), metric_columns_.begin(), metric_columns_.end());
+    header.emplace_back("path");
     return header;
 }
 
-std::string summary_line(const SummaryRow& row) {
+std::string SummarySchema::line(const SummaryRow& row) const {
     std::vector<std::string> fields{std::to_string(row.job)};
     fields.insert(fields.end(), row.values.begin(), row.values.end());
     fields.push_back(std::to_string(row.seed));
     fields.push_back(optional_number(row.seconds));
     fields.push_back(optional_number(row.measure_seconds));
-    const std::size_t tolerances = compare::coordination_tolerances().size();
-    if (row.metrics) {
-        const PackMetrics& m = *row.metrics;
-        fields.push_back(format_number(m.phi));
-        for (std::size_t i = 0; i < tolerances; ++i) {
-            fields.push_back(i < m.z_mean.size() ? format_number(m.z_mean[i]) : "");
-        }
-        fields.push_back(std::to_string(m.overlaps));
-        fields.push_back(format_number(m.overlap_max));
-        fields.push_back(std::to_string(m.wall_overlaps));
-        fields.push_back(format_number(m.split_ratio));
-        fields.push_back(optional_number(m.voronoi_phi));
+    if (row.metric_fields.empty()) {
+        fields.insert(fields.end(), metric_columns_.size(), "");
+    } else if (row.metric_fields.size() == metric_columns_.size()) {
+        fields.insert(fields.end(), row.metric_fields.begin(), row.metric_fields.end());
     } else {
-        fields.insert(fields.end(), tolerances + 6, "");
+        throw std::invalid_argument("summary row of job " + std::to_string(row.job) + ": " +
+                                    std::to_string(row.metric_fields.size()) +
+                                    " metric fields for " + std::to_string(metric_columns_.size()) +
+                                    " columns");
     }
     fields.push_back(row.path);
     std::string line;
     for (std::size_t i = 0; i < fields.size(); ++i) {
-        line += (i == 0 ? "" : ",") + compare::csv_field(fields[i]);
+        line += (i == 0 ? "" : ",") + csv_field(fields[i]);
     }
     return line + "\n";
 }
 
-std::string summary_text(const std::vector<std::string>& lines) {
+std::string SummarySchema::text(const std::vector<std::string>& lines) const {
     std::string text;
-    const auto header = summary_header();
+    const auto header = this->header();
     for (std::size_t i = 0; i < header.size(); ++i) {
         text += (i == 0 ? "" : ",") + header[i];
     }
@@ -79,9 +72,9 @@ std::string summary_text(const std::vector<std::string>& lines) {
     return text;
 }
 
-SummaryTable parse_summary(std::string_view text, const std::string& source) {
+SummaryTable SummarySchema::parse(std::string_view text, const std::string& source) const {
     SummaryTable table;
-    const auto expected = summary_header();
+    const auto expected = header();
     std::size_t number = 0;
     std::size_t start = 0;
     while (start < text.size()) {
@@ -126,7 +119,7 @@ SummaryTable parse_summary(std::string_view text, const std::string& source) {
     return table;
 }
 
-std::string merge_summaries(const std::vector<SummaryTable>& tables) {
+std::string SummarySchema::merge(const std::vector<SummaryTable>& tables) const {
     std::vector<const SummaryTable::Row*> rows;
     for (const SummaryTable& table : tables) {
         for (const SummaryTable::Row& row : table.rows) {
@@ -144,7 +137,7 @@ std::string merge_summaries(const std::vector<SummaryTable>& tables) {
         }
         lines.push_back(rows[i]->line + "\n");
     }
-    return summary_text(lines);
+    return text(lines);
 }
 
 }  // namespace sgmp::batch

@@ -128,6 +128,8 @@ void record_certificate(const std::optional<EquilibriumCertificate>& c, const Re
     } else {
         m.set("certificate", "frictionless");
     }
+    // Which forces balanced: the settling's own multipliers, checked, or the certificate LP's.
+    m.set("certificate_forces", c->by_witness ? "settling-witness" : "lp");
     m.set_number("certificate_gap_tolerance", options.gap_tolerance_over_d);
     m.set_number("certificate_residual_tolerance", options.residual_tolerance);
     m.set_number("certificate_residual_max", c->residual_max);

@@ -10,10 +10,9 @@
 #include <string>
 #include <vector>
 
-namespace sgmp::compare {
+#include "sgmp/pack/csv_fields.hpp"  // csv_field, the quoting
 
-/// The field as written: quoted, with doubled quotes, when it needs quoting.
-std::string csv_field(const std::string& text);
+namespace sgmp::compare {
 
 /// `# tool: TOOL VERSION`, `# command: COMMAND`, then one `# rule: …` line per rule.
 void write_csv_preamble(std::ostream& out, const std::string& tool, const std::string& command,

@@ -2,9 +2,11 @@
 /// @file run_job.hpp
 /// One job of a sweep in memory: the pack made by its parameters and seed (exactly what
 /// `sgmp pack` makes from the same options), and its summary row with the metrics measured
-/// in process by sgmp_metrics (`sgmp-compare measure`'s definitions and defaults).
+/// in process by the measure the front end gives (sgmp/app gives sgmp-compare's).
 
+#include <functional>
 #include <string>
+#include <vector>
 
 #include "sgmp/batch/plan.hpp"
 #include "sgmp/batch/summary.hpp"
@@ -12,24 +14,17 @@
 
 namespace sgmp::batch {
 
+/// The metric fields of one pack, one per metric column of the SummarySchema.
+using MeasureFields = std::function<std::vector<std::string>(const Pack& pack)>;
+
 struct JobOptions {
-    bool measure = false;
-    bool voronoi = false;  // the Voronoi local φ too (its own, slower stage)
+    MeasureFields measure;  // empty: the packs are not measured
 };
 
 struct JobResult {
     Pack pack;
     SummaryRow row;
 };
-
-/// g(r) is histogrammed out to this many d for the summary: the split ratio's windows end at
-/// 2.05 d, and the pair search grows as the range cubed (5 d, measure's default, costs eight
-/// times as much at N = 10^4). The split ratio's density ρ cancels in the ratio, so it
-/// equals `measure`'s up to rounding (1e-15 relative, checked on a 10^4 pack).
-inline constexpr double kSummaryGrRange = 2.1;
-
-/// The metrics of `pack` (summary.hpp), as `sgmp-compare measure` defines them.
-PackMetrics measure_pack(const Pack& pack, bool voronoi);
 
 /// Makes job `job` of `plan`; `path` is recorded in the row. Throws std::invalid_argument
 /// for an invalid combination (make_plan has already refused those).

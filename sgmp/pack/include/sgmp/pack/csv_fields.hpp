@@ -1,7 +1,7 @@
 #pragma once
 /// @file csv_fields.hpp
-/// Fields of one CSV line (RFC 4180 quoting) and strict numbers in them: what the
-/// manifest, thesis-table and baseline readers share.
+/// Fields of one CSV line (RFC 4180 quoting) and strict numbers in them: what every CSV
+/// writer and reader of the testbed shares.
 
 #include <charconv>
 #include <cmath>
@@ -12,6 +12,22 @@
 #include <vector>
 
 namespace sgmp {
+
+/// The field as written: quoted, with doubled quotes, when it holds a comma, a quote or a
+/// line break (RFC 4180); as it is otherwise.
+inline std::string csv_field(const std::string& text) {
+    if (text.find_first_of(",\"\r\n") == std::string::npos) {
+        return text;
+    }
+    std::string quoted = "\"";
+    for (const char c : text) {
+        quoted += c;
+        if (c == '"') {
+            quoted += '"';
+        }
+    }
+    return quoted + "\"";
+}
 
 /// Fields of one CSV line (RFC 4180): a field may be double-quoted, and then holds commas
 /// and doubled quotes ("" for "). nullopt for a line with an unterminated quote or text

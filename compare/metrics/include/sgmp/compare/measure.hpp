@@ -1,6 +1,6 @@
 #pragma once
 /// @file measure.hpp
-/// All metrics of one pack in one region (definitions in compare/README.md): packing fraction and
+/// All metrics of one pack in one region (definitions in compare/docs/definitions.md): packing fraction and
 /// its profile, overlaps, coordination at several tolerances, g(r), the split ratio, Q6 and
 /// the Voronoi local packing fraction.
 

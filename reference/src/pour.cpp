@@ -259,6 +259,28 @@ void check_run(const ChildResult& run, const RunWatch& watch, const PourRequest&
     }
 }
 
+/// The result's own velocities agree with the settled report: its translational kinetic
+/// energy per particle, m·v_rms²/2 over m·g·d, is below the settle threshold (the dump is
+/// written at the step of the last check, with every digit, so it is the ratio LIGGGHTS
+/// reported up to rounding). A result whose spheres still move was not settled.
+void check_at_rest(const Pack& raw, const PourParameters& p, const fs::path& dump) {
+    const std::optional<double> rms = raw.metadata.get_number("velocity_rms");
+    if (!rms) {
+        throw PourError(dump.string() +
+                        ": holds no velocities (vx vy vz), so it cannot show "
+                        "that the pour settled");
+    }
+    const double d_metres = p.diameter() * kMetresPerUnit;
+    const double ke_ratio = *rms * *rms / (2.0 * p.gravity * d_metres);
+    if (!(ke_ratio <= p.settle_threshold * (1.0 + 1e-9))) {
+        throw PourError(
+            "the LIGGGHTS result still moves: its velocities give KE_trans/(m g d) "
+            "= " +
+            format_number(ke_ratio) + ", above the settle threshold " +
+            format_number(p.settle_threshold) + " it reported settled under");
+    }
+}
+
 Pack read_final(const fs::path& dump, const PourParameters& p) {
     Pack raw;
     try {
@@ -270,6 +292,7 @@ Pack read_final(const fs::path& dump, const PourParameters& p) {
         throw PourError(dump.string() + ": holds " + std::to_string(raw.particles.size()) +
                         " spheres, not " + std::to_string(p.count));
     }
+    check_at_rest(raw, p, dump);
     std::sort(raw.particles.begin(), raw.particles.end(),
               [](const Particle& a, const Particle& b) { return a.id < b.id; });
     const double r = p.diameter() / 2.0;

@@ -1,6 +1,7 @@
 #include "sgmp/pack/dump_format.hpp"
 
 #include <boost/test/unit_test.hpp>
+#include <cmath>
 #include <sstream>
 
 #include "test_support.hpp"
@@ -43,6 +44,24 @@ BOOST_AUTO_TEST_CASE(columns_are_found_by_label) {
     BOOST_TEST(pack.particles[0].radius == 0.05);
     BOOST_TEST(*pack.metadata.get("timestep") == "0");
     BOOST_TEST(*pack.metadata.get("dump_box") == "-0.625 0.625 -0.625 5 -0.625 0.625");
+}
+
+BOOST_AUTO_TEST_CASE(velocities_give_the_rms_speed) {
+    // Speeds² 3² + 4² = 25 and 0: √(25/2), exactly as computed by hand.
+    const std::string text =
+        "ITEM: TIMESTEP\n5\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS ff ff ff\n"
+        "-1 1\n-1 1\n-1 1\nITEM: ATOMS id x y z radius vx vy vz\n"
+        "1 0 0 0 0.1 3 0 -4\n2 0.5 0 0 0.1 0 0 0\n";
+    std::istringstream in(text);
+    const Pack pack = read_dump_custom(in, "v.dump");
+    BOOST_TEST(*pack.metadata.get_number("velocity_rms") == std::sqrt(12.5));
+    // One component alone is no speed: nothing recorded (kSnapshot0 has vx only).
+    std::istringstream partial(kSnapshot0);
+    BOOST_TEST(!read_dump_custom(partial, "p.dump").metadata.contains("velocity_rms"));
+    BOOST_TEST(read_error("ITEM: TIMESTEP\n5\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS ff ff ff\n"
+                          "-1 1\n-1 1\n-1 1\nITEM: ATOMS id x y z radius vx vy vz\n"
+                          "1 0 0 0 0.1 nan 0 0\n")
+                   .find("pour.dump:10: column 'vx' holds 'nan'") == 0u);
 }
 
 BOOST_AUTO_TEST_CASE(the_last_snapshot_is_returned) {

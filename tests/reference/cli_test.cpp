@@ -145,6 +145,19 @@ BOOST_AUTO_TEST_CASE(impossible_liggghts_results_are_refused_before_writing) {
                    std::string::npos);
         BOOST_TEST(!fs::exists(fake.out));
     }
+    {  // reported settled, but a sphere moves at 1000 m/s
+        std::string text = settled_dump();
+        const std::string first = " 0 0 0\n";
+        text.replace(text.find(first), first.size(), " 1000 0 0\n");
+        std::ofstream(dump) << text;
+        const ProgramRun run = fake.pour({"--quiet"});
+        BOOST_TEST(run.exit_code == 1);
+        BOOST_TEST(first_line(run.stderr_text)
+                           .find("sgmp-reference: the LIGGGHTS result still moves: its "
+                                 "velocities give KE_trans/(m g d) = ") == 0u,
+                   run.stderr_text);
+        BOOST_TEST(!fs::exists(fake.out));
+    }
     {  // two coincident spheres
         std::ofstream(dump) << settled_dump([&](std::vector<sgmp::Vec3>& c) { c[1] = c[0]; });
         const ProgramRun run = fake.pour({"--quiet"});

@@ -16,6 +16,7 @@ struct DumpColumns {
     int radius = -1;
     int diameter = -1;
     int bin = -1;
+    std::array<int, 3> velocity{-1, -1, -1};  // all three, or none used
     std::size_t width = 0;
 };
 
@@ -31,6 +32,11 @@ DumpColumns parse_atom_labels(const std::vector<std::string_view>& labels,
         if (std::find(labels.begin(), labels.begin() + static_cast<std::ptrdiff_t>(i), label) !=
             labels.begin() + static_cast<std::ptrdiff_t>(i)) {  // the last would silently win
             throw reader.error("ATOMS section names '" + std::string(label) + "' twice");
+        }
+        for (int axis = 0; axis < 3; ++axis) {
+            if (label == std::array<std::string_view, 3>{"vx", "vy", "vz"}[axis]) {
+                columns.velocity[axis] = index;
+            }
         }
         if (label == "id") {
             columns.id = index;
@@ -54,6 +60,9 @@ DumpColumns parse_atom_labels(const std::vector<std::string_view>& labels,
             throw reader.error(std::string("ATOMS section lacks the '") + axis_names[axis] +
                                "' column (scaled coordinates are not accepted)");
         }
+    }
+    if (std::count(columns.velocity.begin(), columns.velocity.end(), -1) != 0) {
+        columns.velocity = {-1, -1, -1};  // a speed needs all three components
     }
     if (columns.id < 0) {
         throw reader.error("ATOMS section lacks the 'id' column");
@@ -139,6 +148,7 @@ Pack read_snapshot(LineReader& reader) {
     detail::ParticleValidator validator;
     std::string line;
     std::vector<std::string_view> fields;
+    double speed_squared_sum = 0.0;
     for (std::int64_t i = 0; i < count; ++i) {
         if (!reader.next(line)) {
             throw reader.error("file ends after " + std::to_string(i) + " of " +
@@ -172,8 +182,25 @@ Pack read_snapshot(LineReader& reader) {
             }
             p.color = static_cast<int>(*bin);
         }
+        if (columns.velocity[0] >= 0) {
+            const std::array<const char*, 3> velocity_names{"vx", "vy", "vz"};
+            for (int axis = 0; axis < 3; ++axis) {
+                const double v =
+                    field_number(fields[columns.velocity[axis]], velocity_names[axis], reader);
+                if (!std::isfinite(v)) {
+                    throw reader.error(std::string("column '") + velocity_names[axis] +
+                                       "' holds '" + std::string(fields[columns.velocity[axis]]) +
+                                       "', which is not a finite number");
+                }
+                speed_squared_sum += v * v;
+            }
+        }
         validator.check(p, reader);
         pack.particles.push_back(p);
+    }
+    if (columns.velocity[0] >= 0 && count > 0) {
+        pack.metadata.set_number("velocity_rms",
+                                 std::sqrt(speed_squared_sum / static_cast<double>(count)));
     }
     return pack;
 }

@@ -5,11 +5,13 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -46,6 +48,9 @@ struct Options {
     /// --sweep-positions is one stage; --sweep-stages, when given, overrides it.
     int sweep_positions = ProtocolParams{}.sweep_stages.front();
     std::optional<std::vector<int>> sweep_stages;
+    /// --size-distribution FILE, read into the request's modes by to_request.
+    std::string size_distribution;
+    CLI::Option* size_modes_option = nullptr;
     /// The first value refused while parsing; reported once parsing is done (so --help
     /// and missing options come first, then the count's range, as for the other rules).
     std::optional<std::string> refused;
@@ -98,16 +103,24 @@ void add_common(CLI::App& app, Options& o) {
     app.add_option("--out", o.out, "output pack file (extended XYZ; .gz compresses)")->required();
     app.add_flag("--force", o.force, "overwrite an existing output file");
     app.add_option("--phi-target", q.phi_target,
-                   "target packing fraction phi* in (0, 0.74048]; sets the diameter by "
-                   "(N/3)(pi/6)d^3 = phi*")
+                   "target packing fraction phi* in (0, 0.74048] for equal spheres, (0, 1) "
+                   "for a blend of several sizes; sets the diameter by (N/3)(pi/6)d^3 = phi*")
         ->capture_default_str();
-    add_parsed(
-        app, o, "--size-modes", q.size_modes,
-        [](const std::string& text) { return parse_size_modes(text); },
-        "must be positive diameter:fraction pairs, e.g. 1:0.7,0.5:0.3",
-        "particle sizes as relative-diameter:number-fraction pairs, e.g. 1:0.7,0.5:0.3; "
-        "the scale s solves (N/3)(pi/6) sum f_i (a_i s)^3 = phi*")
-        ->default_str(size_modes_to_string(q.size_modes));
+    o.size_modes_option =
+        add_parsed(
+            app, o, "--size-modes", q.size_modes,
+            [](const std::string& text) { return parse_size_modes(text); },
+            "must be positive diameter:fraction[:density] items, e.g. 1:0.7,0.5:0.3",
+            "particle sizes as relative-diameter:fraction[:density] items, e.g. "
+            "1:0.7,0.5:0.3 (species 1, 2, ... in this order; fractions in --fraction-basis); "
+            "the scale s solves (N/3)(pi/6) sum n_i (a_i s)^3 = phi* with number fractions n_i")
+            ->default_str(size_modes_to_string(q.size_modes));
+    app.add_option("--size-distribution", o.size_distribution,
+                   "size distribution as a CSV file: header diameter,fraction[,density], one "
+                   "row per species (diameters in any unit; species 1, 2, ... in file order)");
+    add_choice(app, o, "--fraction-basis", q.fraction_basis, fraction_bases(),
+               "what the fractions of --size-modes or --size-distribution are: number, volume "
+               "or mass (mass needs densities)");
 }
 
 void add_protocol(CLI::App& app, Options& o) {
@@ -208,6 +221,43 @@ void add_relax(CLI::App& app, Options& o) {
 
 /// The request of the command line: the count's range and the sweep stages checked
 /// here, every other rule by the engine's `validate`.
+/// The modes of --size-distribution FILE (size_modes.hpp); a bad file is a usage error
+/// naming file:line.
+void read_size_distribution(const Options& o, PackRequest& request) {
+    const std::string& path = o.size_distribution;
+    if (o.size_modes_option != nullptr && o.size_modes_option->count() > 0) {
+        throw UsageError("--size-distribution " + path +
+                         ": give either --size-modes or --size-distribution, not both");
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!std::filesystem::is_regular_file(path) || !in) {
+        throw UsageError("--size-distribution " + path + ": must name a readable file");
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    try {
+        request.size_modes = parse_size_distribution_csv(text.str(), path);
+    } catch (const InputError& e) {
+        throw UsageError(std::string("--size-distribution ") + e.what());
+    }
+    request.size_distribution = path;
+}
+
+/// Fractions of a valid distribution file that do not sum to 1 are normalised (the engine
+/// does); the user is told, in one line.
+void warn_unnormalised(const PackRequest& request) {
+    double total = 0.0;
+    for (const SizeMode& m : request.size_modes) {
+        total += m.fraction;
+    }
+    if (!request.size_distribution.empty() && std::abs(total - 1.0) > 1e-9) {
+        std::fprintf(stderr,
+                     "sgmp: warning: --size-distribution %s: fractions sum to %s; normalised "
+                     "to 1\n",
+                     request.size_distribution.c_str(), format_number(total).c_str());
+    }
+}
+
 PackRequest to_request(const Options& o) {
     if (o.count < 1 || o.count > static_cast<long long>(kMaxCount)) {
         throw ParameterError("count", std::to_string(o.count),
@@ -217,9 +267,13 @@ PackRequest to_request(const Options& o) {
         throw UsageError(*o.refused);
     }
     PackRequest request = o.request;
+    if (!o.size_distribution.empty()) {
+        read_size_distribution(o, request);
+    }
     request.count = static_cast<std::size_t>(o.count);
     request.protocol.sweep_stages = o.sweep_stages.value_or(std::vector<int>{o.sweep_positions});
     validate(request);
+    warn_unnormalised(request);
     return request;
 }
 

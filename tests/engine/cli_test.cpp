@@ -66,6 +66,37 @@ BOOST_AUTO_TEST_CASE(bad_values_are_refused_with_option_value_and_rule) {
                "large-dense, loose-random\n");
 }
 
+BOOST_AUTO_TEST_CASE(size_distribution_files_are_read_and_checked) {
+    const Scratch s;
+    const auto write = [&](const std::string& name, const std::string& text) {
+        std::ofstream(s.path(name)) << text;
+        return "--count 600 --size-distribution '" + s.path(name) + "' ";
+    };
+    // Mass fractions 51 : 17 (the rest binder): normalised, with one warning line.
+    const std::string blend =
+        write("blend.csv", "diameter,fraction,density\n10,0.51,1.95\n5,0.17,2.7\n");
+    const Run ok = s.run("pack --arrangement loose-random --out '" + s.path("b.xyz") + "' " +
+                         blend + "--fraction-basis mass");
+    BOOST_TEST(ok.status == 0, ok.err);
+    BOOST_TEST(ok.err.find("sgmp: warning: --size-distribution") == 0u);
+    BOOST_TEST(ok.err.find("fractions sum to 0.68; normalised to 1\n") != std::string::npos);
+    const std::string pack = sgmp::testing::read_bytes(s.path("b.xyz"));
+    BOOST_TEST(pack.find(":species_id:I:1 ") != std::string::npos);
+    BOOST_TEST(pack.find(" fraction_basis=mass ") != std::string::npos);
+    BOOST_TEST(pack.find(" species_mass_fractions=") != std::string::npos);
+    expect_refused(s, write("colour.csv", "diameter,fraction,colour\n1,1,2\n"),
+                   "--size-distribution " + s.path("colour.csv") + ":1: unknown column 'colour'");
+    expect_refused(s, write("neg.csv", "diameter,fraction\n1,-1\n1,2\n"),
+                   "--size-distribution " + s.path("neg.csv") + ":2: fraction -1");
+    expect_refused(s, write("nod.csv", "diameter,fraction\n1,1\n0.5,1\n") + "--fraction-basis mass",
+                   "--fraction-basis mass: needs a density for every species");
+    expect_refused(s, blend + "--size-modes 1:1",
+                   "--size-distribution " + s.path("blend.csv") +
+                       ": give either --size-modes or --size-distribution, not both");
+    expect_refused(s, "--count 100 --fraction-basis weight",
+                   "--fraction-basis weight: must be one of number, volume, mass");
+}
+
 BOOST_AUTO_TEST_CASE(bad_relaxation_values_are_refused_with_option_value_and_rule) {
     const Scratch s;
     expect_refused(s, "--count 100 --relax soft",

@@ -48,6 +48,7 @@ void check_same_particles(const Pack& a, const Pack& b) {
         BOOST_TEST((a.particles[i].center.array() == b.particles[i].center.array()).all());
         BOOST_TEST(a.particles[i].radius == b.particles[i].radius);
         BOOST_TEST(a.particles[i].color == b.particles[i].color);
+        BOOST_TEST(a.particles[i].species == b.particles[i].species);
     }
 }
 
@@ -102,7 +103,7 @@ BOOST_AUTO_TEST_CASE(atom_types_follow_the_size_modes) {
     std::string line;
     std::size_t small = 0;
     std::size_t checked = 0;
-    while (std::getline(in, line) && line != "ITEM: ATOMS id type x y z radius bin") {
+    while (std::getline(in, line) && line != "ITEM: ATOMS id type x y z radius bin species") {
     }
     const double scale = *pack.metadata.get_number("diameter");
     for (const auto& p : pack.particles) {
@@ -112,6 +113,7 @@ BOOST_AUTO_TEST_CASE(atom_types_follow_the_size_modes) {
         int type = 0;
         fields >> id >> type;
         BOOST_TEST(type == (2.0 * p.radius < 0.75 * scale ? 2 : 1));
+        BOOST_TEST(type == p.species);  // modes in order: the species are the types here
         small += type == 2 ? 1 : 0;
         ++checked;
     }

@@ -60,6 +60,28 @@ BOOST_AUTO_TEST_CASE(round_trip_is_bit_identical) {
     BOOST_TEST(again.str() == out.str());
 }
 
+BOOST_AUTO_TEST_CASE(species_travel_with_blends_only) {
+    Pack pack = random_pack(3, 30);
+    std::ostringstream single;
+    write_xyz(single, pack);
+    BOOST_TEST(single.str().find("species") == std::string::npos);  // one species: no column
+    for (std::size_t i = 0; i < pack.particles.size(); ++i) {
+        pack.particles[i].species = 1 + static_cast<int>(i % 3);
+    }
+    std::ostringstream out;
+    write_xyz(out, pack);
+    BOOST_TEST(out.str().find("Properties=id:I:1:pos:R:3:radius:R:1:bin:I:1:species_id:I:1 ") !=
+               std::string::npos);
+    std::istringstream in(out.str());
+    const Pack back = read_xyz(in, "memory");
+    for (std::size_t i = 0; i < pack.particles.size(); ++i) {
+        BOOST_TEST(back.particles[i].species == pack.particles[i].species);
+    }
+    const std::string bad =
+        "1\nProperties=id:I:1:pos:R:3:radius:R:1:species_id:I:1\n1 0 0 0 0.1 0\n";
+    BOOST_TEST(read_error(bad) == "pack.xyz:3: species_id 0 is not in [1, 1000000]");
+}
+
 BOOST_AUTO_TEST_CASE(quoted_values_and_columns_in_any_order) {
     const std::string text =
         "2\nProperties=pos:R:3:species:S:1:diameter:R:1:id:I:1 note=\"two words\" x=1\n"

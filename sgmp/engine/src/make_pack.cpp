@@ -24,10 +24,19 @@ struct Sizes {
     double largest;
 };
 
+/// The request's modes with number fractions (size_modes.hpp).
+std::vector<SizeMode> modes_of(const PackRequest& request) {
+    return number_fractions(request.size_modes, request.fraction_basis);
+}
+
 Sizes sizes_of(const PackRequest& request) {
-    const double scale = diameter_scale(request.count, request.phi_target, request.size_modes);
+    const std::vector<SizeMode> modes = modes_of(request);
+    const double scale = diameter_scale(request.count, request.phi_target, modes);
     Sizes sizes{scale, INFINITY, 0.0};
-    for (const SizeMode& m : request.size_modes) {
+    for (const SizeMode& m : modes) {
+        if (m.fraction == 0.0) {
+            continue;  // a species with no particle
+        }
         sizes.smallest = std::min(sizes.smallest, m.relative_diameter * scale);
         sizes.largest = std::max(sizes.largest, m.relative_diameter * scale);
     }
@@ -35,9 +44,61 @@ Sizes sizes_of(const PackRequest& request) {
 }
 
 std::vector<Particle> starting_particles(const PackRequest& request, Random& rng) {
-    const std::vector<double> diameters =
-        draw_diameters(request.count, request.phi_target, request.size_modes, rng);
-    return make_arrangement(request.arrangement, diameters, rng);
+    const DrawnSizes drawn = draw_sizes(request.count, request.phi_target, modes_of(request), rng);
+    std::vector<Particle> particles = make_arrangement(request.arrangement, drawn.diameters, rng);
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        particles[i].species = drawn.species[i];  // the arrangement keeps the drop order
+    }
+    return particles;
+}
+
+/// Comma-separated numbers.
+std::string number_list(const std::vector<double>& values) {
+    std::string text;
+    for (const double v : values) {
+        text += (text.empty() ? "" : ",") + format_number(v);
+    }
+    return text;
+}
+
+/// The realised blend: particles per species and their number, volume and (with densities)
+/// mass fractions, from the deterministic counts (size_modes.hpp mode_counts).
+void record_species(const PackRequest& request, Metadata& m) {
+    const std::vector<SizeMode> modes = modes_of(request);
+    if (modes.size() < 2) {
+        return;
+    }
+    const std::vector<std::size_t> counts = mode_counts(request.count, modes);
+    std::vector<double> number(modes.size());
+    std::vector<double> volume(modes.size());
+    std::vector<double> mass(modes.size());
+    double n_total = 0.0;
+    double v_total = 0.0;
+    double m_total = 0.0;
+    bool densities = true;
+    std::string count_text;
+    for (std::size_t i = 0; i < modes.size(); ++i) {
+        const double a = modes[i].relative_diameter;
+        number[i] = static_cast<double>(counts[i]);
+        volume[i] = number[i] * a * a * a;
+        densities = densities && modes[i].density.has_value();
+        mass[i] = volume[i] * modes[i].density.value_or(1.0);
+        n_total += number[i];
+        v_total += volume[i];
+        m_total += mass[i];
+        count_text += (i == 0 ? "" : ",") + std::to_string(counts[i]);
+    }
+    for (std::size_t i = 0; i < modes.size(); ++i) {
+        number[i] /= n_total;
+        volume[i] /= v_total;
+        mass[i] /= m_total;
+    }
+    m.set("species_counts", count_text);
+    m.set("species_number_fractions", number_list(number));
+    m.set("species_volume_fractions", number_list(volume));
+    if (densities) {
+        m.set("species_mass_fractions", number_list(mass));
+    }
 }
 
 void record_request(const PackRequest& request, double diameter, Metadata& m) {
@@ -49,6 +110,13 @@ void record_request(const PackRequest& request, double diameter, Metadata& m) {
     m.set("arrangement", std::string(to_string(request.arrangement)));
     m.set("seed", std::to_string(request.seed));
     m.set("size_modes", size_modes_to_string(request.size_modes));
+    if (!request.size_distribution.empty()) {
+        m.set("size_distribution", request.size_distribution);
+    }
+    if (request.fraction_basis != FractionBasis::Number || !request.size_distribution.empty()) {
+        m.set("fraction_basis", std::string(to_string(request.fraction_basis)));
+    }
+    record_species(request, m);
 }
 
 /// Hands memory freed inside the heap back to the system (glibc keeps it otherwise, and the
@@ -147,9 +215,17 @@ void validate(const PackRequest& request) {
         throw ParameterError("count", std::to_string(request.count),
                              "must be between 1 and " + std::to_string(kMaxCount));
     }
-    if (!(request.phi_target > 0.0) || !(request.phi_target <= kMaxPhiTarget)) {
+    const bool blend =
+        std::any_of(request.size_modes.begin(), request.size_modes.end(), [&](const SizeMode& m) {
+            return m.relative_diameter != request.size_modes.front().relative_diameter;
+        });
+    if (!blend && (!(request.phi_target > 0.0) || !(request.phi_target <= kMaxPhiTarget))) {
         throw ParameterError("phi_target", format_number(request.phi_target),
                              "must be in (0, 0.74048] (the densest packing of equal spheres)");
+    }
+    if (blend && (!(request.phi_target > 0.0) || !(request.phi_target < 1.0))) {
+        throw ParameterError("phi_target", format_number(request.phi_target),
+                             "must be in (0, 1) for a blend of several sizes");
     }
     if (request.phi_target < 1e-3) {
         // Below this the sizing rule gives spheres smaller than the default fall step.
@@ -159,13 +235,22 @@ void validate(const PackRequest& request) {
     if (request.size_modes.empty()) {
         throw ParameterError("size_modes", "", "needs at least one mode");
     }
+    double total = 0.0;
     for (const SizeMode& m : request.size_modes) {
-        if (!(m.relative_diameter > 0.0) || !(m.fraction > 0.0) ||
-            !std::isfinite(m.relative_diameter) || !std::isfinite(m.fraction)) {
+        if (!(m.relative_diameter > 0.0) || !(m.fraction >= 0.0) ||
+            !std::isfinite(m.relative_diameter) || !std::isfinite(m.fraction) ||
+            (m.density && !(*m.density > 0.0 && std::isfinite(*m.density)))) {
             throw ParameterError("size_modes", size_modes_to_string(request.size_modes),
-                                 "relative diameters and fractions must be positive");
+                                 "relative diameters and densities must be positive, "
+                                 "fractions not negative");
         }
+        total += m.fraction;
     }
+    if (!(total > 0.0)) {
+        throw ParameterError("size_modes", size_modes_to_string(request.size_modes),
+                             "every fraction is 0: at least one must be positive");
+    }
+    (void)modes_of(request);  // a mass basis needs every density
     const Sizes sizes = sizes_of(request);
     if (!(sizes.largest < kContainerSide)) {
         throw ParameterError("count", std::to_string(request.count),

@@ -6,7 +6,10 @@
 #include <numbers>
 #include <numeric>
 
+#include "sgmp/pack/csv_fields.hpp"
+#include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/metadata.hpp"
+#include "sgmp/pack/parameter_error.hpp"
 
 namespace sgmp::engine {
 
@@ -33,12 +36,20 @@ std::optional<std::vector<SizeMode>> parse_size_modes(std::string_view text) {
         if (colon == std::string_view::npos) {
             return std::nullopt;
         }
+        const std::size_t second = item.find(':', colon + 1);
         const auto size = parse_positive(item.substr(0, colon));
-        const auto fraction = parse_positive(item.substr(colon + 1));
+        const auto fraction = parse_positive(item.substr(colon + 1, second - colon - 1));
         if (!size || !fraction) {
             return std::nullopt;
         }
-        modes.push_back(SizeMode{*size, *fraction});
+        SizeMode mode{*size, *fraction, std::nullopt};
+        if (second != std::string_view::npos) {
+            mode.density = parse_positive(item.substr(second + 1));
+            if (!mode.density) {
+                return std::nullopt;
+            }
+        }
+        modes.push_back(mode);
         if (comma == std::string_view::npos) {
             return modes;
         }
@@ -51,8 +62,153 @@ std::string size_modes_to_string(const std::vector<SizeMode>& modes) {
     for (const SizeMode& m : modes) {
         text += (text.empty() ? "" : ",") + format_number(m.relative_diameter) + ":" +
                 format_number(m.fraction);
+        if (m.density) {
+            text += ":" + format_number(*m.density);
+        }
     }
     return text;
+}
+
+const NameTable<FractionBasis, 3>& fraction_bases() {
+    static constexpr NameTable<FractionBasis, 3> table{{{{FractionBasis::Number, "number"},
+                                                         {FractionBasis::Volume, "volume"},
+                                                         {FractionBasis::Mass, "mass"}}}};
+    return table;
+}
+
+std::string_view to_string(FractionBasis basis) {
+    return fraction_bases().name(basis);
+}
+
+std::optional<FractionBasis> parse_fraction_basis(std::string_view text) {
+    return fraction_bases().parse(text);
+}
+
+std::vector<SizeMode> parse_size_distribution_csv(std::string_view text,
+                                                  const std::string& source) {
+    std::vector<std::string> header;
+    int diameter = -1;
+    int fraction = -1;
+    int density = -1;
+    std::vector<SizeMode> modes;
+    std::size_t number = 0;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        std::string_view line = text.substr(start, end - start);
+        start = end + 1;
+        ++number;
+        if (!line.empty() && line.back() == '\r') {
+            line.remove_suffix(1);
+        }
+        if (line.find_first_not_of(" \t") == std::string_view::npos || line.front() == '#') {
+            continue;
+        }
+        const auto fields = split_quoted_csv_line(line);
+        if (!fields) {
+            throw InputError(source, number, "a quoted field is not closed");
+        }
+        if (header.empty()) {
+            header = *fields;
+            for (std::size_t c = 0; c < header.size(); ++c) {
+                const std::string& name = header[c];
+                int* slot = name == "diameter"   ? &diameter
+                            : name == "fraction" ? &fraction
+                            : name == "density"  ? &density
+                                                 : nullptr;
+                if (slot == nullptr) {
+                    throw InputError(source, number,
+                                     "unknown column '" + name +
+                                         "': the columns are diameter, fraction and "
+                                         "optionally density");
+                }
+                if (*slot >= 0) {
+                    throw InputError(source, number, "names '" + name + "' twice");
+                }
+                *slot = static_cast<int>(c);
+            }
+            if (diameter < 0 || fraction < 0) {
+                throw InputError(source, number,
+                                 "the header must name 'diameter' and 'fraction' (and "
+                                 "optionally 'density')");
+            }
+            continue;
+        }
+        if (fields->size() != header.size()) {
+            throw InputError(source, number,
+                             "has " + std::to_string(fields->size()) + " fields, the header " +
+                                 std::to_string(header.size()));
+        }
+        const auto value = [&](int column, const char* what) {
+            const auto v = parse_csv_number<double>((*fields)[static_cast<std::size_t>(column)]);
+            if (!v) {
+                throw InputError(source, number,
+                                 std::string(what) + " '" +
+                                     (*fields)[static_cast<std::size_t>(column)] +
+                                     "' is not a finite number");
+            }
+            return *v;
+        };
+        SizeMode mode{value(diameter, "diameter"), value(fraction, "fraction"), std::nullopt};
+        if (!(mode.relative_diameter > 0.0)) {
+            throw InputError(source, number,
+                             "diameter " + format_number(mode.relative_diameter) +
+                                 ": a diameter must be greater than 0");
+        }
+        if (mode.fraction < 0.0) {
+            throw InputError(
+                source, number,
+                "fraction " + format_number(mode.fraction) + ": a fraction must not be negative");
+        }
+        if (density >= 0) {
+            mode.density = value(density, "density");
+            if (!(*mode.density > 0.0)) {
+                throw InputError(source, number,
+                                 "density " + format_number(*mode.density) +
+                                     ": a density must be greater than 0");
+            }
+        }
+        modes.push_back(mode);
+    }
+    if (modes.empty()) {
+        throw InputError(source, number, "holds no species row (a header, then one row each)");
+    }
+    double total = 0.0;
+    double largest = 0.0;
+    for (const SizeMode& m : modes) {
+        total += m.fraction;
+        largest = std::max(largest, m.relative_diameter);
+    }
+    if (!(total > 0.0)) {
+        throw InputError(source, number, "every fraction is 0: at least one must be positive");
+    }
+    for (SizeMode& m : modes) {
+        m.relative_diameter /= largest;  // only ratios matter: the largest is 1
+    }
+    return modes;
+}
+
+std::vector<SizeMode> number_fractions(const std::vector<SizeMode>& modes, FractionBasis basis) {
+    std::vector<SizeMode> out = modes;
+    double total = 0.0;
+    for (SizeMode& m : out) {
+        const double a3 = m.relative_diameter * m.relative_diameter * m.relative_diameter;
+        if (basis == FractionBasis::Volume) {
+            m.fraction /= a3;
+        } else if (basis == FractionBasis::Mass) {
+            if (!m.density) {
+                throw ParameterError("fraction_basis", "mass",
+                                     "needs a density for every species (a density column, "
+                                     "or diameter:fraction:density modes)");
+            }
+            m.fraction /= *m.density * a3;
+        }
+        total += m.fraction;
+    }
+    for (SizeMode& m : out) {
+        m.fraction /= total;
+    }
+    return out;
 }
 
 bool is_monodisperse(const std::vector<SizeMode>& modes) {
@@ -70,12 +226,7 @@ double diameter_scale(std::size_t count, double phi_target, const std::vector<Si
                      (std::numbers::pi * static_cast<double>(count) * moment));
 }
 
-std::vector<double> draw_diameters(std::size_t count, double phi_target,
-                                   const std::vector<SizeMode>& modes, Random& rng) {
-    const double scale = diameter_scale(count, phi_target, modes);
-    if (is_monodisperse(modes)) {
-        return std::vector<double>(count, scale);
-    }
+std::vector<std::size_t> mode_counts(std::size_t count, const std::vector<SizeMode>& modes) {
     double total = 0.0;
     for (const SizeMode& m : modes) {
         total += m.fraction;
@@ -95,15 +246,38 @@ std::vector<double> draw_diameters(std::size_t count, double phi_target,
     for (std::size_t k = 0; assigned < count; ++k, ++assigned) {
         ++counts[remainders[k % remainders.size()].second];
     }
-    std::vector<double> diameters;
-    diameters.reserve(count);
+    return counts;
+}
+
+DrawnSizes draw_sizes(std::size_t count, double phi_target, const std::vector<SizeMode>& modes,
+                      Random& rng) {
+    const double scale = diameter_scale(count, phi_target, modes);
+    DrawnSizes drawn;
+    if (is_monodisperse(modes)) {
+        drawn.diameters.assign(count, scale);
+        drawn.species.assign(count, 0);
+        return drawn;
+    }
+    const std::vector<std::size_t> counts = mode_counts(count, modes);
+    drawn.diameters.reserve(count);
+    drawn.species.reserve(count);
+    const bool blend = modes.size() > 1;
     for (std::size_t i = 0; i < modes.size(); ++i) {
-        diameters.insert(diameters.end(), counts[i], modes[i].relative_diameter * scale);
+        drawn.diameters.insert(drawn.diameters.end(), counts[i],
+                               modes[i].relative_diameter * scale);
+        drawn.species.insert(drawn.species.end(), counts[i], blend ? static_cast<int>(i) + 1 : 0);
     }
-    for (std::size_t i = diameters.size(); i > 1; --i) {
-        std::swap(diameters[i - 1], diameters[rng.below(i)]);
+    for (std::size_t i = drawn.diameters.size(); i > 1; --i) {
+        const std::size_t j = rng.below(i);
+        std::swap(drawn.diameters[i - 1], drawn.diameters[j]);
+        std::swap(drawn.species[i - 1], drawn.species[j]);
     }
-    return diameters;
+    return drawn;
+}
+
+std::vector<double> draw_diameters(std::size_t count, double phi_target,
+                                   const std::vector<SizeMode>& modes, Random& rng) {
+    return draw_sizes(count, phi_target, modes, rng).diameters;
 }
 
 }  // namespace sgmp::engine

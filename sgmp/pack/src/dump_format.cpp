@@ -16,6 +16,7 @@ struct DumpColumns {
     int radius = -1;
     int diameter = -1;
     int bin = -1;
+    int species = -1;
     std::array<int, 3> velocity{-1, -1, -1};  // all three, or none used
     std::size_t width = 0;
 };
@@ -46,6 +47,8 @@ DumpColumns parse_atom_labels(const std::vector<std::string_view>& labels,
             columns.diameter = index;
         } else if (label == "bin") {
             columns.bin = index;
+        } else if (label == "species") {
+            columns.species = index;
         }
         for (std::size_t axis = 0; axis < 3; ++axis) {
             if (label == position_labels[axis][0] ||
@@ -181,6 +184,15 @@ Pack read_snapshot(LineReader& reader) {
                                    "', which is not an integer in [0, 1000000]");
             }
             p.color = static_cast<int>(*bin);
+        }
+        if (columns.species >= 0) {
+            const auto species = detail::parse_integer(fields[columns.species]);
+            if (!species || *species < 1 || *species > kMaxSpecies) {
+                throw reader.error(
+                    "column 'species' holds '" + std::string(fields[columns.species]) +
+                    "', which is not an integer in [1, " + std::to_string(kMaxSpecies) + "]");
+            }
+            p.species = static_cast<int>(*species);
         }
         if (columns.velocity[0] >= 0) {
             const std::array<const char*, 3> velocity_names{"vx", "vy", "vz"};

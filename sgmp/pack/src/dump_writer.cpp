@@ -20,12 +20,17 @@ void write_dump_custom(std::ostream& out, const Pack& pack) {
     for (int k = 0; k < 3; ++k) {
         out << format_number(box.lo[k]) << ' ' << format_number(box.hi[k]) << '\n';
     }
-    out << "ITEM: ATOMS id type x y z radius bin\n";
+    const bool species = has_species(pack.particles);
+    out << "ITEM: ATOMS id type x y z radius bin" << (species ? " species" : "") << '\n';
     for (std::size_t i = 0; i < pack.particles.size(); ++i) {
         const Particle& p = pack.particles[i];
         out << p.id << ' ' << types.type[i] << ' ' << format_number(p.center.x()) << ' '
             << format_number(p.center.y()) << ' ' << format_number(p.center.z()) << ' '
-            << format_number(p.radius) << ' ' << p.color << '\n';
+            << format_number(p.radius) << ' ' << p.color;
+        if (species) {
+            out << ' ' << p.species;
+        }
+        out << '\n';
     }
 }
 

@@ -41,12 +41,17 @@ void write_lammps_data(std::ostream& out, const Pack& pack) {
             << "lo " << axes[k] << "hi\n";
     }
     out << "\nAtoms # sphere\n\n";
+    const bool species = has_species(pack.particles);
     for (std::size_t i = 0; i < pack.particles.size(); ++i) {
         const Particle& p = pack.particles[i];
         out << p.id << ' ' << types.type[i] << ' ' << format_number(2.0 * p.radius) << ' '
             << format_number(kLammpsDataDensity) << ' ' << format_number(p.center.x()) << ' '
             << format_number(p.center.y()) << ' ' << format_number(p.center.z()) << " # bin "
-            << p.color << '\n';
+            << p.color;
+        if (species) {
+            out << " species " << p.species;
+        }
+        out << '\n';
     }
 }
 
@@ -113,11 +118,20 @@ Particle parse_atom(const std::string& line, const LineReader& reader) {
     }
     if (hash != std::string::npos) {
         const auto comment = detail::split_fields(std::string_view(line).substr(hash + 1));
-        if (comment.size() == 2 && comment[0] == "bin") {
+        if (comment.size() >= 2 && comment[0] == "bin") {
             const auto bin = detail::parse_integer(comment[1]);
             if (bin && *bin >= 0 && *bin <= 1000000) {
                 p.color = static_cast<int>(*bin);
             }
+        }
+        if (comment.size() == 4 && comment[2] == "species") {  // "# bin B species S"
+            const auto species = detail::parse_integer(comment[3]);
+            if (!species || *species < 1 || *species > kMaxSpecies) {
+                throw reader.error("species '" + std::string(comment[3]) +
+                                   "' is not an integer in [1, " + std::to_string(kMaxSpecies) +
+                                   "]");
+            }
+            p.species = static_cast<int>(*species);
         }
     }
     return p;

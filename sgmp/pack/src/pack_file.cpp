@@ -8,8 +8,8 @@
 
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/dump_format.hpp"
-#include "sgmp/pack/lammps_data_format.hpp"
 #include "sgmp/pack/interrupt.hpp"
+#include "sgmp/pack/lammps_data_format.hpp"
 #include "sgmp/pack/vtk_format.hpp"
 #include "sgmp/pack/xyz_format.hpp"
 #include "text_fields.hpp"

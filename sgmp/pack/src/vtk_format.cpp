@@ -65,6 +65,12 @@ void write_vtk_particles(std::ostream& out, const Pack& pack) {
     for (const auto& p : pack.particles) {
         out << p.color << '\n';
     }
+    if (has_species(pack.particles)) {
+        out << "SCALARS species int 1\nLOOKUP_TABLE default\n";
+        for (const auto& p : pack.particles) {
+            out << p.species << '\n';
+        }
+    }
 }
 
 void write_vtk_container(std::ostream& out, const Pack& pack) {

@@ -16,6 +16,9 @@ namespace sgmp {
 namespace {
 
 constexpr std::string_view kProperties = "id:I:1:pos:R:3:radius:R:1:bin:I:1";
+/// The species of a blend (particle.hpp). Not `species`: in extended XYZ that is the
+/// chemical-symbol column (ASE reads it as element symbols and fails on numbers).
+constexpr std::string_view kSpeciesProperty = ":species_id:I:1";
 
 /// Most columns a particle line may declare in all; far above any real file, and small
 /// enough that column positions and the line width never overflow an int.
@@ -127,6 +130,7 @@ struct Columns {
     int radius = -1;
     int diameter = -1;
     int color = -1;
+    int species = -1;
     int width = 0;
 };
 
@@ -185,6 +189,9 @@ Columns parse_properties(const std::string& descriptor, bool have_radius,
                 throw reader.error("Properties holds both 'bin' and 'color': give one");
             }
             columns.color = columns.width;
+        } else if (key == "species_id") {
+            expect(1);
+            columns.species = columns.width;
         }
         columns.width += static_cast<int>(*count);
     }
@@ -255,6 +262,14 @@ Particle parse_particle(std::string_view line, const Columns& columns, std::int6
     }
     if (columns.color >= 0) {
         particle.color = static_cast<int>(integer_field(fields[columns.color], "bin", at));
+    }
+    if (columns.species >= 0) {
+        const std::int64_t species = integer_field(fields[columns.species], "species_id", at);
+        if (species < 1 || species > kMaxSpecies) {
+            throw at.error("species_id " + std::to_string(species) + " is not in [1, " +
+                           std::to_string(kMaxSpecies) + "]");
+        }
+        particle.species = static_cast<int>(species);
     }
     detail::check_particle_values(particle, at.source, at.line);
     return particle;
@@ -449,11 +464,11 @@ char* append(char* line, char* end, T value) {
     return std::to_chars(line, end, value).ptr;
 }
 
-/// The particle lines "id x y z radius bin", formatted into a block of memory that is written
-/// whenever it fills: one stream call per block instead of eleven per particle.
-void write_particle_lines(std::ostream& out, const std::vector<Particle>& particles) {
+/// The particle lines "id x y z radius bin [species]", formatted into a block of memory that is
+/// written whenever it fills: one stream call per block instead of eleven per particle.
+void write_particle_lines(std::ostream& out, const std::vector<Particle>& particles, bool species) {
     constexpr std::size_t kBlock = 1 << 16;
-    constexpr std::size_t kLongestLine = 6 * 32;  // six numbers of at most 24 characters each
+    constexpr std::size_t kLongestLine = 7 * 32;  // seven numbers of at most 24 characters each
     std::vector<char> block(kBlock + kLongestLine);
     char* const begin = block.data();
     char* const end = begin + block.size();
@@ -466,6 +481,10 @@ void write_particle_lines(std::ostream& out, const std::vector<Particle>& partic
         }
         *at++ = ' ';
         at = append(at, end, p.color);
+        if (species) {
+            *at++ = ' ';
+            at = append(at, end, p.species);
+        }
         *at++ = '\n';
         if (static_cast<std::size_t>(at - begin) >= kBlock) {
             out.write(begin, at - begin);
@@ -481,9 +500,11 @@ void write_xyz(std::ostream& out, const Pack& pack) {
     const Container container = container_of(pack);
     const double height = top_of(pack, container) - container.floor;
     out << pack.particles.size() << '\n';
-    out << "Properties=" << kProperties << " Lattice=\"" << lattice_text(container, height)
-        << "\" Origin=\"" << format_number(container.x_min) << ' ' << format_number(container.floor)
-        << ' ' << format_number(container.z_min) << "\" pbc=\"F F F\"";
+    const bool species = has_species(pack.particles);
+    out << "Properties=" << kProperties << (species ? kSpeciesProperty : "") << " Lattice=\""
+        << lattice_text(container, height) << "\" Origin=\"" << format_number(container.x_min)
+        << ' ' << format_number(container.floor) << ' ' << format_number(container.z_min)
+        << "\" pbc=\"F F F\"";
     for (const auto& [key, value] : pack.metadata.entries()) {
         if (is_derived_key(key)) {
             continue;
@@ -497,7 +518,7 @@ void write_xyz(std::ostream& out, const Pack& pack) {
         }
     }
     out << '\n';
-    write_particle_lines(out, pack.particles);
+    write_particle_lines(out, pack.particles, species);
 }
 
 Pack read_xyz(std::istream& in, const std::string& source) {

@@ -34,6 +34,10 @@ struct PackRequest {
     /// Size distribution (size_modes.hpp); the default single mode is the thesis' equal
     /// spheres. The header's `diameter` is the scale s (the diameter of relative size 1).
     std::vector<SizeMode> size_modes = std::vector<SizeMode>(1);
+    /// What the modes' fractions mean (number, volume or mass fractions).
+    FractionBasis fraction_basis = FractionBasis::Number;
+    /// Where the modes came from (a size-distribution file's name), for the header only.
+    std::string size_distribution;
     /// Relaxation after deposition (relax.hpp); none by default.
     RelaxParams relax;
 };

@@ -41,8 +41,8 @@ struct RelaxParams {
     /// at most s·(rᵢ + rⱼ); only deeper soft overlaps are left for the clearing and the
     /// hard-sphere finish. The default 0 makes the soft spheres the real ones: every loaded
     /// contact is parted by the clearing to touching (gaps of 10⁻⁹–10⁻⁷·d), so the pack's
-    /// contacts count at δ = 10⁻⁶ as well (sgmp/engine/docs/relaxation-2026-11.md); with s = 3·10⁻⁴ they end
-    /// as gaps of up to 3·10⁻⁴·d and Z(10⁻⁶) is 0.
+    /// contacts count at δ = 10⁻⁶ as well (sgmp/engine/docs/relaxation-2026-11.md); with s = 3·10⁻⁴
+    /// they end as gaps of up to 3·10⁻⁴·d and Z(10⁻⁶) is 0.
     double shell = 0.0;
     /// A stage has converged when no sphere feels a net force above this, in m·g.
     double force_tolerance = 1e-4;
@@ -60,7 +60,8 @@ struct RelaxParams {
     /// by the frictionless one. The default 0.2 is the relaxation's stand-in for the DEM
     /// frictional class (pours at μ = 0.5): measured against that class, a relaxation from
     /// rest at μ = 0.2 agrees on φ, Z(10⁻³), Z(10⁻²), the split ratio, g(r) and P(Z) at
-    /// N = 3000, where one at μ = 0.5 keeps too few contacts (sgmp/engine/docs/relaxation-frictional-2026-11.md).
+    /// N = 3000, where one at μ = 0.5 keeps too few contacts
+    /// (sgmp/engine/docs/relaxation-frictional-2026-11.md).
     double friction = 0.2;
     /// Tangential over normal stiffness k_t/k of the frictional relaxation. 2/7 makes the
     /// tangential oscillation of a contact as fast as the normal one for a solid sphere

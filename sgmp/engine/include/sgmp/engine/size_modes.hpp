@@ -1,38 +1,84 @@
 #pragma once
 /// @file size_modes.hpp
-/// Multi-modal (polydisperse) sizes, thesis §10.2. A size distribution is a list of modes
-/// (relative diameter a_i > 0, number fraction f_i > 0; fractions are normalised). The
-/// thesis' sizing rule generalises to (N/3)·(π/6)·Σ f_i (a_i·s)³ = φ*, which fixes the scale
-/// s; mode i has diameter a_i·s. One mode of relative size 1 is the monodisperse thesis case
-/// (s = d).
+/// Multi-modal (polydisperse) sizes, thesis §10.2, and blends as users state them. A size
+/// distribution is a list of modes, the species 1… of a blend in the order given (relative
+/// diameter a_i > 0, fraction f_i ≥ 0 in a stated basis, optional density ρ_i > 0 in any
+/// unit; only ratios matter). Fractions of one basis convert to number fractions n_i:
+///
+///     number: n_i ∝ f_i        volume: n_i ∝ f_i / a_i³        mass: n_i ∝ f_i / (ρ_i·a_i³)
+///
+/// normalised to Σ n_i = 1. The thesis' sizing rule generalises to
+/// (N/3)·(π/6)·Σ n_i (a_i·s)³ = φ*, which fixes the scale s; mode i has diameter a_i·s. One
+/// mode of relative size 1 is the monodisperse thesis case (s = d).
 #include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "sgmp/engine/name_table.hpp"
 #include "sgmp/pack/random.hpp"
 
 namespace sgmp::engine {
 
 struct SizeMode {
+    SizeMode() = default;
+    SizeMode(double diameter, double number_or_stated_fraction,
+             std::optional<double> relative_density = std::nullopt)
+        : relative_diameter(diameter),
+          fraction(number_or_stated_fraction),
+          density(relative_density) {}
     double relative_diameter = 1.0;
     double fraction = 1.0;
+    std::optional<double> density;  ///< relative density, needed by the mass basis
 };
 
-/// "1:0.7,0.5:0.3" (relative diameter : number fraction, comma separated); nullopt when the
-/// text is not of that form or a number is not positive and finite.
+/// What the fractions of a size distribution mean.
+enum class FractionBasis { Number, Volume, Mass };
+const NameTable<FractionBasis, 3>& fraction_bases();
+std::string_view to_string(FractionBasis basis);
+std::optional<FractionBasis> parse_fraction_basis(std::string_view text);
+
+/// "1:0.7,0.5:0.3" (relative diameter : fraction [: density], comma separated); nullopt
+/// when the text is not of that form or a number is not positive and finite.
 std::optional<std::vector<SizeMode>> parse_size_modes(std::string_view text);
 std::string size_modes_to_string(const std::vector<SizeMode>& modes);
+
+/// A size-distribution CSV: a header row naming `diameter` and `fraction` and optionally
+/// `density` (any order, no other column), then one row per species; `#` lines and blank
+/// lines are skipped. Diameters in any unit (only their ratios matter: they are divided
+/// by the largest). Throws InputError (source:line: reason) for an unknown or missing
+/// column, a diameter or density ≤ 0 or not finite, a negative fraction, fractions all
+/// zero, or no row; a species of fraction 0 is kept (it gets no particle).
+std::vector<SizeMode> parse_size_distribution_csv(std::string_view text, const std::string& source);
+
+/// The modes with number fractions (normalised to 1) from fractions in `basis`; densities
+/// are kept. Throws ParameterError (`fraction_basis`) for the mass basis when a mode has no
+/// density.
+std::vector<SizeMode> number_fractions(const std::vector<SizeMode>& modes, FractionBasis basis);
 /// True for the single mode of relative size 1.
 bool is_monodisperse(const std::vector<SizeMode>& modes);
 
 /// The scale s: (N/3)·(π/6)·Σ f_i (a_i s)³ = φ* with fractions normalised.
 double diameter_scale(std::size_t count, double phi_target, const std::vector<SizeMode>& modes);
 
-/// Diameters of the N particles in drop order: mode counts by the largest-remainder
-/// rounding of f_i·N (ties to the earlier mode), order shuffled (Fisher–Yates with `rng`).
-/// A monodisperse list draws nothing from `rng`.
+/// Particles per mode: the largest-remainder rounding of n_i·N (ties to the earlier mode),
+/// so each count is within one particle of n_i·N and they sum to N.
+std::vector<std::size_t> mode_counts(std::size_t count, const std::vector<SizeMode>& modes);
+
+/// Diameters and species of the N particles in drop order.
+struct DrawnSizes {
+    std::vector<double> diameters;
+    std::vector<int> species;  ///< mode index + 1; all 0 for a single mode
+};
+
+/// Diameters of the N particles in drop order: mode_counts of each mode, order shuffled
+/// (Fisher–Yates with `rng`). A monodisperse list draws nothing from `rng`. `modes` hold
+/// number fractions.
+DrawnSizes draw_sizes(std::size_t count, double phi_target, const std::vector<SizeMode>& modes,
+                      Random& rng);
+
+/// The diameters of draw_sizes alone.
 std::vector<double> draw_diameters(std::size_t count, double phi_target,
                                    const std::vector<SizeMode>& modes, Random& rng);
 

@@ -8,7 +8,7 @@
 ///     T atom types
 ///     x_min x_max xlo xhi / floor top ylo yhi / z_min z_max zlo zhi
 ///     Atoms # sphere
-///     id type diameter density x y z # bin         (N lines)
+///     id type diameter density x y z # bin B [species S]   (N lines; species in blends)
 ///
 /// The box is the container up to the top of the highest sphere (pack_extent.hpp). Numbers
 /// are shortest round-trip text (std::to_chars), so a pack read back is bit-identical. The

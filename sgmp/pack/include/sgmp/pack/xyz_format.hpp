@@ -7,6 +7,8 @@
 ///         Origin="-0.625 -0.625 -0.625" pbc="F F F" key=value key="a b" ...   (one line)
 ///     id x y z radius bin            (N lines)
 ///
+/// A pack with species (a blend, particle.hpp) adds `:species_id:I:1` and its column
+/// (`species` is extended XYZ's chemical-symbol column, which ASE reads as elements).
 /// The colour bin is called `bin` because OVITO takes a property named `color` as an RGB
 /// colour. `Lattice` and `Origin` are the container up to the top of the highest sphere
 /// (H = y_top − floor; pack_extent.hpp), so OVITO draws it and imports the header keys as
@@ -15,7 +17,7 @@
 ///
 /// The reader finds columns by the Properties descriptor, names in any case (`Radius`,
 /// `POS`), any order, extra columns ignored; `radius` may be replaced by `diameter`, the
-/// bin (`bin`, or the older `color`) is optional, and without a radius or diameter the
+/// bin (`bin`, or the older `color`) and `species_id` (1…) are optional, and without a radius or diameter the
 /// caller's radius (`ReadOptions::radius`) is used. A bare key (`key` without `=value`, as
 /// ASE writes a true flag) is kept as `key=T`. A file may hold several frames one after
 /// another; one is returned (ReadOptions::frame, from 1; the last by default). Anything

@@ -40,6 +40,14 @@ def run(*args):
             ["--relax", "frictionless", "--relax-stages", "3", "--fall", "step",
              "--fall-step", "0.002", "--keep-uncertified"],
         ),
+        (
+            dict(count=120, arrangement="loose-random", seed=3, size_modes="1:0.6,0.5:0.4",
+                 fraction_basis="volume", relax="frictional", relax_friction=0.3,
+                 relax_stages=1),
+            ["--size-modes", "1:0.6,0.5:0.4", "--fraction-basis", "volume", "--relax",
+             "frictional", "--relax-friction", "0.3", "--relax-stages", "1",
+             "--keep-uncertified"],
+        ),
     ],
 )
 def test_pack_writes_the_same_bytes_as_sgmp_pack(tmp_path, options, cli):

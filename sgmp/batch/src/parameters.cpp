@@ -60,7 +60,10 @@ void apply(PackRequest& r, const std::string& name, const std::string& v) {
         r.phi_target = number<double>(name, v);
     } else if (name == "size_modes") {
         r.size_modes = choice(engine::parse_size_modes(v), name, v,
-                              "positive diameter:fraction pairs, e.g. 1:0.7,0.5:0.3");
+                              "positive diameter:fraction[:density] items, e.g. 1:0.7,0.5:0.3");
+    } else if (name == "fraction_basis") {
+        r.fraction_basis =
+            choice(engine::parse_fraction_basis(v), name, v, engine::fraction_bases().choices());
     } else if (name == "circle_factor") {
         p.circle_factor = number<double>(name, v);
     } else if (name == "sweep_positions") {
@@ -105,6 +108,8 @@ void apply(PackRequest& r, const std::string& name, const std::string& v) {
         x.time = number<double>(name, v);
     } else if (name == "relax_crossings") {
         x.crossings = number<double>(name, v);
+    } else if (name == "relax_friction") {
+        x.friction = number<double>(name, v);
     }
 }
 
@@ -119,6 +124,7 @@ std::vector<Parameter> make_parameters() {
         {"arrangement", "", false},
         {"phi_target", n(d.phi_target), false},
         {"size_modes", "1:1", true},
+        {"fraction_basis", std::string(engine::to_string(d.fraction_basis)), false},
         {"circle_factor", n(p.circle_factor), false},
         {"sweep_positions", i(p.sweep_stages.front()), false},
         {"sweep_stages", "", true},
@@ -139,6 +145,7 @@ std::vector<Parameter> make_parameters() {
         {"relax_force_tolerance", n(x.force_tolerance), false},
         {"relax_time", n(x.time), false},
         {"relax_crossings", n(x.crossings), false},
+        {"relax_friction", n(x.friction), false},
     };
 }
 

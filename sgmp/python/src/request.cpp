@@ -97,9 +97,15 @@ const std::map<std::string, Setter>& setters() {
              const auto modes = engine::parse_size_modes(text(v, "size-modes"));
              if (!modes) {
                  throw bad("size-modes", v,
-                           "must be positive diameter:fraction pairs, e.g. 1:0.7,0.5:0.3");
+                           "must be positive diameter:fraction[:density] items, e.g. "
+                           "1:0.7,0.5:0.3");
              }
              r.size_modes = *modes;
+         }},
+        {"fraction_basis",
+         [](PackRequest& r, auto v) {
+             r.fraction_basis = choice(engine::parse_fraction_basis(text(v, "fraction-basis")),
+                                       "fraction-basis", v, engine::fraction_bases().choices());
          }},
         {"circle_factor",
          [](PackRequest& r, auto v) { r.protocol.circle_factor = number(v, "circle-factor"); }},
@@ -166,6 +172,8 @@ const std::map<std::string, Setter>& setters() {
         {"relax_time", [](PackRequest& r, auto v) { r.relax.time = number(v, "relax-time"); }},
         {"relax_crossings",
          [](PackRequest& r, auto v) { r.relax.crossings = number(v, "relax-crossings"); }},
+        {"relax_friction",
+         [](PackRequest& r, auto v) { r.relax.friction = number(v, "relax-friction"); }},
     };
     return table;
 }

@@ -248,6 +248,7 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
         m.voronoi = voronoi_local_phi(particles, m.container, m.region);
     }
     stage_times.voronoi = watch.lap();
+    m.mixing = mixing_profile(particles, m.container.floor);
     return m;
 }
 

@@ -148,6 +148,21 @@ Json metrics_json(const Measurement& m, const Json& prov) {
              {"split_pairs", {rdf.split_pairs[0], rdf.split_pairs[1]}},
              {"split_volume", {rdf.split_volume[0], rdf.split_volume[1]}},
              {"space", box_json(rdf.space)}};
+    if (m.mixing) {
+        Json quarters = Json::array();
+        const double slab = (m.mixing->y_high - m.mixing->y_low) / 4.0;
+        for (std::size_t q = 0; q < 4; ++q) {
+            quarters.push_back(
+                Json{{"y_low", m.mixing->y_low + static_cast<double>(q) * slab},
+                     {"y_high", q == 3 ? m.mixing->y_high
+                                       : m.mixing->y_low + static_cast<double>(q + 1) * slab},
+                     {"volume_shares", m.mixing->quarters[q]}});
+        }
+        j["mixing"] = Json{{"species", m.mixing->species},
+                           {"overall_volume_shares", m.mixing->overall},
+                           {"quarters", quarters},
+                           {"deviation_max", m.mixing->deviation}};
+    }
     if (m.voronoi) {
         j["voronoi_detail"] = Json{{"cells", m.voronoi->cells},
                                    {"global", m.voronoi->global},

@@ -1,14 +1,15 @@
 #pragma once
 /// @file measure.hpp
-/// All metrics of one pack in one region (definitions in compare/docs/definitions.md): packing fraction and
-/// its profile, overlaps, coordination at several tolerances, g(r), the split ratio, Q6 and
-/// the Voronoi local packing fraction.
+/// All metrics of one pack in one region (definitions in compare/docs/definitions.md): packing
+/// fraction and its profile, overlaps, coordination at several tolerances, g(r), the split ratio,
+/// Q6 and the Voronoi local packing fraction.
 
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "sgmp/compare/local_structure.hpp"
+#include "sgmp/compare/mixing_profile.hpp"
 #include "sgmp/compare/overlaps.hpp"
 #include "sgmp/compare/packing_fraction.hpp"
 #include "sgmp/compare/voronoi.hpp"
@@ -54,6 +55,7 @@ struct Measurement {
     LocalStructure local;
     std::optional<VoronoiPhi> voronoi;  // absent when not asked for
     std::optional<ThesisRdf> thesis_rdf;
+    std::optional<MixingProfile> mixing;  // a blend's (particles with species) only
 };
 
 /// The container of a pack: its `container` metadata key, else the thesis container.

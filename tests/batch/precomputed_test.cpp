@@ -13,6 +13,8 @@
 #include <sstream>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "sgmp/compare/precomputed.hpp"
 #include "sgmp/pack/input_error.hpp"
 
@@ -117,6 +119,24 @@ BOOST_AUTO_TEST_CASE(reports_from_precomputed_metrics) {
         BOOST_TEST(rows.at(metric).at(16) == "not measured", metric);
     }
     BOOST_TEST(slurp(dir / "errors").empty(), slurp(dir / "errors"));
+    // A metrics file whose P(Z) is not an array is refused naming the entry (it was
+    // "[json.exception.type_error.302] type must be array, but is string").
+    for (const char* kind : {"g_r", "phi_y", "p_z", "voronoi_phi"}) {
+        fs::copy_file(dir / "m" / (std::string("loose-random-1.") + kind + ".csv"),
+                      dir / "m" / (std::string("bad.") + kind + ".csv"));
+    }
+    auto json = nlohmann::ordered_json::parse(slurp(dir / "m/loose-random-1.metrics.json"));
+    json["p_z"]["0"] = "abc";
+    std::ofstream(dir / "m/bad.metrics.json") << json.dump();
+    const int status = std::system((in + compare +
+                                    " report --no-voronoi --out bad-report --a m/bad.metrics.json "
+                                    "m/loose-random-2.metrics.json --b " +
+                                    b_metrics + " >/dev/null 2>bad-errors")
+                                       .c_str());
+    BOOST_TEST(WEXITSTATUS(status) == 1);
+    BOOST_TEST(slurp(dir / "bad-errors") ==
+               "sgmp-compare: m/bad.metrics.json: 'p_z' entry '0' must be an array of numbers, "
+               "not string\n");
     fs::remove_all(dir);
 }
 

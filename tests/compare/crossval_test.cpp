@@ -287,6 +287,14 @@ BOOST_AUTO_TEST_CASE(regression_passes_identical_runs_and_flags_moved_metrics) {
         BOOST_TEST(message.find("b.json: entry 0 is malformed: count ") == 0, message);
         BOOST_TEST(message.find("must be a whole number >= 0") != std::string::npos, message);
     }
+    // Fields of the wrong type are named, not reported in the JSON library's words
+    // ("[json.exception.type_error.302] type must be string, but is number").
+    const std::string wrong_type =
+        "{\"schema_version\": 2, \"entries\": [{\"group\": 7, \"count\": 150, "
+        "\"metric\": \"phi\", \"value\": 0.6, \"tolerance\": 0.01}]}";
+    BOOST_TEST(sgmp::testing::input_error_of([&] {
+                   (void)parse_baseline(nlohmann::json::parse(wrong_type), "b.json");
+               }) == "b.json: entry 0 is malformed: 'group' must be a string");
     const std::string entry =
         "{\"group\": \"g\", \"count\": 150, \"metric\": \"phi\", \"value\": 0.6, "
         "\"tolerance\": 0.01}";

@@ -213,6 +213,15 @@ def check_bad_input():
               f"bad input {' '.join(args)}: exit {rc}, {lines}" + (", file left" if left else ""))
     rc, _ = convert("species.xyz", "species.data", "--radius", "0.2")
     check(rc == 0, "a species-only file converts with --radius")
+    # Far-apart centres and tiny radii are valid files: they once gave "cannot create
+    # std::vector larger than max_size()" from the overlap grid.
+    write("far.xyz", "2\nProperties=id:I:1:pos:R:3:radius:R:1\n1 1e20 0 0 0.1\n2 0 0 0 0.1\n")
+    write("tiny.xyz", "2\nProperties=id:I:1:pos:R:3\n1 0.1 0 0\n2 0 0 0\n")
+    for args in (("far.xyz", "far.data"), ("far.xyz", "far.vtk"),
+                 ("tiny.xyz", "tiny.dump", "--radius", "1e-21")):
+        rc, lines = convert(*args)
+        check(rc == 0 and not any("max_size" in line for line in lines),
+              f"{' '.join(args)}: exit {rc}, {lines}")
 
 
 def main():

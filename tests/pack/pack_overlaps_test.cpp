@@ -115,6 +115,24 @@ BOOST_AUTO_TEST_CASE(near_queries_of_any_radius_match_brute_force) {
     }
 }
 
+BOOST_AUTO_TEST_CASE(centres_spread_beyond_any_integer_grid_still_give_a_grid) {
+    // 10²⁰ over a reach of 0.2 is 5·10²⁰ cells per axis, beyond int64: the grid widens its
+    // cells instead (it once cast the count and threw std::length_error). Near ±10³⁰⁸ the
+    // span itself is infinite: one cell.
+    for (const double far : {1e20, 1e300, 1.7e308}) {
+        BOOST_TEST_INFO("far " << far);
+        const std::vector<Vec3> centers{Vec3(-far, 0, 0), Vec3(0, 0, 0), Vec3(0.1, 0, 0),
+                                        Vec3(far, 0, 0)};
+        const CellGrid grid(centers, 0.2);
+        std::size_t pairs = 0;
+        grid.for_each_pair([&](std::size_t i, std::size_t j, double) {
+            BOOST_TEST((i == 1 && j == 2));
+            ++pairs;
+        });
+        BOOST_TEST(pairs == 1u);
+    }
+}
+
 BOOST_AUTO_TEST_CASE(a_center_that_is_not_finite_is_refused) {
     std::vector<Vec3> centers = {Vec3(0, 0, 0), Vec3(NAN, 0, 0)};
     BOOST_CHECK_THROW(CellGrid(centers, 0.1), std::invalid_argument);

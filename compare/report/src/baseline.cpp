@@ -93,20 +93,38 @@ std::vector<BaselineEntry> parse_baseline(const nlohmann::json& json, const std:
     for (const auto& item : json["entries"]) {
         try {
             BaselineEntry e;
-            e.group = item.at("group").get<std::string>();
+            const auto field = [&](const char* key) -> const nlohmann::json& {
+                if (!item.is_object() || !item.contains(key)) {
+                    throw std::invalid_argument(std::string("it has no '") + key + "'");
+                }
+                return item[key];
+            };
+            const auto text = [&](const char* key) {
+                if (!field(key).is_string()) {
+                    throw std::invalid_argument(std::string("'") + key + "' must be a string");
+                }
+                return field(key).get<std::string>();
+            };
+            const auto number = [&](const char* key) {
+                if (!field(key).is_number()) {
+                    throw std::invalid_argument(std::string("'") + key + "' must be a number");
+                }
+                return field(key).get<double>();
+            };
+            e.group = text("group");
             // A whole number as JSON holds it: a float (1e50) has no exact count, and its
             // conversion would be undefined.
-            const auto& count = item.at("count");
+            const auto& count = field("count");
             if (!count.is_number_unsigned()) {
                 throw std::invalid_argument("count " + count.dump() +
                                             " must be a whole number >= 0");
             }
             e.count = count.get<std::size_t>();
-            e.metric = item.at("metric").get<std::string>();
-            e.unit = item.value("unit", "");
-            e.value = item.at("value").get<double>();
-            e.tolerance = item.at("tolerance").get<double>();
-            e.tolerance_source = item.value("tolerance_source", "");
+            e.metric = text("metric");
+            e.unit = item.contains("unit") ? text("unit") : "";
+            e.value = number("value");
+            e.tolerance = number("tolerance");
+            e.tolerance_source = item.contains("tolerance_source") ? text("tolerance_source") : "";
             if (!std::isfinite(e.value) || !std::isfinite(e.tolerance) || e.tolerance < 0.0) {
                 throw std::invalid_argument("value and tolerance must be finite, tolerance >= 0");
             }

@@ -68,6 +68,33 @@ double number_at(const nlohmann::ordered_json& j, const std::string& key,
     return j[key].get<double>();
 }
 
+/// The array of numbers at j[key][name], named in the error when it is missing or is not
+/// one (not nlohmann's internal text).
+std::vector<double> numbers_at(const nlohmann::ordered_json& j, const std::string& key,
+                               const std::string& name, const std::string& source) {
+    const std::string what = "'" + key + "' entry '" + name + "'";
+    if (!j.contains(key) || !j[key].is_object() || !j[key].contains(name)) {
+        throw InputError(source, 0, "has no " + what);
+    }
+    const auto& array = j[key][name];
+    if (!array.is_array() ||
+        !std::all_of(array.begin(), array.end(), [](const auto& v) { return v.is_number(); })) {
+        throw InputError(
+            source, 0,
+            what + " must be an array of numbers, not " + std::string(array.type_name()));
+    }
+    return array.get<std::vector<double>>();
+}
+
+/// The object at j[key], named in the error when it is missing.
+const nlohmann::ordered_json& object_at(const nlohmann::ordered_json& j, const std::string& key,
+                                        const std::string& source) {
+    if (!j.contains(key) || !j[key].is_object()) {
+        throw InputError(source, 0, "has no object '" + key + "'");
+    }
+    return j[key];
+}
+
 }  // namespace
 
 bool is_metrics_json(std::string_view path) {
@@ -112,9 +139,9 @@ PackSummary summary_from_measure(const std::string& source, const nlohmann::orde
     const auto& names = coordination_tolerance_names();
     for (const auto& name : names) {
         s.z_mean.push_back(number_at(j, "z_mean_tol_" + name, source));
-        s.p_z.push_back(j.at("p_z").at(name).get<std::vector<double>>());
+        s.p_z.push_back(numbers_at(j, "p_z", name, source));
     }
-    s.gr_bin_width = number_at(j.at("g_r_detail"), "bin_width_over_d", source);
+    s.gr_bin_width = number_at(object_at(j, "g_r_detail", source), "bin_width_over_d", source);
     const std::string g_r_source = sibling_csv(source, "g_r");
     auto gr = columns(g_r_csv, g_r_source, {"r_over_d", "g"});
     s.gr_r = std::move(gr[0]);

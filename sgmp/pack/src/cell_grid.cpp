@@ -6,18 +6,18 @@
 namespace sgmp {
 namespace {
 
-/// Cells of side h over extents `span`: ⌊span_a / h⌋ + 1 per axis.
-std::array<std::int64_t, 3> dims_for(const Vec3& span, double side) {
-    std::array<std::int64_t, 3> dims{};
+/// Cells of side h over extents `span`: ⌊span_a / h⌋ + 1 per axis, in doubles (a span of
+/// 10²⁰ over a reach of 0.2 is beyond any integer type; the grid widens h until it fits).
+std::array<double, 3> dims_for(const Vec3& span, double side) {
+    std::array<double, 3> dims{};
     for (int a = 0; a < 3; ++a) {
-        dims[a] = static_cast<std::int64_t>(std::floor(span[a] / side)) + 1;
+        dims[a] = std::floor(span[a] / side) + 1.0;
     }
     return dims;
 }
 
-double cell_count(const std::array<std::int64_t, 3>& dims) {
-    return static_cast<double>(dims[0]) * static_cast<double>(dims[1]) *
-           static_cast<double>(dims[2]);
+double cell_count(const std::array<double, 3>& dims) {
+    return dims[0] * dims[1] * dims[2];
 }
 
 }  // namespace
@@ -47,11 +47,18 @@ CellGrid::CellGrid(const std::vector<Vec3>& centers, double reach)
     // Widen the cells until the grid holds at most 2N + 64 of them.
     const double max_cells = 2.0 * static_cast<double>(centers_.size()) + 64.0;
     side_ = reach;
-    while (cell_count(dims_for(span, side_)) > max_cells) {
+    if (!span.allFinite()) {
+        side_ = INFINITY;  // centres near ±10³⁰⁸: one cell (every query still exact)
+    }
+    while (std::isfinite(side_) && cell_count(dims_for(span, side_)) > max_cells) {
         side_ *= 1.25;
     }
-    dims_ = dims_for(span, side_);
-    const auto cells = static_cast<std::size_t>(cell_count(dims_));
+    const std::array<double, 3> dims =
+        std::isfinite(side_) ? dims_for(span, side_) : std::array<double, 3>{1.0, 1.0, 1.0};
+    for (int a = 0; a < 3; ++a) {
+        dims_[a] = static_cast<std::int64_t>(dims[a]);  // at most 2N + 64 by now
+    }
+    const auto cells = static_cast<std::size_t>(cell_count(dims));
 
     // Counting sort of the centres by cell; members of a cell stay in increasing order.
     std::vector<std::uint32_t> cell_of(centers_.size());

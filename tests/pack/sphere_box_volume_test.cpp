@@ -40,6 +40,16 @@ BOOST_AUTO_TEST_CASE(inside_and_outside) {
     BOOST_TEST(sphere_box_volume(Vec3::Zero(), 0.0, control_volume()) == 0.0);
 }
 
+BOOST_AUTO_TEST_CASE(a_sphere_holding_the_whole_box_gives_the_box_for_any_radius) {
+    // Radii whose square overflows once reached boost's quadrature with NaN slices
+    // ("tanh_sinh ... evaluated your function at a singular point").
+    const Box box{Vec3(-0.5, -0.5, -0.5), Vec3(0.5, 0.5, 0.5)};
+    for (const double r : {1.75, 1e10, 1e154, 1e200, 1e300, 1.7e308}) {  // the far corner: √3
+        BOOST_TEST_INFO("radius " << r);
+        BOOST_TEST(sphere_box_volume(Vec3(0.5, 0.5, 0.5), r, box) == 1.0);
+    }
+}
+
 BOOST_AUTO_TEST_CASE(one_face_gives_the_cap) {
     const double r = 0.2;
     for (const double h : {0.01, 0.1, 0.2, 0.33, 0.39}) {

@@ -74,6 +74,15 @@ BOOST_AUTO_TEST_CASE(a_missing_renderer_is_exit_1_and_no_file) {
     BOOST_TEST(f.status == 1);
     BOOST_TEST(one_line(f.err), f.err);
     BOOST_TEST(!fs::exists(s.path("p.png")));
+    // A renderer killed by a signal says so (it was reported as "povray failed (exit 0)").
+    { std::ofstream(s.path("killed-povray")) << "#!/bin/sh\nkill -KILL $$\n"; }
+    fs::permissions(s.path("killed-povray"), fs::perms::owner_all);
+    const Run k = s.run("render '" + s.path("p.xyz") + "' --out '" + s.path("p.png") + "'",
+                        "SGMP_POVRAY='" + s.path("killed-povray") + "'");
+    BOOST_TEST(k.status == 1);
+    BOOST_TEST(one_line(k.err), k.err);
+    BOOST_TEST(k.err.rfind("sgmp: povray was killed by signal 9 (Killed)", 0) == 0, k.err);
+    BOOST_TEST(!fs::exists(s.path("p.png")));
 }
 
 BOOST_AUTO_TEST_CASE(bad_options_are_usage_errors) {

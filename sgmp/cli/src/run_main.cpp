@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <new>
 
 #include "sgmp/pack/input_error.hpp"
 
@@ -67,6 +68,11 @@ int run_main(std::string_view program, CLI::App& app, const std::function<void()
         return report(program, usage_message(e, exceptions), 2);
     } catch (const UsageError& e) {
         return report(program, e.what(), 2);
+    } catch (const std::bad_alloc&) {  // its text, "std::bad_alloc", tells a user nothing
+        return report(program,
+                      "out of memory: the input or the request needs more memory than this "
+                      "process may use (ulimit -v, the machine)",
+                      1);
     } catch (const std::exception& e) {
         return report(program, e.what(), 1);
     }

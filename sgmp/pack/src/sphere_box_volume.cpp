@@ -7,7 +7,10 @@
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <vector>
+
+#include "sgmp/pack/metadata.hpp"
 
 namespace sgmp {
 namespace {
@@ -117,7 +120,13 @@ double sliced_volume(double radius, const AxisCut& along, const AxisCut& first,
     double volume = 0.0;
     for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
         if (breaks[i + 1] > breaks[i]) {
-            volume += integrator().integrate(slice_area, breaks[i], breaks[i + 1], kTolerance);
+            try {
+                volume += integrator().integrate(slice_area, breaks[i], breaks[i + 1], kTolerance);
+            } catch (const std::exception&) {  // boost's text names its internals only
+                throw std::invalid_argument("the volume of a sphere of radius " +
+                                            format_number(radius) +
+                                            " cut by the region cannot be integrated");
+            }
         }
     }
     return volume;
@@ -156,6 +165,13 @@ double sphere_box_volume(const Vec3& center, double radius, const Box& box) {
     const Vec3 nearest = center.cwiseMax(box.lo).cwiseMin(box.hi);
     if ((nearest - center).squaredNorm() >= radius * radius) {
         return 0.0;
+    }
+    // Entirely inside: the farthest corner of the box is within the radius (distances over
+    // the radius, so a radius beyond 10¹⁵⁴, whose square overflows, still decides).
+    const Vec3 far = (center - box.lo).cwiseAbs().cwiseMax((center - box.hi).cwiseAbs()) / radius;
+    if (far.squaredNorm() <= 1.0) {
+        const Vec3 side = box.hi - box.lo;
+        return side.x() * side.y() * side.z();
     }
     std::array<AxisCut, 3> cuts{};
     int clipped_axes = 0;

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <deque>
 #include <fstream>
 #include <sstream>
@@ -96,7 +97,14 @@ void render_png(const fs::path& povray, const RenderJob& job) {
         throw std::runtime_error("povray took longer than " +
                                  std::to_string(static_cast<int>(kTimeoutSeconds)) + " s");
     }
-    if (result.end != ChildEnd::exited || result.exit_code != 0) {
+    if (result.end == ChildEnd::signalled) {
+        throw std::runtime_error("povray was killed by signal " + std::to_string(result.signal) +
+                                 " (" + strsignal(result.signal) + "): " + reason(lines));
+    }
+    if (result.end == ChildEnd::stopped) {
+        throw std::runtime_error("povray was stopped before it finished");
+    }
+    if (result.exit_code != 0) {
         throw std::runtime_error("povray failed (exit " + std::to_string(result.exit_code) +
                                  "): " + reason(lines));
     }

@@ -259,16 +259,20 @@ void check_run(const ChildResult& run, const RunWatch& watch, const PourRequest&
     }
 }
 
+/// The LIGGGHTS result as messages name it: its file name only, since the work directory
+/// that holds it is removed before the message is read.
+constexpr const char* kResultName = "the LIGGGHTS result final.dump";
+
 /// The result's own velocities agree with the settled report: its translational kinetic
 /// energy per particle, m·v_rms²/2 over m·g·d, is below the settle threshold (the dump is
 /// written at the step of the last check, with every digit, so it is the ratio LIGGGHTS
 /// reported up to rounding). A result whose spheres still move was not settled.
-void check_at_rest(const Pack& raw, const PourParameters& p, const fs::path& dump) {
+void check_at_rest(const Pack& raw, const PourParameters& p) {
     const std::optional<double> rms = raw.metadata.get_number("velocity_rms");
     if (!rms) {
-        throw PourError(dump.string() +
-                        ": holds no velocities (vx vy vz), so it cannot show "
-                        "that the pour settled");
+        throw PourError(std::string(kResultName) +
+                        " holds no velocities (vx vy vz), so it "
+                        "cannot show that the pour settled");
     }
     const double d_metres = p.diameter() * kMetresPerUnit;
     const double ke_ratio = *rms * *rms / (2.0 * p.gravity * d_metres);
@@ -286,23 +290,31 @@ Pack read_final(const fs::path& dump, const PourParameters& p) {
     try {
         raw = read_pack_file(dump);
     } catch (const std::exception& e) {
-        throw PourError(std::string("cannot read the LIGGGHTS result: ") + e.what());
+        std::string reason = e.what();
+        for (std::size_t at = reason.find(dump.string()); at != std::string::npos;
+             at = reason.find(dump.string())) {
+            reason.replace(at, dump.string().size(), "final.dump");
+        }
+        throw PourError("cannot read the LIGGGHTS result: " + reason);
     }
     if (raw.particles.size() != p.count) {
-        throw PourError(dump.string() + ": holds " + std::to_string(raw.particles.size()) +
-                        " spheres, not " + std::to_string(p.count));
+        throw PourError(std::string(kResultName) + " holds " +
+                        std::to_string(raw.particles.size()) + " spheres, not " +
+                        std::to_string(p.count));
     }
-    check_at_rest(raw, p, dump);
+    check_at_rest(raw, p);
     std::sort(raw.particles.begin(), raw.particles.end(),
               [](const Particle& a, const Particle& b) { return a.id < b.id; });
     const double r = p.diameter() / 2.0;
     for (std::size_t i = 0; i < raw.particles.size(); ++i) {
         Particle& particle = raw.particles[i];
         if (particle.id != static_cast<std::int64_t>(i + 1)) {
-            throw PourError(dump.string() + ": particle ids are not 1.." + std::to_string(p.count));
+            throw PourError(std::string(kResultName) + ": particle ids are not 1.." +
+                            std::to_string(p.count));
         }
         if (std::abs(particle.radius - r) > 1e-12 * r) {
-            throw PourError(dump.string() + ": radius " + format_number(particle.radius) +
+            throw PourError(std::string(kResultName) + ": radius " +
+                            format_number(particle.radius) +
                             " differs from d/2 = " + format_number(r));
         }
         particle.radius = r;                // exactly the sizing rule's d/2

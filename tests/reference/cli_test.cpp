@@ -145,6 +145,19 @@ BOOST_AUTO_TEST_CASE(impossible_liggghts_results_are_refused_before_writing) {
                    std::string::npos);
         BOOST_TEST(!fs::exists(fake.out));
     }
+    {  // a truncated result: named by its file name, not the removed work directory's path
+        std::string text = settled_dump();
+        text.erase(text.rfind('\n', text.size() - 2) + 1);  // the last atom line
+        std::ofstream(dump) << text;
+        const ProgramRun run = fake.pour({"--quiet"});
+        BOOST_TEST(run.exit_code == 1);
+        BOOST_TEST(
+            first_line(run.stderr_text)
+                    .find("sgmp-reference: cannot read the LIGGGHTS result: final.dump:") == 0u,
+            run.stderr_text);
+        BOOST_TEST(first_line(run.stderr_text).find('/') == std::string::npos, run.stderr_text);
+        BOOST_TEST(!fs::exists(fake.out));
+    }
     {  // reported settled, but a sphere moves at 1000 m/s
         std::string text = settled_dump();
         const std::string first = " 0 0 0\n";

@@ -327,11 +327,26 @@ int run_pack(const Options& o) {
     check_out(o);
     // Progress once a run passes one second.
     cli::ProgressLine progress(false, std::chrono::seconds(5), std::chrono::seconds(1));
-    const Pack pack = make_pack(request, [&](std::size_t done, std::size_t total) {
+    const auto seconds_text = [&] {
+        return " (" + std::to_string(static_cast<long>(progress.seconds())) + " s)";
+    };
+    const auto dropped = [&](std::size_t done, std::size_t total) {
         progress.update("sgmp: " + std::to_string(done) + " / " + std::to_string(total) +
-                        " particles dropped (" +
-                        std::to_string(static_cast<long>(progress.seconds())) + " s)");
-    });
+                        " particles dropped" + seconds_text());
+    };
+    const auto relaxing = [&](const RelaxProgress& r) {
+        using Phase = RelaxProgress::Phase;
+        const std::string text =
+            r.phase == Phase::Soft
+                ? "relaxing: soft stage " + std::to_string(r.stage + 1) + " of " +
+                      std::to_string(r.stages) + ", " + std::to_string(r.steps) + " steps"
+            : r.phase == Phase::Clearing
+                ? "relaxing: clearing the overlaps after " + std::to_string(r.steps) + " steps"
+                : "settling as hard spheres: LP iteration " + std::to_string(r.settle_iteration) +
+                      ", trust region " + format_number(r.settle_trust) + " d";
+        progress.update("sgmp: " + text + seconds_text(), 1 + static_cast<int>(r.phase));
+    };
+    const Pack pack = make_pack(request, dropped, nullptr, relaxing);
     const double seconds = progress.seconds();
     progress.finish();
     if (pack.metadata.get("certified") == std::optional<std::string>("false") &&

@@ -1,6 +1,7 @@
 // The hard-sphere settling (hard_sphere_settle.hpp): closed-form cases, and relaxed packs
 // that end as certified equilibria (checked by the certificate, whose LP is independent of
 // the settling's: it sees only the final positions).
+#include <algorithm>
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -110,6 +111,35 @@ BOOST_AUTO_TEST_CASE(the_same_pack_settles_to_the_same_bytes) {
     for (std::size_t i = 0; i < a.particles.size(); ++i) {
         BOOST_TEST((a.particles[i].center == b.particles[i].center));
     }
+}
+
+BOOST_AUTO_TEST_CASE(progress_follows_every_phase_and_changes_nothing) {
+    PackRequest request;
+    request.count = 150;
+    request.arrangement = Arrangement::LooseRandom;
+    request.seed = 7;
+    request.relax.mode = RelaxMode::Frictionless;
+    std::vector<RelaxProgress> seen;
+    const Pack with =
+        make_pack(request, {}, nullptr, [&](const RelaxProgress& p) { seen.push_back(p); });
+    const Pack without = relaxed_pack(7);
+    for (std::size_t i = 0; i < with.particles.size(); ++i) {
+        BOOST_TEST((with.particles[i].center == without.particles[i].center));
+    }
+    BOOST_TEST_REQUIRE(!seen.empty());
+    // Phases in order (soft, clearing, settling), steps and LP iterations never go back,
+    // and the last call is the settling's last LP.
+    for (std::size_t k = 1; k < seen.size(); ++k) {
+        BOOST_TEST(static_cast<int>(seen[k].phase) >= static_cast<int>(seen[k - 1].phase));
+        BOOST_TEST(seen[k].steps >= seen[k - 1].steps);
+        BOOST_TEST(seen[k].settle_iteration >= seen[k - 1].settle_iteration);
+    }
+    BOOST_TEST((seen.back().phase == RelaxProgress::Phase::Settling));
+    BOOST_TEST(seen.back().settle_iteration ==
+               std::stoi(*with.metadata.get("relax_settle_iterations")));
+    BOOST_TEST(std::count_if(seen.begin(), seen.end(), [](const RelaxProgress& p) {
+                   return p.phase == RelaxProgress::Phase::Clearing;
+               }) == 1);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

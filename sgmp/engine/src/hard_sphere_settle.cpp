@@ -126,9 +126,15 @@ double violation(const ClpSimplex& model, const Step& st) {
     return std::isfinite(worst) ? worst : INFINITY;
 }
 
-/// Solves the step's LP with CLP, warm-started from `basis` when `warm`.
-void solve_step(ClpSimplex& model, const Step& st, const Basis& basis, bool warm,
+/// How an LP starts: from the last basis, from Δ = 0 by the primal simplex, or from the
+/// slack basis by the dual simplex (the last resort).
+enum class Start { Warm, ValuesPass, Slack };
+
+/// Solves the step's LP with CLP from `start`, falling back to the next start when CLP
+/// cannot use it.
+void solve_step(ClpSimplex& model, const Step& st, const Basis& basis, Start start,
                 SettleStats& stats) {
+    const bool warm = start == Start::Warm && basis.columns.size() == st.objective.size();
     CoinPackedMatrix matrix(false, st.row_index.data(), st.col_index.data(), st.element.data(),
                             static_cast<CoinBigIndex>(st.element.size()));
     // The triplets give the dimensions by their largest indices: spheres with no rows, last
@@ -138,7 +144,7 @@ void solve_step(ClpSimplex& model, const Step& st, const Basis& basis, bool warm
     const std::vector<double> row_lower(st.row_upper.size(), -COIN_DBL_MAX);
     model.loadProblem(matrix, st.col_lower.data(), st.col_upper.data(), st.objective.data(),
                       row_lower.data(), st.row_upper.data());
-    if (warm && basis.columns.size() == st.objective.size()) {
+    if (warm) {
         for (std::size_t k = 0; k < basis.columns.size(); ++k) {
             model.setColumnStatus(static_cast<int>(k), basis.columns[k]);
         }
@@ -152,16 +158,27 @@ void solve_step(ClpSimplex& model, const Step& st, const Basis& basis, bool warm
     model.setPrimalTolerance(1e-10);
     model.setDualTolerance(1e-10);
     const auto t0 = std::chrono::steady_clock::now();
-    model.dual();
+    if (warm || start == Start::Slack) {
+        model.dual();
+    } else {
+        // No basis to start from (the first LP): the primal simplex from the feasible point
+        // Δ = 0 (CLP's values pass) takes about 3,400 pivots at N = 1002, where the dual
+        // simplex from the slack basis took 10,800–86,800 (docs/relax-certified.md).
+        double* u = model.primalColumnSolution();
+        for (std::size_t k = 0; k < st.objective.size(); ++k) {
+            u[k] = std::clamp(0.0, st.col_lower[k], st.col_upper[k]);
+        }
+        model.primal(1);
+    }
     stats.lp_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     stats.lp_pivots += model.numberIterations();
     if (model.status() != 0 || model.secondaryStatus() != 0 ||
         violation(model, st) > kFeasibility) {
-        if (warm) {  // a warm start CLP could not use: solve afresh, from the slack basis
+        if (start != Start::Slack) {  // a start CLP could not use: solve afresh
             ClpSimplex fresh;
             fresh.setLogLevel(0);
-            solve_step(fresh, st, basis, false, stats);
+            solve_step(fresh, st, basis, warm ? Start::ValuesPass : Start::Slack, stats);
             model = fresh;
             return;
         }
@@ -261,7 +278,7 @@ SettleStats settle_hard_spheres(std::vector<Particle>& particles, const Containe
                 }
             }
         } else {
-            solve_step(model, st, basis, true, stats);
+            solve_step(model, st, basis, Start::Warm, stats);
             std::copy_n(model.primalColumnSolution(), kColumns * n, u.begin());
             save_basis(model, st, basis);
             stats.forces = lp_forces(model, st);
@@ -282,6 +299,9 @@ SettleStats settle_hard_spheres(std::vector<Particle>& particles, const Containe
             trust = std::min(2.0 * trust, options.trust_max);
         } else if (drop < kStallRate * trust) {
             trust /= 4.0;
+        }
+        if (options.progress) {
+            options.progress(stats.iterations, trust);
         }
         if (trust < options.trust_min) {
             stats.converged = true;

@@ -274,7 +274,8 @@ Pack make_start_pack(const PackRequest& request) {
     return pack;
 }
 
-Pack make_pack(const PackRequest& request, const ProgressCallback& progress, PackStats* stats) {
+Pack make_pack(const PackRequest& request, const ProgressCallback& progress, PackStats* stats,
+               const RelaxProgressCallback& relax_progress) {
     validate(request);
     const Container container;
     const Sizes sizes = sizes_of(request);
@@ -288,7 +289,7 @@ Pack make_pack(const PackRequest& request, const ProgressCallback& progress, Pac
     deposit(particles, request, container, 0.5 * sizes.largest, rng, progress, local);
     release_free_memory();  // the neighbour grid's, before the relaxation and the checks
     if (request.relax.mode != RelaxMode::None) {
-        local.relax = relax_pack(particles, container, request.relax, d);
+        local.relax = relax_pack(particles, container, request.relax, d, relax_progress);
         local.certificate =
             request.relax.mode == RelaxMode::Frictionless
                 ? certify_frictionless(particles, container, d, {}, local.relax.settle_forces)

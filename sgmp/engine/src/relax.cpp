@@ -330,8 +330,11 @@ struct StageBound {
 };
 
 /// One stiffness stage of FIRE from rest; `k` in m·g per length unit.
+/// Steps between two progress calls.
+constexpr long kProgressEvery = 1000;
+
 StageResult run_stage(State& s, const Container& box, double k, const RelaxParams& params,
-                      StageBound bound) {
+                      StageBound bound, const std::function<void(long)>& progress) {
     const double tolerance_squared = params.force_tolerance * params.force_tolerance;
     Fire fire(k);
     stop(s);
@@ -339,6 +342,9 @@ StageResult run_stage(State& s, const Container& box, double k, const RelaxParam
     while (sums.largest_squared > tolerance_squared && fire.steps < bound.steps &&
            fire.time < bound.time) {
         sums = fire.step(s, box, k, sums);
+        if (progress && fire.steps % kProgressEvery == 0) {
+            progress(fire.steps);
+        }
     }
     StageResult result;
     result.steps = fire.steps;
@@ -418,7 +424,8 @@ long clear_real_overlaps(State& s, const Container& box, double k, double shell,
 
 /// The soft relaxation of every stage; leaves the soft pack's positions in `particles`.
 void relax_soft(std::vector<Particle>& particles, const Container& container,
-                const RelaxParams& params, double diameter, RelaxStats& stats) {
+                const RelaxParams& params, double diameter, RelaxStats& stats,
+                const RelaxProgressCallback& progress) {
     State s = make_state(particles, diameter, params.shell);
     rebuild_neighbours(s);
     if (params.mode == RelaxMode::Frictional) {
@@ -439,7 +446,14 @@ void relax_soft(std::vector<Particle>& particles, const Container& container,
         } else {
             bound.steps = std::max(kMinStageSteps, std::lround(params.crossings * height / d_min));
         }
-        const StageResult r = run_stage(s, container, stiffness / diameter, params, bound);
+        std::function<void(long)> tick;
+        if (progress) {
+            tick = [&, stage](long steps) {
+                progress({RelaxProgress::Phase::Soft, stage, params.stages, stats.steps + steps, 0,
+                          0.0});
+            };
+        }
+        const StageResult r = run_stage(s, container, stiffness / diameter, params, bound, tick);
         stats.steps += r.steps;
         stats.stages_converged += r.converged ? 1 : 0;
         stats.force_max = r.force_max;
@@ -451,6 +465,10 @@ void relax_soft(std::vector<Particle>& particles, const Container& container,
     if (stats.stages_converged < params.stages) {
         stats.force_max =
             quench(s, container, stiffness / params.stiffness_factor / diameter, kQuenchSteps);
+    }
+    if (progress) {
+        progress({RelaxProgress::Phase::Clearing, params.stages - 1, params.stages, stats.steps, 0,
+                  0.0});
     }
     stats.steps += clear_real_overlaps(
         s, container, stiffness / params.stiffness_factor / diameter, params.shell,
@@ -465,19 +483,27 @@ void relax_soft(std::vector<Particle>& particles, const Container& container,
 }  // namespace
 
 RelaxStats relax_pack(std::vector<Particle>& particles, const Container& container,
-                      const RelaxParams& params, double diameter) {
+                      const RelaxParams& params, double diameter,
+                      const RelaxProgressCallback& progress) {
     RelaxStats stats;
     if (params.mode == RelaxMode::None || particles.empty()) {
         return stats;
     }
-    relax_soft(particles, container, params, diameter, stats);
+    relax_soft(particles, container, params, diameter, stats, progress);
     const FinishStats finish =
         finish_as_hard_spheres(particles, container, kFinishToleranceOverD * diameter);
     stats.finish_lifted = static_cast<long long>(finish.lifted);
     stats.finish_move_max = finish.move_max / diameter;
     stats.finish_move_mean = finish.move_sum / static_cast<double>(particles.size()) / diameter;
     if (params.mode == RelaxMode::Frictionless) {
-        const SettleStats settle = settle_hard_spheres(particles, container, diameter);
+        SettleOptions options;
+        if (progress) {
+            options.progress = [&](int iteration, double trust) {
+                progress({RelaxProgress::Phase::Settling, params.stages - 1, params.stages,
+                          stats.steps, iteration, trust});
+            };
+        }
+        const SettleStats settle = settle_hard_spheres(particles, container, diameter, options);
         stats.settle_iterations = settle.iterations;
         stats.settle_converged = settle.converged;
         stats.settle_move_max = settle.move_max;

@@ -35,6 +35,7 @@
 /// duals y ≤ 0 on active ≤ rows) and the reduced costs z of the wall-held columns are the
 /// contact forces, in m·g (the objective is in m·g per unit of u).
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "sgmp/engine/equilibrium_certificate.hpp"
@@ -48,6 +49,8 @@ struct SettleOptions {
     double trust_max = 0.2;     ///< largest s, over d
     double trust_min = 1e-9;    ///< the settling ends when s is below this, over d
     int max_iterations = 5000;
+    /// Called after every LP with the iteration count and the trust region (over d).
+    std::function<void(int, double)> progress;
 };
 
 struct SettleStats {

@@ -69,9 +69,10 @@ void validate(const PackRequest& request);
 /// the statistics; with a relaxation, its parameters and statistics follow (`relax_*`),
 /// then its equilibrium certificate (`certified`, `certificate`, `certificate_*`:
 /// equilibrium_certificate.hpp; frictional at the relaxation's own μ). Throws
-/// ParameterError (see `validate`) for bad requests.
+/// ParameterError (see `validate`) for bad requests. `relax_progress` follows the
+/// relaxation (relax.hpp); neither callback changes the pack.
 Pack make_pack(const PackRequest& request, const ProgressCallback& progress = {},
-               PackStats* stats = nullptr);
+               PackStats* stats = nullptr, const RelaxProgressCallback& relax_progress = {});
 
 /// The starting arrangement alone as a pack (ids, colours, positions before packing),
 /// with the same provenance keys minus the protocol's.

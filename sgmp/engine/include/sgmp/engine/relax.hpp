@@ -62,6 +62,7 @@
 ///
 /// Everything runs in a fixed order on one thread, so the same pack gives the same bytes.
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "sgmp/engine/equilibrium_certificate.hpp"
@@ -89,11 +90,25 @@ struct RelaxStats {
     std::vector<ContactForce> settle_forces;
 };
 
+/// Where a running relaxation is, for progress lines (it changes no result).
+struct RelaxProgress {
+    enum class Phase { Soft, Clearing, Settling };
+    Phase phase = Phase::Soft;
+    int stage = 0;              ///< soft stage, from 0
+    int stages = 0;             ///< soft stages in all
+    long long steps = 0;        ///< minimiser steps so far, over all soft stages
+    int settle_iteration = 0;   ///< LP iterations of the settling so far
+    double settle_trust = 0.0;  ///< its trust region, over d
+};
+using RelaxProgressCallback = std::function<void(const RelaxProgress&)>;
+
 /// Relaxes `particles` (of scale diameter `diameter`) in `container` as described above and
 /// finishes them as hard spheres: afterwards no pair overlaps and every sphere is inside the
 /// container. Does nothing for `RelaxMode::None`. Particle order, ids, radii and colours are
-/// kept.
+/// kept. `progress`, when given, is called every 1000 minimiser steps, as the clearing
+/// starts and after every LP of the settling.
 RelaxStats relax_pack(std::vector<Particle>& particles, const Container& container,
-                      const RelaxParams& params, double diameter);
+                      const RelaxParams& params, double diameter,
+                      const RelaxProgressCallback& progress = {});
 
 }  // namespace sgmp::engine

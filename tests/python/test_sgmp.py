@@ -218,3 +218,30 @@ def test_pack_refuses_impossible_particles(positions, radii, bins, message):
     # They used to be accepted and written, so the project's own readers refused the file.
     with pytest.raises(ValueError, match=message.replace("(", r"\(").replace(")", r"\)")):
         sgmp.Pack(np.array(positions), np.array(radii), bins=bins)
+
+
+def test_ctrl_c_interrupts_a_long_pack_at_once():
+    """SIGINT during sgmp.pack raises KeyboardInterrupt at the engine's next progress call
+    (every 1000 particles dropped, every 1000 relaxation steps, after every LP of the
+    settling), not when the call ends: a certified relaxation of 3000 spheres takes
+    minutes. One LP cannot be interrupted; at N = 3000 the first takes a few seconds (6.1 s
+    to stop was measured beside another job), hence the 20 s bound."""
+    import signal
+    import time
+    script = ("import sgmp, sys\n"
+              "print('started', flush=True)\n"
+              "try:\n"
+              "    sgmp.pack(count=3000, arrangement='loose-random', seed=1, relax='frictionless')\n"
+              "    print('finished', flush=True)\n"
+              "except KeyboardInterrupt:\n"
+              "    print('interrupted', flush=True)\n")
+    child = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True,
+                             env=dict(os.environ))
+    assert child.stdout.readline().strip() == "started"
+    time.sleep(1.5)
+    sent = time.monotonic()
+    child.send_signal(signal.SIGINT)
+    out, _ = child.communicate(timeout=60)
+    waited = time.monotonic() - sent
+    assert out.strip() == "interrupted"
+    assert waited < 20.0, f"took {waited:.1f} s to stop"

@@ -224,8 +224,19 @@ void bind_making(py::module_& m) {
         [](const py::object& count, const py::object& arrangement, const py::object& seed,
            const py::kwargs& options) {
             const PackRequest request = request_of(count, arrangement, seed, options);
+            // Ctrl-C stops the engine at its next progress call (a KeyboardInterrupt now,
+            // not when the call ends): the callbacks take the interpreter's lock only to
+            // look at its signals.
+            const auto check_signals = [] {
+                py::gil_scoped_acquire locked;
+                if (PyErr_CheckSignals() != 0) {
+                    throw py::error_already_set();
+                }
+            };
             py::gil_scoped_release unlocked;
-            return engine::make_pack(request);
+            return engine::make_pack(
+                request, [&](std::size_t, std::size_t) { check_signals(); }, nullptr,
+                [&](const engine::RelaxProgress&) { check_signals(); });
         },
         py::arg("count"), py::arg("arrangement"), py::arg("seed") = py::none(),
         "Packs `count` spheres from `arrangement` (single-column, small-dense, large-dense, "

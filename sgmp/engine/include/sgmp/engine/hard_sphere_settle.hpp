@@ -26,9 +26,10 @@
 /// full s vertically (a collective fall), divided by 4 when a step lowers the energy by
 /// less than 10⁻⁴·s m·g (the energy's slope along the best step, which vanishes at an
 /// equilibrium); the settling ends when s falls below
-/// `trust_min`, or after `max_iterations`. The LP is COIN-OR CLP's dual simplex, each
-/// iteration warm-started from the previous basis (pairs keyed by their sphere indices),
-/// on one thread in a fixed order: the same pack gives the same bytes.
+/// `trust_min`, or after `max_iterations`. The LP is COIN-OR CLP's: the first by the primal
+/// simplex from the feasible point Δ = 0 (a values pass), each later one by the dual simplex
+/// warm-started from the previous basis (pairs keyed by their sphere indices), on one
+/// thread in a fixed order: the same pack gives the same bytes.
 ///
 /// Multipliers: with u at an optimum strictly inside its trust box, the KKT conditions
 /// read wᵢ·ŷ = Σⱼ λᵢⱼ·(−nᵢⱼ) + Σ_walls z·n_wall: the rows' multipliers λ = −y (CLP's row

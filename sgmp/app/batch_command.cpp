@@ -33,6 +33,7 @@
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/cpu_budget.hpp"
 #include "sgmp/pack/input_error.hpp"
+#include "sgmp/pack/output_lock.hpp"
 #include "sgmp/pack/pack_file.hpp"
 
 namespace sgmp::app {
@@ -179,6 +180,26 @@ void check_pack_directories(const Plan& plan, const OutPattern& pattern,
     }
 }
 
+/// A resume's clean-up: the temporaries that killed writers on this host left beside the
+/// summary and in the packs' directories (each directory once).
+void remove_stale_temporaries_of(const Settings& s, const Plan& plan, const OutPattern* pattern,
+                                 const std::vector<std::size_t>& jobs) {
+    const auto directory_of = [](const fs::path& file) {
+        return file.parent_path().empty() ? fs::path(".") : file.parent_path();
+    };
+    std::set<fs::path> directories{directory_of(s.summary)};
+    for (std::size_t i = 0; pattern != nullptr && i < jobs.size(); ++i) {
+        directories.insert(directory_of(pattern->expand(plan, jobs[i])));
+    }
+    std::size_t removed = 0;
+    for (const fs::path& directory : directories) {
+        removed += remove_stale_temporaries(directory);
+    }
+    if (removed > 0) {
+        std::fprintf(stderr, "sgmp batch: removed %zu temporaries of killed runs\n", removed);
+    }
+}
+
 class ProgressLine {
   public:
     ProgressLine(std::size_t total, const World& world) : total_(total), world_(world) {}
@@ -217,6 +238,24 @@ int run_sweep(const Settings& s, const World& world) {
     } catch (const std::runtime_error& e) {
         throw FileProblem{std::string("--summary ") + e.what()};
     }
+    // One batch writes a summary at a time: a second batch naming it is refused now, not
+    // left to lose its rows (or the first's) to the last rename. Only rank 0 writes it.
+    std::optional<OutputLock> summary_lock;
+    std::string lock_problem;
+    if (world.rank() == 0) {
+        try {
+            summary_lock.emplace(s.summary);
+        } catch (const std::runtime_error& e) {
+            lock_problem = std::string("--summary ") + e.what() +
+                           "; give each batch its own --summary and join them with --merge";
+        }
+    }
+    if (!world.all(lock_problem.empty())) {
+        if (world.rank() == 0) {
+            std::cerr << "sgmp: " << printable(lock_problem) << "\n";
+        }
+        world.abort(1);
+    }
     // Each job keeps its summary row (about 0.9 kB, measured at 10⁶ jobs: 884 MB) until the
     // table is written, so one batch runs at most kMaxJobsPerBatch of them.
     const std::uint64_t total = plan.job_count();
@@ -239,6 +278,9 @@ int run_sweep(const Settings& s, const World& world) {
     }
     if (pattern) {
         check_pack_directories(plan, *pattern, shard_jobs);
+    }
+    if (s.skip_existing && world.rank() == 0) {
+        remove_stale_temporaries_of(s, plan, pattern ? &*pattern : nullptr, shard_jobs);
     }
     if (!world.all(true)) {
         world.abort(1);
@@ -269,7 +311,17 @@ int run_sweep(const Settings& s, const World& world) {
         }
         const JobResult result = run_job(plan, job, options, path);
         if (!path.empty()) {
-            write_pack_file(path, result.pack, s.force);
+            try {
+                write_pack_file(path, result.pack, s.force);
+            } catch (const FileExists&) {
+                if (!s.skip_existing) {
+                    throw;
+                }
+                // Another batch made this pack meanwhile: it is kept, as if it had been
+                // there at the start.
+                ++reused;
+                return schema().line(reused_row(plan, job, read_pack_file(path), options, path));
+            }
         }
         return schema().line(result.row);
     };

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <chrono>
 #include <filesystem>
@@ -11,6 +12,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "sgmp/batch/summary.hpp"
 #include "sgmp/compare/summary_columns.hpp"
@@ -306,4 +308,131 @@ BOOST_AUTO_TEST_CASE(mpi_ranks_equal_the_serial_run) {
     BOOST_TEST(r.out.find("on 2 rank(s)") != std::string::npos, r.out);
     expect_same_packs(s, "serial", "mpi");
     BOOST_TEST(untimed(s.path("mpi/summary.csv")) == untimed(s.path("serial/summary.csv")));
+}
+
+namespace {
+
+std::string host_name() {
+    char host[256] = {};
+    ::gethostname(host, sizeof host - 1);
+    return host;
+}
+
+/// The id of a process that has ended (started and waited for).
+pid_t ended_process() {
+    const pid_t child = ::fork();
+    if (child == 0) {
+        ::_exit(0);
+    }
+    ::waitpid(child, nullptr, 0);
+    return child;
+}
+
+}  // namespace
+
+// Once, a second batch naming the same summary overwrote the first's rows when it finished
+// last; now it is refused at its start while the first runs (and the first is untouched).
+BOOST_AUTO_TEST_CASE(a_second_batch_on_one_summary_is_refused_while_the_first_runs) {
+    Scratch s;
+    fs::create_directories(s.path("io"));
+    const pid_t first = ::fork();
+    if (first == 0) {
+        ::chdir(s.path("io").c_str());
+        ::execl("/bin/sh", "sh", "-c",
+                ("exec '" + std::string(SGMP_EXECUTABLE) +
+                 "' batch --seeds 1-400 --count 400 --arrangement loose-random --out-pattern "
+                 "'a/s{seed}.xyz' --threads 1 "
+                 "--progress-seconds 0 >/dev/null 2>&1")
+                    .c_str(),
+                static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    for (int i = 0; i < 400 && !fs::exists(s.path("io/a/s2.xyz")); ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(25));
+    }
+    BOOST_REQUIRE(fs::exists(s.path("io/.summary.csv.lock")));
+    const Run second =
+        s.batch("--seeds 1-3 --count 60 --arrangement loose-random --out-pattern 'b/s{seed}.xyz'");
+    BOOST_TEST(second.status == 1);
+    BOOST_TEST(second.err.find("sgmp: --summary summary.csv: is being written by another "
+                               "process (" +
+                               host_name() + " pid " + std::to_string(first) + ")") == 0,
+               second.err);
+    BOOST_TEST(std::count(second.err.begin(), second.err.end(), '\n') == 1);
+    BOOST_TEST(!fs::exists(s.path("io/b")));
+    ::kill(first, SIGTERM);
+    int raw = 0;
+    ::waitpid(first, &raw, 0);
+    BOOST_TEST((WIFEXITED(raw) ? WEXITSTATUS(raw) : -1) == 130);
+    BOOST_TEST(!fs::exists(s.path("io/.summary.csv.lock")));  // released with its holder
+    BOOST_TEST(
+        s.batch("--seeds 1-3 --count 60 --arrangement loose-random --out-pattern 'b/s{seed}.xyz'")
+            .status == 0);
+    BOOST_TEST(!fs::exists(s.path("io/.summary.csv.lock")));
+}
+
+// Once, of two --skip-existing batches making the same packs side by side, one failed with
+// "exists; pass --force" when the other published a pack first; now that pack is reused.
+BOOST_AUTO_TEST_CASE(concurrent_resumes_of_the_same_packs_both_finish) {
+    Scratch s;
+    const std::string sweep =
+        "--seeds 1-40 --count 60 --arrangement loose-random --out-pattern 'packs/s{seed}.xyz' "
+        "--threads 1 "
+        "--progress-seconds 0 --skip-existing";
+    const Run both = sgmp::testing::run_command(
+        "cd '" + s.path("io").string() + "' && { '" + SGMP_EXECUTABLE + "' batch " + sweep +
+            " --summary a.csv 2>a.err & '" + SGMP_EXECUTABLE + "' batch " + sweep +
+            " --summary b.csv 2>b.err & wait %1; echo $? >a.status; wait %2; echo $? >b.status; }",
+        s.dir);
+    BOOST_REQUIRE(both.status == 0);
+    BOOST_TEST(sgmp::testing::read_bytes(s.path("io/a.status")) == "0\n",
+               sgmp::testing::read_bytes(s.path("io/a.err")));
+    BOOST_TEST(sgmp::testing::read_bytes(s.path("io/b.status")) == "0\n",
+               sgmp::testing::read_bytes(s.path("io/b.err")));
+    BOOST_TEST(untimed(s.path("io/a.csv")) == untimed(s.path("io/b.csv")));
+    BOOST_TEST(untimed(s.path("io/a.csv")).size() == 40u);
+    for (const std::string& name : s.files()) {
+        BOOST_TEST(name.find(".tmp-") == std::string::npos, name);
+    }
+}
+
+// Once, a temporary that a SIGKILLed batch left was never removed by its resume.
+BOOST_AUTO_TEST_CASE(a_resume_removes_the_temporaries_of_killed_writers_only) {
+    Scratch s;
+    fs::create_directories(s.path("io/packs"));
+    const std::string host = host_name();
+    const std::string dead = std::to_string(ended_process());
+    const std::string alive = std::to_string(::getpid());
+    const auto make = [&](const std::string& name, bool directory) {
+        if (directory) {
+            fs::create_directories(s.path("io/packs") / name / "inner");
+        } else {
+            std::ofstream(s.path("io/packs") / name) << "half a pack";
+        }
+    };
+    make(".s1.xyz.tmp-" + dead + "." + host, false);       // killed here: removed
+    make(".s2.xyz.tmp-" + dead + "." + host, true);        // a killed directory write: removed
+    make(".s3.xyz.tmp-" + alive + "." + host, false);      // still being written: kept
+    make(".s4.xyz.tmp-" + dead + ".another-node", false);  // another host's: kept
+    std::ofstream(s.path("io/.summary.csv.tmp-" + dead + "." + host)) << "rows";  // removed
+    const Run resumed = s.batch(
+        "--seeds 1-4 --count 60 --arrangement loose-random --out-pattern 'packs/s{seed}.xyz' "
+        "--skip-existing "
+        "--progress-seconds 0");
+    BOOST_REQUIRE(resumed.status == 0);
+    BOOST_TEST(
+        resumed.err.find("sgmp batch: removed 3 temporaries of killed runs") != std::string::npos,
+        resumed.err);
+    std::vector<std::string> left;
+    for (const auto& entry : fs::recursive_directory_iterator(s.path("io"))) {
+        if (entry.path().filename().string().find(".tmp-") != std::string::npos) {
+            left.push_back(entry.path().filename().string());
+        }
+    }
+    std::sort(left.begin(), left.end());
+    BOOST_TEST(left == (std::vector<std::string>{".s3.xyz.tmp-" + alive + "." + host,
+                                                 ".s4.xyz.tmp-" + dead + ".another-node"}));
+    for (int seed = 1; seed <= 4; ++seed) {
+        BOOST_TEST(fs::exists(s.path("io/packs/s" + std::to_string(seed) + ".xyz")));
+    }
 }

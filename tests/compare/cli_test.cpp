@@ -289,7 +289,7 @@ BOOST_AUTO_TEST_CASE(sigint_removes_the_temporary_directory_and_exits_130) {
     const std::string command =
         "cd '" + scratch().string() + "' && { '" + kTool.string() +
         "' measure big1.xyz big2.xyz big3.xyz --out big 2>stderr.txt & pid=$!; "
-        "for i in $(seq 1000); do [ -d .big.tmp-$pid ] && break; sleep 0.01; done; "
+        "for i in $(seq 1000); do [ -d .big.tmp-$pid.\"$(hostname)\" ] && break; sleep 0.01; done; "
         "kill -INT $pid; wait $pid; echo $? >status.txt; }";
     BOOST_TEST(std::system(command.c_str()) == 0);
     BOOST_TEST(sgmp::testing::read_bytes(scratch() / "status.txt") == "130\n");

@@ -1,18 +1,22 @@
 #include "sgmp/pack/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <boost/iostreams/categories.hpp>
 #include <boost/iostreams/filter/gzip.hpp>
 #include <boost/iostreams/filtering_stream.hpp>
 #include <cerrno>
+#include <charconv>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <ios>
 #include <iterator>
+#include <limits>
 #include <stdexcept>
+#include <string_view>
 #include <system_error>
 
 #include "sgmp/pack/interrupt.hpp"
@@ -31,10 +35,41 @@ std::runtime_error path_error(const fs::path& path, const std::string& reason) {
     return std::runtime_error(path.string() + ": " + reason);
 }
 
+/// This host's name (the node on a cluster), or "localhost" when it cannot be read.
+const std::string& host_name() {
+    static const std::string name = [] {
+        char buffer[256] = {};
+        if (::gethostname(buffer, sizeof buffer - 1) != 0 || buffer[0] == '\0') {
+            return std::string("localhost");
+        }
+        return std::string(buffer);
+    }();
+    return name;
+}
+
 fs::path sibling_temporary(const fs::path& target, const char* kind) {
     const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-    return parent /
-           ("." + target.filename().string() + "." + kind + "-" + std::to_string(::getpid()));
+    return parent / ("." + target.filename().string() + "." + kind + "-" +
+                     std::to_string(::getpid()) + "." + host_name());
+}
+
+/// The writer's process id of a temporary named `.NAME.tmp-PID.HOST` by this host, or 0
+/// for any other name (another host's temporary, or not a temporary).
+pid_t local_writer_of(const std::string& name) {
+    constexpr std::string_view marker = ".tmp-";
+    const auto at = name.rfind(marker);
+    if (name.empty() || name.front() != '.' || at == std::string::npos || at == 0) {
+        return 0;
+    }
+    const std::string_view rest = std::string_view(name).substr(at + marker.size());
+    long long pid = 0;
+    const auto [end, error] = std::from_chars(rest.data(), rest.data() + rest.size(), pid);
+    if (error != std::errc() || pid <= 0 || pid > std::numeric_limits<pid_t>::max() ||
+        std::string_view(end, static_cast<std::size_t>(rest.data() + rest.size() - end)) !=
+            "." + host_name()) {
+        return 0;
+    }
+    return static_cast<pid_t>(pid);
 }
 
 bool ends_with_gz(const fs::path& path) {
@@ -101,13 +136,32 @@ void move_into_place(const fs::path& from, const fs::path& to, bool overwrite) {
     }
     if (::link(from.c_str(), to.c_str()) != 0) {
         const int code = errno;
-        throw path_error(to, code == EEXIST ? "exists; pass --force to replace it"
-                                            : std::string("cannot create: ") + std::strerror(code));
+        if (code == EEXIST) {
+            throw FileExists(to);
+        }
+        throw path_error(to, std::string("cannot create: ") + std::strerror(code));
     }
     fs::remove(from);
 }
 
 }  // namespace
+
+FileExists::FileExists(const fs::path& path)
+    : std::runtime_error(path.string() + ": exists; pass --force to replace it") {}
+
+std::size_t remove_stale_temporaries(const fs::path& directory) {
+    std::size_t removed = 0;
+    std::error_code error;
+    for (fs::directory_iterator entry(directory, error), end; !error && entry != end;
+         entry.increment(error)) {
+        const pid_t writer = local_writer_of(entry->path().filename().string());
+        if (writer > 0 && ::kill(writer, 0) != 0 && errno == ESRCH) {
+            std::error_code ignored;
+            removed += fs::remove_all(entry->path(), ignored) > 0 ? 1 : 0;
+        }
+    }
+    return removed;
+}
 
 void check_writable(const fs::path& target, bool overwrite) {
     if (target.empty() || target.filename().empty()) {
@@ -115,7 +169,7 @@ void check_writable(const fs::path& target, bool overwrite) {
     }
     std::error_code error;
     if (!overwrite && fs::exists(target, error)) {
-        throw path_error(target, "exists; pass --force to replace it");
+        throw FileExists(target);
     }
     const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
     fs::create_directories(parent, error);
@@ -202,7 +256,7 @@ void write_directory_atomically(const fs::path& target, bool overwrite,
         produce(temporary);
         if (fs::exists(target)) {
             if (!overwrite) {
-                throw path_error(target, "exists; pass --force to replace it");
+                throw FileExists(target);
             }
             const fs::path old = sibling_temporary(target, "old");
             fs::remove_all(old, ignored);

@@ -2,16 +2,26 @@
 /// @file atomic_file.hpp
 /// All-or-nothing outputs: content goes to a temporary beside the target and is renamed
 /// into place only when complete, so a crash or error never leaves a half-written file.
+/// A temporary is named `.NAME.tmp-PID.HOST` (the writer's process and host), so a later
+/// run can tell the leftovers of a killed writer from a live one's work.
 
 #include <filesystem>
 #include <functional>
 #include <memory>
 #include <ostream>
+#include <stdexcept>
 #include <string>
 
 #include "sgmp/pack/interrupt.hpp"
 
 namespace sgmp {
+
+/// The target of a write exists and may not be replaced (no overwrite): "<path>: exists;
+/// pass --force to replace it". A std::runtime_error like every other refusal here.
+class FileExists : public std::runtime_error {
+  public:
+    explicit FileExists(const std::filesystem::path& path);
+};
 
 /// Fails unless `target` can be written: its parent directory exists (or can be created)
 /// and, without `overwrite`, the target does not exist. Throws std::runtime_error
@@ -20,9 +30,16 @@ void check_writable(const std::filesystem::path& target, bool overwrite);
 
 /// Writes a file atomically: `produce` writes to a stream on a temporary file in the
 /// same directory, which is flushed and renamed to `target`. The temporary is removed if
-/// `produce` throws. Content is gzip-compressed when `target` ends in ".gz".
+/// `produce` throws. Content is gzip-compressed when `target` ends in ".gz". Without
+/// `overwrite`, a target that appeared while `produce` ran is kept and FileExists thrown.
 void write_file_atomically(const std::filesystem::path& target, bool overwrite,
                            const std::function<void(std::ostream&)>& produce);
+
+/// Removes the temporaries (files or directories `.NAME.tmp-PID.HOST`) in `directory`
+/// that writers on this host left behind: their process no longer runs (a SIGKILL, a
+/// power cut). Temporaries of running processes and of other hosts are kept. Returns how
+/// many were removed; errors are ignored (a leftover costs only space).
+std::size_t remove_stale_temporaries(const std::filesystem::path& directory);
 
 /// Writes `text` to `path`, replacing it: for files inside a directory that is itself
 /// being built atomically (write_directory_atomically) or a scratch directory. Throws

@@ -2,7 +2,7 @@
 /// @file interrupt.hpp
 /// Ctrl-C (SIGINT) and SIGTERM for the command-line tools: a program's temporaries are
 /// removed and it exits with status 130, so an interrupted command leaves no
-/// `.NAME.tmp-PID` file or directory behind.
+/// `.NAME.tmp-PID.HOST` file or directory behind.
 ///
 /// The signal handler only writes the signal's number to a pipe; a watcher thread reads
 /// it and does the work outside signal context. Child processes get the default

@@ -43,9 +43,11 @@ void PourParameters::validate() const {
             timestep_fraction, "in (0, 0.5]");
     require(settle_threshold > 0.0, "settle_threshold", settle_threshold, "positive");
     require(check_time > 0.0, "check_time", check_time, "positive");
-    require(max_time > check_time, "max_time", max_time, "longer than check_time");
+    require(max_time > check_time, "max_time", max_time,
+            "longer than --check-time " + format_number(check_time));
     require(max_time / check_time <= 1e6, "max_time", max_time,
-            "at most 10^6 settling checks (max_time / check_time)");
+            "at most 10^6 settling checks (--max-time / --check-time " + format_number(check_time) +
+                ")");
     require(cloud_fraction > 0.0 && cloud_fraction <= 0.35, "cloud_fraction", cloud_fraction,
             "in (0, 0.35] (random insertion jams above)");
     require(start_jitter >= 0.0 && start_jitter <= 0.5, "start_jitter", start_jitter,

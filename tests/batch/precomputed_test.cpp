@@ -158,4 +158,16 @@ BOOST_AUTO_TEST_CASE(batch_rows_without_metrics_or_packs_are_refused) {
                           header + "0,10,1,0.1,0.1,0.5,1,2,3,4,5,6,0,0,0,0.7,,\n", "s.csv"),
                       sgmp::InputError);  // made with --no-packs
     BOOST_CHECK_THROW(sgmp::compare::summaries_from_batch("a,b\n1,2\n", "s.csv"), sgmp::InputError);
+    // Counts that are no particle count (the first was a fuzz finding: its cast to size_t
+    // was undefined behaviour).
+    for (const char* count : {"66666666666666666660", "1e26", "0", "-3", "10.5", "nan"}) {
+        const std::string row =
+            std::string("0,") + count + ",1,0.1,0.1,0.5,1,2,3,4,5,6,0,0,0,0.7,,p.xyz\n";
+        try {
+            (void)sgmp::compare::summaries_from_batch(header + row, "s.csv");
+            BOOST_ERROR("count " << count << " was accepted");
+        } catch (const sgmp::InputError& e) {
+            BOOST_TEST(std::string(e.what()).find("s.csv:2: count ") == 0, e.what());
+        }
+    }
 }

@@ -66,23 +66,4 @@ const SummaryColumn* summary_column_of(const std::string& metric) {
     return nullptr;
 }
 
-std::vector<std::string> summary_fields(const Pack& pack, bool voronoi) {
-    MeasureOptions options;
-    options.voronoi = voronoi;
-    options.gr_range = kSummaryGrRange;
-    const Measurement m = measure(pack, options);
-    std::vector<std::string> fields;
-    for (const SummaryColumn& c : summary_columns()) {
-        const std::optional<double> v = c.value(m, c.tolerance);
-        if (!v) {
-            fields.emplace_back();
-        } else if (c.integer) {
-            fields.push_back(std::to_string(std::llround(*v)));
-        } else {
-            fields.push_back(format_number(*v));
-        }
-    }
-    return fields;
-}
-
 }  // namespace sgmp::compare

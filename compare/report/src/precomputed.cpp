@@ -8,6 +8,7 @@
 #include "sgmp/compare/summary_columns.hpp"
 #include "sgmp/pack/csv_fields.hpp"
 #include "sgmp/pack/input_error.hpp"
+#include "sgmp/pack/metadata.hpp"
 
 namespace sgmp::compare {
 namespace {
@@ -66,6 +67,18 @@ double number_at(const nlohmann::ordered_json& j, const std::string& key,
         throw InputError(source, 0, "has no number '" + key + "'");
     }
     return j[key].get<double>();
+}
+
+/// A recorded particle count: a whole number in [1, 2⁵³] (beyond, a double no longer holds
+/// every whole number, and the cast to size_t would be undefined).
+std::size_t count_of(double value, const std::string& source, std::size_t line) {
+    constexpr double kLargest = 9007199254740992.0;  // 2⁵³
+    if (!(value >= 1.0 && value <= kLargest) || value != std::floor(value)) {
+        throw InputError(source, line,
+                         "count " + format_number(value) +
+                             " must be a whole number of particles from 1 to 2^53");
+    }
+    return static_cast<std::size_t>(value);
 }
 
 /// The array of numbers at j[key][name], named in the error when it is missing or is not
@@ -129,7 +142,7 @@ PackSummary summary_from_measure(const std::string& source, const nlohmann::orde
     for (const auto& [key, value] : metadata.items()) {
         s.provenance.emplace_back(key, value.is_string() ? value.get<std::string>() : value.dump());
     }
-    s.count = static_cast<std::size_t>(number_at(j, "count", source));
+    s.count = count_of(number_at(j, "count", source), source, 0);
     s.diameter = number_at(j, "diameter", source);
     for (const auto& rule : metric_rules()) {
         if (rule.kind == MetricKind::Scalar) {
@@ -205,7 +218,7 @@ std::vector<std::pair<std::string, PackSummary>> summaries_from_batch(std::strin
             }
             s.provenance.emplace_back(header[c], fields[c]);
         }
-        s.count = static_cast<std::size_t>(number("count"));
+        s.count = count_of(number("count"), source, n + 1);
         s.diameter = kUnknown;
         for (const auto& rule : metric_rules()) {
             if (rule.kind != MetricKind::Scalar) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "sgmp/compare/coordination_tolerances.hpp"
 #include "sgmp/compare/local_structure.hpp"
 #include "sgmp/compare/mixing_profile.hpp"
 #include "sgmp/compare/overlaps.hpp"
@@ -16,10 +17,6 @@
 #include "sgmp/pack/pack.hpp"
 
 namespace sgmp::compare {
-
-/// Gap tolerances δ (units of d) at which coordination is reported, with their JSON names.
-const std::vector<double>& coordination_tolerances();
-const std::vector<std::string>& coordination_tolerance_names();  // "0", "1e-6", ...
 
 struct MeasureOptions {
     std::optional<Box> region;    // default: the control volume

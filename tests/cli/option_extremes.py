@@ -62,8 +62,8 @@ def bound_values(kind, text):
 
 
 class Case:
-    def __init__(self, tool, base, option, value, six, work):
-        self.tool, self.base, self.option, self.value = tool, base, option, value
+    def __init__(self, base, option, value, six, work):
+        self.base, self.option, self.value = base, option, value
         self.six, self.work = six, work
 
     def argv(self):
@@ -113,7 +113,8 @@ def main():
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     quick = "--quick" in sys.argv
     if len(args) != 4:
-        print(__doc__.strip().splitlines()[-2], file=sys.stderr)
+        print("option_extremes: usage: option_extremes.py SGMP SGMP_COMPARE SGMP_REFERENCE "
+              "WORKDIR [--quick]", file=sys.stderr)
         return 2
     sgmp, compare, reference, work = (os.path.abspath(a) for a in args)
     work = os.path.abspath(work)
@@ -151,12 +152,11 @@ def main():
         "sgmp-reference settle": [reference, "settle", pack, "--friction", "0.5", "--out",
                                   out + ".xyz", "--force", "--liggghts", "/bin/true"],
     }
-    help_of = {"sgmp render": [sgmp, "render"]}
     cases = []
     pack_numeric = {name: (kind, text) for name, kind, _, text in options_of([sgmp, "pack"])}
     for label, base in commands.items():
         program = label.split()[0]
-        found = options_of(help_of.get(label, base[:2]))
+        found = options_of(base[:2])
         if label == "sgmp batch":
             listed = subprocess.run(base[:2] + ["--help"], capture_output=True,
                                     text=True).stdout
@@ -171,7 +171,7 @@ def main():
                 directory = os.path.join(work, f"run{len(cases)}")
                 os.makedirs(directory)
                 base_here = [a.replace(out, os.path.join(directory, "out")) for a in base]
-                cases.append((Case(program, base_here, name, value, six, directory), program))
+                cases.append((Case(base_here, name, value, six, directory), program))
     failures = []
     with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:
         for result in pool.map(lambda c: check(*c), cases):

@@ -19,6 +19,7 @@
 #include <string_view>
 #include <system_error>
 
+#include "sgmp/pack/host_name.hpp"
 #include "sgmp/pack/interrupt.hpp"
 
 namespace sgmp {
@@ -33,18 +34,6 @@ constexpr int kGzipLevel = 1;
 
 std::runtime_error path_error(const fs::path& path, const std::string& reason) {
     return std::runtime_error(path.string() + ": " + reason);
-}
-
-/// This host's name (the node on a cluster), or "localhost" when it cannot be read.
-const std::string& host_name() {
-    static const std::string name = [] {
-        char buffer[256] = {};
-        if (::gethostname(buffer, sizeof buffer - 1) != 0 || buffer[0] == '\0') {
-            return std::string("localhost");
-        }
-        return std::string(buffer);
-    }();
-    return name;
 }
 
 fs::path sibling_temporary(const fs::path& target, const char* kind) {

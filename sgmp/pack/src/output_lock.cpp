@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "sgmp/pack/host_name.hpp"
+
 namespace sgmp {
 namespace fs = std::filesystem;
 
@@ -46,14 +48,6 @@ std::string holder_of(int fd) {
     return holder.empty() ? "unknown" : holder;
 }
 
-std::string this_process() {
-    char host[256] = {};
-    if (::gethostname(host, sizeof host - 1) != 0 || host[0] == '\0') {
-        std::strcpy(host, "localhost");
-    }
-    return std::string(host) + " pid " + std::to_string(::getpid());
-}
-
 }  // namespace
 
 OutputLock::OutputLock(const fs::path& target) : path_(lock_path_of(target)) {
@@ -75,7 +69,7 @@ OutputLock::OutputLock(const fs::path& target) : path_(lock_path_of(target)) {
                                      std::strerror(code));
         }
         if (still_at(fd, path_)) {
-            const std::string me = this_process() + "\n";
+            const std::string me = host_name() + " pid " + std::to_string(::getpid()) + "\n";
             if (::ftruncate(fd, 0) == 0) {
                 (void)!::pwrite(fd, me.data(), me.size(), 0);  // only for the refusal's text
             }

@@ -155,7 +155,7 @@ void print_run_summary(const char* verb, const PourResult& result, std::size_t c
 }
 
 int report_run_failure(const std::exception& error, bool interrupted) {
-    std::cerr << "sgmp-reference: " << printable(error.what()) << '\n';
+    std::cerr << "sgmp-reference: " << printable(cli::failure_message(error)) << '\n';
     if (const auto* pour_error = dynamic_cast<const PourError*>(&error);
         pour_error != nullptr && !pour_error->log_tail().empty()) {
         std::cerr << "--- last lines of LIGGGHTS output ---\n";

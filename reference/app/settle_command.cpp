@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <new>
 #include <numbers>
 
 #include "sgmp/pack/atomic_file.hpp"
@@ -97,6 +98,8 @@ int run_settle(SettleOptions& o, const PourObserver& observer,
         check_writable(o.out, o.force);
     } catch (const ParameterError&) {
         throw;  // run_main names the option
+    } catch (const std::bad_alloc&) {
+        throw;  // a runtime failure, not usage: run_main says "out of memory", status 1
     } catch (const std::exception& e) {
         std::cerr << "sgmp-reference: settle " << e.what() << '\n';
         return 2;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "sgmp/cli/run_main.hpp"
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/cpu_budget.hpp"
 #include "sgmp/pack/input_error.hpp"
@@ -154,7 +155,7 @@ int run_convert() {
         std::cerr << "sgmp convert: " << printable(e.message) << "\n";
         return 2;
     } catch (const std::exception& e) {
-        std::cerr << "sgmp convert: " << printable(e.what()) << "\n";
+        std::cerr << "sgmp convert: " << printable(cli::failure_message(e)) << "\n";
         return 1;
     }
 }

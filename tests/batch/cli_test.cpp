@@ -371,6 +371,20 @@ BOOST_AUTO_TEST_CASE(a_second_batch_on_one_summary_is_refused_while_the_first_ru
     BOOST_TEST(!fs::exists(s.path("io/.summary.csv.lock")));
 }
 
+// A batch whose job fails stops through World::abort (std::exit, MPI_Abort), which skips
+// the summary lock's destructor: .SUMMARY.lock was left behind.
+BOOST_AUTO_TEST_CASE(a_failed_job_leaves_no_summary_lock) {
+    Scratch s;
+    const Run r = s.batch(
+        "--seeds 1-3 --count 2000 --arrangement small-dense --out-pattern 'p{seed}.xyz' "
+        "--threads 1 --progress-seconds 0",
+        "io", "ulimit -f 2;");  // each pack is larger than 2 kB: its write fails
+    BOOST_TEST(r.status == 1, r.err);
+    BOOST_TEST(r.err.find("File too large") != std::string::npos, r.err);
+    BOOST_TEST(!fs::exists(s.path("io/.summary.csv.lock")));
+    BOOST_TEST(s.files().empty());  // no pack, no temporary, no lock
+}
+
 // Once, of two --skip-existing batches making the same packs side by side, one failed with
 // "exists; pass --force" when the other published a pack first; now that pack is reused.
 BOOST_AUTO_TEST_CASE(concurrent_resumes_of_the_same_packs_both_finish) {

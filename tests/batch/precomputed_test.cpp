@@ -158,6 +158,23 @@ BOOST_AUTO_TEST_CASE(batch_rows_without_metrics_or_packs_are_refused) {
                           header + "0,10,1,0.1,0.1,0.5,1,2,3,4,5,6,0,0,0,0.7,,\n", "s.csv"),
                       sgmp::InputError);  // made with --no-packs
     BOOST_CHECK_THROW(sgmp::compare::summaries_from_batch("a,b\n1,2\n", "s.csv"), sgmp::InputError);
+    // A measured metric that is NaN or infinite was taken for "not measured" (an empty
+    // field) and reported as 0.0000.
+    for (const char* phi : {"nan", "NaN", "inf", "-inf"}) {
+        const std::string row =
+            std::string("0,10,1,0.1,0.1,") + phi + ",1,2,3,4,5,6,0,0,0,0.7,,p.xyz\n";
+        try {
+            (void)sgmp::compare::summaries_from_batch(header + row, "s.csv");
+            BOOST_ERROR("phi " << phi << " was accepted");
+        } catch (const sgmp::InputError& e) {
+            BOOST_TEST(e.what() == "s.csv:2: 'phi' is '" + std::string(phi) +
+                                       "': a measured value must be finite (a metric not "
+                                       "measured is an empty field)");
+        }
+    }
+    BOOST_CHECK_THROW(sgmp::compare::summaries_from_batch(
+                          header + "0,10,1,0.1,0.1,0.5,1,2,nan,4,5,6,0,0,0,0.7,,p.xyz\n", "s.csv"),
+                      sgmp::InputError);
     // Counts that are no particle count (the first was a fuzz finding: its cast to size_t
     // was undefined behaviour).
     for (const char* count : {"66666666666666666660", "1e26", "0", "-3", "10.5", "nan"}) {
@@ -170,4 +187,43 @@ BOOST_AUTO_TEST_CASE(batch_rows_without_metrics_or_packs_are_refused) {
             BOOST_TEST(std::string(e.what()).find("s.csv:2: count ") == 0, e.what());
         }
     }
+}
+
+// A metrics file whose keys hold the wrong JSON type printed nlohmann's
+// "[json.exception.type_error.302]" text; a schema_version far beyond int (fuzz findings,
+// tests/fuzz/corpus/metrics_json/schema_version_*) was converted to int: undefined
+// behaviour. Each is now one line naming the file, the key and the type expected.
+BOOST_AUTO_TEST_CASE(metrics_files_of_the_wrong_shape_are_refused_in_one_line) {
+    const auto error_of = [](const std::string& text) {
+        try {
+            (void)sgmp::compare::summary_from_measure("m.metrics.json",
+                                                      nlohmann::ordered_json::parse(text), "", "",
+                                                      nlohmann::ordered_json());
+        } catch (const sgmp::InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    const std::string not_metrics =
+        "m.metrics.json: is not a metrics file of schema_version 2 (sgmp-compare measure)";
+    BOOST_TEST(error_of(R"({"schema_version":"2"})") ==
+               "m.metrics.json: 'schema_version' must be a whole number, not string");
+    BOOST_TEST(error_of(R"({"schema_version":null})") ==
+               "m.metrics.json: 'schema_version' must be a whole number, not null");
+    BOOST_TEST(error_of(R"({"schema_version":[2]})") ==
+               "m.metrics.json: 'schema_version' must be a whole number, not array");
+    BOOST_TEST(error_of("null") == not_metrics);
+    BOOST_TEST(error_of("[2]") == not_metrics);
+    BOOST_TEST(error_of(R"({"schema_version":218356777100.5710})") ==
+               not_metrics + "; its schema_version is 218356777100.571");
+    BOOST_TEST(error_of(R"({"schema_version":5555555555555555555555555555555555552})")
+                   .find(not_metrics + "; its schema_version is ") == 0u);
+    BOOST_TEST(error_of(R"({"schema_version":2.5})") ==
+               not_metrics + "; its schema_version is 2.5");
+    BOOST_TEST(error_of(R"({"schema_version":2,"provenance":5})") ==
+               "m.metrics.json: 'provenance' must be an object, not number");
+    BOOST_TEST(error_of(R"({"schema_version":2,"provenance":{"input":5}})") ==
+               "m.metrics.json: 'provenance.input' must be a string, not number");
+    BOOST_TEST(error_of(R"({"schema_version":2,"provenance":{"input_metadata":[1]}})") ==
+               "m.metrics.json: 'provenance.input_metadata' must be an object, not array");
 }

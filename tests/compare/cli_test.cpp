@@ -149,6 +149,11 @@ BOOST_AUTO_TEST_CASE(a_file_size_limit_fails_like_a_full_disk) {
     BOOST_TEST(r.status == 1, r.err);
     BOOST_TEST(lines(r.err) == 1u, r.err);
     BOOST_TEST(r.err.rfind("sgmp-compare: ", 0) == 0u, r.err);
+    // It names the output and the reason, not the temporary ("./.limited.tmp-PID.HOST/…:
+    // cannot write", a path already removed).
+    BOOST_TEST(r.err.rfind("sgmp-compare: limited/n3000-mu0.5-seed1.", 0) == 0u, r.err);
+    BOOST_TEST(r.err.find(": write failed: File too large\n") != std::string::npos, r.err);
+    BOOST_TEST(r.err.find(".tmp-") == std::string::npos, r.err);
     BOOST_TEST(!fs::exists(scratch() / "limited"));
     for (const auto& entry : fs::directory_iterator(scratch())) {
         BOOST_TEST(entry.path().filename().string().rfind(".limited.tmp", 0) != 0u, entry.path());
@@ -185,9 +190,11 @@ BOOST_AUTO_TEST_CASE(bad_pack_files_give_one_line_and_status_1) {
     // Two spheres in one place: the Voronoi cell of one is empty (a content error, once
     // reported with the usage status 2).
     write("swallowed.xyz", "2\n" + kHeader + "1 0 0 0 0.05 0\n2 0 0 0 0.05 0\n");
+    // A radius of 1e160 leaves g(r) no space for centres (once status 2, as for an option).
+    write("huge.xyz", "1\n" + kHeader + "1 0 0 0 1e160 0\n");
     for (const char* file :
          {"empty.xyz", "short.xyz", "word.xyz", "columns.xyz", "nan.xyz", "inf.xyz", "radius.xyz",
-          "zero.xyz", "container.xyz", "missing.xyz", "swallowed.xyz"}) {
+          "zero.xyz", "container.xyz", "missing.xyz", "swallowed.xyz", "huge.xyz"}) {
         const Result r = run(std::string("measure ") + file + " --out out-bad");
         BOOST_TEST(r.status == 1, file << ": " << r.err);
         BOOST_TEST(lines(r.err) == 1u, file << ": " << r.err);

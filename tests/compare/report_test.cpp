@@ -198,7 +198,9 @@ BOOST_AUTO_TEST_CASE(physically_impossible_values_are_refused) {
     p.scalars[scalar_index("overlaps")] = -5.0;
     BOOST_CHECK_THROW(check_physical(p), std::invalid_argument);
     p = g.packs[0];
-    p.scalars[scalar_index("phi")] = std::nan("");  // not measured: allowed, not judged
+    // NaN in a summary means "not measured" (a batch row's empty field: precomputed.hpp's
+    // readers refuse a measured NaN); it is not judged.
+    p.scalars[scalar_index("phi")] = std::nan("");
     BOOST_CHECK_NO_THROW(check_physical(p));
     p.scalars[scalar_index("phi")] = INFINITY;
     BOOST_CHECK_THROW(check_physical(p), std::invalid_argument);
@@ -212,6 +214,33 @@ BOOST_AUTO_TEST_CASE(physically_impossible_values_are_refused) {
     p = g.packs[0];
     p.p_z[0].push_back(-0.0);
     BOOST_CHECK_NO_THROW(check_physical(p));
+    // Mean coordination above the kissing bound: Z = 1e9 was reported as 500000000.75.
+    p = g.packs[0];
+    p.scalars[scalar_index("z_mean_tol_1e-3")] = 1e9;
+    BOOST_CHECK_EXCEPTION(check_physical(p), std::invalid_argument, [&](const auto& e) {
+        return std::string(e.what()) ==
+               p.source +
+                   ": z_mean_tol_1e-3 = 1000000000.000000 is physically impossible (a sphere "
+                   "of one size averages at most 12 contacts at this tolerance)";
+    });
+    p.scalars[scalar_index("z_mean_tol_1e-3")] = 12.0;
+    BOOST_CHECK_NO_THROW(check_physical(p));
+    p.scalars[scalar_index("z_mean_tol_1e-3")] = 12.01;
+    BOOST_CHECK_THROW(check_physical(p), std::invalid_argument);
+    p = g.packs[0];
+    p.scalars[scalar_index("z_mean_tol_5e-2")] = 16.0;  // the cap-area bound at δ = 0.05
+    BOOST_CHECK_NO_THROW(check_physical(p));
+    p.scalars[scalar_index("z_mean_tol_5e-2")] = 16.5;
+    BOOST_CHECK_THROW(check_physical(p), std::invalid_argument);
+    p = g.packs[0];
+    p.z_mean.at(0) = 13.0;  // the per-tolerance curve, Z(0)
+    BOOST_CHECK_THROW(check_physical(p), std::invalid_argument);
+    p = g.packs[0];
+    p.provenance.emplace_back("size_modes", "1:0.5,0.5:0.5");  // several sizes: 24 at contact
+    p.z_mean.at(0) = 20.0;
+    BOOST_CHECK_NO_THROW(check_physical(p));
+    p.z_mean.at(0) = 24.5;
+    BOOST_CHECK_THROW(check_physical(p), std::invalid_argument);
     Group bad = g;
     bad.packs[0].scalars[scalar_index("phi")] = 2.864;  // a report from it is refused
     BOOST_CHECK_THROW(build_report({g, bad}, plan_of({{0, 1}})), std::invalid_argument);

@@ -105,6 +105,11 @@ BOOST_AUTO_TEST_CASE(malformed_dumps_name_the_line_and_the_reason) {
     std::string twice = kSnapshot1;  // x given twice: the last used to win
     twice.replace(twice.find(" y "), 3, " x ");
     BOOST_TEST(read_error(twice) == "pour.dump:9: ATOMS section names 'x' twice");
+    std::string both_sizes = kSnapshot1;  // radius and diameter: radius used to win
+    both_sizes.replace(both_sizes.find("z radius\n"), 9, "z radius diameter\n");
+    BOOST_TEST(read_error(both_sizes) ==
+               "pour.dump:9: ATOMS section holds both 'radius' and 'diameter': give one (which "
+               "would count is not clear)");
     std::string no_radius = kSnapshot1;
     no_radius.replace(no_radius.find("radius"), 6, "mass");
     BOOST_TEST(read_error(no_radius) ==

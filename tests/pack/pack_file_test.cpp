@@ -7,6 +7,7 @@
 
 #include <boost/test/unit_test.hpp>
 #include <csignal>
+#include <functional>
 #include <stdexcept>
 
 #include "sgmp/pack/interrupt.hpp"
@@ -114,6 +115,77 @@ BOOST_AUTO_TEST_CASE(sigint_in_the_middle_of_a_write_removes_the_temporary_and_e
         BOOST_TEST((WIFEXITED(raw) ? WEXITSTATUS(raw) : -1) == 130);
         BOOST_TEST(entries_in(scratch.path()) == 0u);
     }
+}
+
+// A .vtk pack and its container are one output. With --force over an existing pair, a
+// failure or an interrupt once left the old particles without a container: the new
+// container was already in place and was then removed. Now both are renamed together at
+// the end, and a failed rename puts the old container back.
+BOOST_AUTO_TEST_CASE(a_failed_vtk_write_over_a_pair_keeps_the_old_pair) {
+    TestDirectory scratch("pack_file_vtk_pair");
+    const fs::path particles = scratch.path() / "o.vtk";
+    const fs::path container = scratch.path() / "o.container.vtk";
+    fs::create_directories(particles / "x");  // the particles' rename fails (a directory)
+    write_text(container, "old container");
+    BOOST_CHECK_THROW(write_pack_as(particles, small_pack(), PackFormat::vtk, WriteOptions{true}),
+                      std::runtime_error);
+    BOOST_TEST(read_bytes(container) == "old container");
+    BOOST_TEST(entries_in(scratch.path()) == 2u);  // no temporary, no backup
+    fs::remove_all(particles);
+    write_text(particles, "old particles");
+    write_pack_as(particles, small_pack(), PackFormat::vtk, WriteOptions{true});
+    BOOST_TEST(read_bytes(container) != "old container");
+    BOOST_TEST(read_bytes(particles) != "old particles");
+    BOOST_TEST(entries_in(scratch.path()) == 2u);
+}
+
+BOOST_AUTO_TEST_CASE(an_interrupt_leaves_the_old_pair_or_the_new_one) {
+    TestDirectory scratch("pack_file_pair_interrupt");
+    const fs::path first = scratch.path() / "o.container.vtk";
+    const fs::path second = scratch.path() / "o.vtk";
+    const auto run_child = [](const std::function<void()>& body) {
+        const pid_t pid = ::fork();
+        BOOST_TEST_REQUIRE(pid >= 0);
+        if (pid == 0) {
+            ::alarm(20);
+            install_interrupt_handler("pack_tests");
+            body();
+            ::_exit(0);
+        }
+        int raw = 0;
+        ::waitpid(pid, &raw, 0);
+        return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    };
+    const auto interrupt = [] {
+        ::kill(::getpid(), SIGTERM);
+        ::pause();  // the watcher thread exits the process
+    };
+    // While the second file is produced: nothing is renamed yet, the old pair stays.
+    write_text(first, "old 1");
+    write_text(second, "old 2");
+    BOOST_TEST(run_child([&] {
+                   write_files_atomically({{first, [](std::ostream& out) { out << "new 1"; }},
+                                           {second,
+                                            [&](std::ostream& out) {
+                                                out << "new 2";
+                                                interrupt();
+                                            }}},
+                                          true);
+               }) == 130);
+    BOOST_TEST(read_bytes(first) == "old 1");
+    BOOST_TEST(read_bytes(second) == "old 2");
+    BOOST_TEST(entries_in(scratch.path()) == 2u);
+    // A signal while the pair is renamed waits until both renames are done.
+    const fs::path done = scratch.path() / "done";
+    BOOST_TEST(run_child([&] {
+                   run_uninterrupted([&] {
+                       ::kill(::getpid(), SIGTERM);
+                       ::usleep(200000);  // the watcher has the signal by now, and waits
+                       write_text(done, "both renamed");
+                   });
+                   ::pause();
+               }) == 130);
+    BOOST_TEST(read_bytes(done) == "both renamed");
 }
 
 BOOST_AUTO_TEST_CASE(a_full_disk_fails_a_compressed_or_plain_write_in_one_line) {

@@ -19,6 +19,7 @@
 #include "run_program.hpp"
 #include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/metadata.hpp"
+#include "test_support.hpp"
 
 namespace fs = std::filesystem;
 using namespace sgmp::reference::testing;
@@ -343,6 +344,30 @@ BOOST_AUTO_TEST_CASE(an_existing_output_is_kept_without_force) {
     std::string content;
     std::getline(in, content);
     BOOST_TEST(content == "keep me");
+}
+
+// Out of memory reading the start pack was "sgmp-reference: settle std::bad_alloc" with
+// the usage status 2; it is the one message of every tool, status 1.
+BOOST_AUTO_TEST_CASE(running_out_of_memory_is_one_line_and_status_1) {
+    const fs::path dir = fresh_directory("sgmp-reference-oom");
+    {
+        std::ofstream big(dir / "big.xyz");
+        constexpr int kCount = 1000000;  // about 60 MB of particles: past a 90 MB limit
+        big << kCount << "\nProperties=id:I:1:pos:R:3:radius:R:1 pbc=\"F F F\"\n";
+        for (int i = 0; i < kCount; ++i) {
+            big << i + 1 << ' ' << (i % 100) * 0.01 << ' ' << (i / 100 % 100) * 0.01 << ' '
+                << (i / 10000) * 0.01 << " 0.004\n";
+        }
+    }
+    const sgmp::testing::CommandRun run = sgmp::testing::run_command(
+        "ulimit -v 90000; OMP_NUM_THREADS=1 '" + kExe + "' settle '" + (dir / "big.xyz").string() +
+            "' --friction 0.5 --out '" + (dir / "out.xyz").string() + "'",
+        dir);
+    BOOST_TEST(run.status == 1, run.err);
+    BOOST_TEST(run.err.rfind("sgmp-reference: out of memory: ", 0) == 0u, run.err);
+    BOOST_TEST(std::count(run.err.begin(), run.err.end(), '\n') == 1);
+    BOOST_TEST(!fs::exists(dir / "out.xyz"));
+    fs::remove_all(dir);
 }
 
 BOOST_AUTO_TEST_CASE(usage_errors_exit_with_2) {

@@ -1,8 +1,9 @@
 #include "sgmp/compare/metrics_output.hpp"
 
-#include <fstream>
+#include <functional>
 #include <stdexcept>
 
+#include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/version.hpp"
 
 namespace sgmp::compare {
@@ -263,13 +264,10 @@ void write_p_z_csv(std::ostream& out, const Measurement& m, const Json& prov) {
 
 void write_pack_metrics(const std::filesystem::path& dir, const std::string& stem,
                         const Measurement& m, const nlohmann::ordered_json& provenance) {
-    const auto write = [&](const std::string& suffix, const auto& produce) {
-        std::ofstream out(dir / (stem + suffix), std::ios::binary);
-        produce(out);
-        out.flush();
-        if (!out) {
-            throw std::runtime_error((dir / (stem + suffix)).string() + ": cannot write");
-        }
+    // A failed write names the file and the reason ("File too large", "No space left").
+    const auto write = [&](const std::string& suffix,
+                           const std::function<void(std::ostream&)>& produce) {
+        write_stream_file(dir / (stem + suffix), produce);
     };
     write(".metrics.json",
           [&](std::ostream& out) { out << metrics_json(m, provenance).dump(2) << "\n"; });

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "sgmp/compare/ball_box_volume.hpp"
+#include "sgmp/compare/pack_content_error.hpp"
 
 namespace sgmp::compare {
 
@@ -20,7 +21,7 @@ Box center_space(const std::vector<Particle>& particles, const Container& contai
                          container.z_min + mean_radius),
                     Vec3(container.x_max - mean_radius, top, container.z_max - mean_radius)};
     if (!((space.hi - space.lo).array() > 0.0).all()) {
-        throw std::invalid_argument(
+        throw PackContentError(  // the pack's radii and container: bad input, not usage
             "g(r): the space of particle centres (container shrunk by the mean radius, up to the "
             "highest centre) is empty");
     }
@@ -34,7 +35,7 @@ Box container_space(const std::vector<Particle>& particles, const Container& con
     }
     const Box space = container.box_up_to(top);
     if (!((space.hi - space.lo).array() > 0.0).all()) {
-        throw std::invalid_argument("g(r): the pack's top lies below the container floor");
+        throw PackContentError("g(r): the pack's top lies below the container floor");
     }
     return space;
 }

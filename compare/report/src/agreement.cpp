@@ -8,9 +8,11 @@
 #include <set>
 #include <stdexcept>
 
+#include "sgmp/compare/coordination_tolerances.hpp"
 #include "sgmp/compare/equivalence.hpp"
 #include "sgmp/compare/group_curves.hpp"
 #include "sgmp/compare/statistics.hpp"
+#include "sgmp/pack/metadata.hpp"
 
 namespace sgmp::compare {
 namespace {
@@ -490,6 +492,39 @@ bool of_several_sizes(const PackSummary& pack) {
                                 ")");
 }
 
+/// The largest mean coordination Z(δ) a pack can have, δ the gap tolerance in units of
+/// the mean diameter d. One size: 12, the kissing number, for δ ≤ 2·10⁻² (a 13th neighbour
+/// needs a shell out to 1.0454·d, Tammes' problem for 13 points: more than 1 + δ even with
+/// overlaps of 2 % of d); beyond, the cap-area bound 2/(1 − cos θ), sin θ = 1/(2(1 + δ))
+/// (16 at δ = 5·10⁻²). Several sizes: twice that, 24 at contact, a generous bound: Z counts
+/// each contact twice, and at its smaller sphere a contact is one of at most 12 with
+/// spheres at least as large (shrunk to its size, they still do not overlap).
+double coordination_bound(double delta, bool several_sizes) {
+    constexpr double kKissingNumber = 12.0;
+    constexpr double kTammesShell = 0.02;  // the largest δ of the reported ones below 0.0454
+    const double sin_theta = 1.0 / (2.0 * (1.0 + delta));
+    const double one_size = delta <= kTammesShell
+                                ? kKissingNumber
+                                : std::floor(2.0 / (1.0 - std::sqrt(1.0 - sin_theta * sin_theta)));
+    return several_sizes ? 2.0 * one_size : one_size;
+}
+
+/// Refuses a mean coordination `value` at tolerance index `t` outside [0, the bound].
+void check_coordination(const PackSummary& pack, std::size_t t, double value) {
+    const std::string what =
+        "z_mean_tol_" + coordination_tolerance_names().at(t) + " = " + std::to_string(value);
+    if (!std::isfinite(value) || value < 0.0) {
+        impossible(pack, what, "must be finite and >= 0");
+    }
+    const bool several = of_several_sizes(pack);
+    const double bound = coordination_bound(coordination_tolerances().at(t), several);
+    if (value > bound) {
+        impossible(pack, what,
+                   std::string(several ? "spheres of several sizes" : "a sphere of one size") +
+                       " averages at most " + format_number(bound) + " contacts at this tolerance");
+    }
+}
+
 }  // namespace
 
 std::string uncertified_reason(const PackSummary& pack) {
@@ -530,6 +565,12 @@ void check_physical(const PackSummary& pack) {
         if (!std::isfinite(v) || v < 0.0) {
             impossible(pack, what, "must be finite and >= 0");
         }
+        if (rule.name.rfind("z_mean_tol_", 0) == 0) {
+            const auto z = std::find(names.begin(), names.end(), rule.name.substr(11));
+            if (z != names.end()) {
+                check_coordination(pack, static_cast<std::size_t>(z - names.begin()), v);
+            }
+        }
         if (rule.name == "phi" || rule.name == "voronoi_phi_mean") {
             if (of_several_sizes(pack) ? v >= 1.0 : v > kKeplerBound) {
                 impossible(
@@ -537,6 +578,9 @@ void check_physical(const PackSummary& pack) {
                     of_several_sizes(pack) ? "must be < 1" : "one size packs to at most 0.74048");
             }
         }
+    }
+    for (std::size_t t = 0; t < pack.z_mean.size() && t < names.size(); ++t) {
+        check_coordination(pack, t, pack.z_mean[t]);
     }
     for (const double g : pack.gr) {
         if (!(g >= 0.0) || !std::isfinite(g)) {

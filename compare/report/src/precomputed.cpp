@@ -108,6 +108,59 @@ const nlohmann::ordered_json& object_at(const nlohmann::ordered_json& j, const s
     return j[key];
 }
 
+/// "'KEY' must be TYPE, not ACTUAL": a value of the wrong JSON type, named in one line
+/// (nlohmann's own text, "[json.exception.type_error.302] …", names neither).
+[[noreturn]] void wrong_type(const std::string& source, const std::string& key,
+                             const std::string& expected, const nlohmann::ordered_json& value) {
+    throw InputError(source, 0, "'" + key + "' must be " + expected + ", not " + value.type_name());
+}
+
+/// The object at j[key], or an empty one when the key is absent.
+nlohmann::ordered_json optional_object(const nlohmann::ordered_json& j, const std::string& key,
+                                       const std::string& name, const std::string& source) {
+    if (!j.contains(key)) {
+        return nlohmann::ordered_json::object();
+    }
+    if (!j[key].is_object()) {
+        wrong_type(source, name, "an object", j[key]);
+    }
+    return j[key];
+}
+
+/// The string at j[key], or `fallback` when the key is absent.
+std::string optional_string(const nlohmann::ordered_json& j, const std::string& key,
+                            const std::string& name, const std::string& fallback,
+                            const std::string& source) {
+    if (!j.contains(key)) {
+        return fallback;
+    }
+    if (!j[key].is_string()) {
+        wrong_type(source, name, "a string", j[key]);
+    }
+    return j[key].get<std::string>();
+}
+
+/// Refuses all but a metrics object of this schema_version. The version is read as a
+/// number and checked to be whole and in range before it is compared (a float such as
+/// 218356777100.571 converted to int was undefined behaviour, a fuzz finding).
+void check_schema_version(const nlohmann::ordered_json& j, const std::string& source) {
+    const std::string expected = "is not a metrics file of schema_version " +
+                                 std::to_string(kSchemaVersion) + " (sgmp-compare measure)";
+    if (!j.is_object() || !j.contains("schema_version")) {
+        throw InputError(source, 0, expected);
+    }
+    const auto& version = j["schema_version"];
+    if (!version.is_number()) {
+        wrong_type(source, "schema_version", "a whole number", version);
+    }
+    const double value = version.get<double>();
+    constexpr double kLargest = 1e6;  // far above any schema version
+    if (!(value >= 0.0 && value <= kLargest) || value != std::floor(value) ||
+        static_cast<int>(value) != kSchemaVersion) {
+        throw InputError(source, 0, expected + "; its schema_version is " + version.dump());
+    }
+}
+
 }  // namespace
 
 bool is_metrics_json(std::string_view path) {
@@ -123,22 +176,18 @@ std::string sibling_csv(const std::string& metrics_path, const std::string& kind
 PackSummary summary_from_measure(const std::string& source, const nlohmann::ordered_json& j,
                                  std::string_view g_r_csv, std::string_view phi_y_csv,
                                  const nlohmann::ordered_json& parameters) {
-    if (!j.is_object() || j.value("schema_version", 0) != kSchemaVersion) {
+    check_schema_version(j, source);
+    const nlohmann::ordered_json prov = optional_object(j, "provenance", "provenance", source);
+    const nlohmann::ordered_json recorded = prov.value("parameters", nlohmann::ordered_json());
+    if (parameters != recorded) {
         throw InputError(source, 0,
-                         "is not a metrics file of schema_version " +
-                             std::to_string(kSchemaVersion) + " (sgmp-compare measure)");
-    }
-    const nlohmann::ordered_json prov = j.value("provenance", nlohmann::ordered_json::object());
-    if (parameters != prov.value("parameters", nlohmann::ordered_json())) {
-        throw InputError(source, 0,
-                         "was measured with other parameters (" +
-                             prov.value("parameters", nlohmann::ordered_json()).dump() +
+                         "was measured with other parameters (" + recorded.dump() +
                              ") than this run's (" + parameters.dump() + ")");
     }
     PackSummary s;
-    s.source = prov.value("input", source);
+    s.source = optional_string(prov, "input", "provenance.input", source, source);
     const nlohmann::ordered_json metadata =
-        prov.value("input_metadata", nlohmann::ordered_json::object());
+        optional_object(prov, "input_metadata", "provenance.input_metadata", source);
     for (const auto& [key, value] : metadata.items()) {
         s.provenance.emplace_back(key, value.is_string() ? value.get<std::string>() : value.dump());
     }
@@ -207,6 +256,18 @@ std::vector<std::pair<std::string, PackSummary>> summaries_from_batch(std::strin
             }
             return value;
         };
+        // A metric not measured is an empty field (read as NaN, not judged); a field that
+        // holds "nan" or "inf" claims a measured value that cannot be one.
+        const auto measured = [&](const std::string& name) {
+            const double value = number(name);
+            if (!std::isfinite(value)) {
+                throw InputError(source, n + 1,
+                                 "'" + name + "' is '" + field(name) +
+                                     "': a measured value must be finite (a metric not "
+                                     "measured is an empty field)");
+            }
+            return value;
+        };
         PackSummary s;
         s.source = field("path");
         if (s.source.empty()) {
@@ -227,12 +288,12 @@ std::vector<std::pair<std::string, PackSummary>> summaries_from_batch(std::strin
             double v = kUnknown;
             if (const SummaryColumn* column = summary_column_of(rule.name);
                 column != nullptr && !(column->optional && field(column->column).empty())) {
-                v = number(column->column);
+                v = measured(column->column);
             }
             s.scalars.push_back(v);
         }
         for (const auto& name : names) {
-            s.z_mean.push_back(number(summary_column_of("z_mean_tol_" + name)->column));
+            s.z_mean.push_back(measured(summary_column_of("z_mean_tol_" + name)->column));
         }
         s.p_z.assign(names.size(), {});
         out.emplace_back(s.source, std::move(s));

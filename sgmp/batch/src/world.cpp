@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <numeric>
 
+#include "sgmp/pack/interrupt.hpp"
+
 namespace sgmp::batch {
 namespace {
 
@@ -79,6 +81,10 @@ std::vector<std::string> World::gather(const std::string& text) const {
 }
 
 void World::abort(int status) const {
+    // std::exit and MPI_Abort skip the destructors of the caller's locals: the summary's
+    // lock file and the temporaries of jobs still running are removed here, as an
+    // interrupt removes them.
+    remove_registered_temporaries();
     if (mpi_) {
         MPI_Abort(MPI_COMM_WORLD, status);
     }

@@ -49,6 +49,14 @@ std::string usage_message(const ParameterError& error, const OptionSpellings& ex
                                  : option + " " + error.value() + ": " + error.rule();
 }
 
+std::string failure_message(const std::exception& error) {
+    if (dynamic_cast<const std::bad_alloc*>(&error) != nullptr) {
+        return "out of memory: the input or the request needs more memory than this process "
+               "may use (ulimit -v, the machine)";
+    }
+    return error.what();
+}
+
 int run_main(std::string_view program, CLI::App& app, const std::function<void()>& parse,
              const std::function<int()>& body, const OptionSpellings& exceptions) {
     try {
@@ -68,13 +76,8 @@ int run_main(std::string_view program, CLI::App& app, const std::function<void()
         return report(program, usage_message(e, exceptions), 2);
     } catch (const UsageError& e) {
         return report(program, e.what(), 2);
-    } catch (const std::bad_alloc&) {  // its text, "std::bad_alloc", tells a user nothing
-        return report(program,
-                      "out of memory: the input or the request needs more memory than this "
-                      "process may use (ulimit -v, the machine)",
-                      1);
     } catch (const std::exception& e) {
-        return report(program, e.what(), 1);
+        return report(program, failure_message(e), 1);
     }
 }
 

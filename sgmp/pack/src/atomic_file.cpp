@@ -18,6 +18,7 @@
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
+#include <vector>
 
 #include "sgmp/pack/host_name.hpp"
 #include "sgmp/pack/interrupt.hpp"
@@ -133,6 +134,17 @@ void move_into_place(const fs::path& from, const fs::path& to, bool overwrite) {
     fs::remove(from);
 }
 
+/// `message` with every mention of the temporary directory `temporary` as `target`.
+std::string as_output(std::string message, const fs::path& temporary, const fs::path& target) {
+    const std::string from = temporary.string();
+    const std::string to = target.string();
+    for (std::size_t at = message.find(from); at != std::string::npos;
+         at = message.find(from, at + to.size())) {
+        message.replace(at, from.size(), to);
+    }
+    return message;
+}
+
 }  // namespace
 
 FileExists::FileExists(const fs::path& path)
@@ -171,14 +183,30 @@ void check_writable(const fs::path& target, bool overwrite) {
     }
 }
 
-void write_file_atomically(const fs::path& target, bool overwrite,
-                           const std::function<void(std::ostream&)>& produce) {
-    check_writable(target, overwrite);
-    const fs::path temporary = sibling_temporary(target, "tmp");
+namespace {
+
+/// A temporary beside `target` holding the complete content `produce` wrote, synced to
+/// disk; removed when the object ends unless it was renamed into place meanwhile.
+class FinishedTemporary {
+  public:
+    FinishedTemporary(const fs::path& target, const std::function<void(std::ostream&)>& produce);
+    ~FinishedTemporary() { remove_temporary(temporary_); }
+    FinishedTemporary(const FinishedTemporary&) = delete;
+    FinishedTemporary& operator=(const FinishedTemporary&) = delete;
+    [[nodiscard]] const fs::path& path() const { return temporary_; }
+
+  private:
+    fs::path temporary_;
+    std::unique_ptr<TemporaryGuard> guard_;
+};
+
+FinishedTemporary::FinishedTemporary(const fs::path& target,
+                                     const std::function<void(std::ostream&)>& produce)
+    : temporary_(sibling_temporary(target, "tmp")) {
     int fd = -1;
     int open_error = 0;  // errno of open, kept before the guard's unlock can touch errno
-    const TemporaryGuard guard(temporary, [&] {
-        fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    guard_ = std::make_unique<TemporaryGuard>(temporary_, [&] {
+        fd = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
         open_error = errno;
     });
     if (fd < 0) {
@@ -213,13 +241,11 @@ void write_file_atomically(const fs::path& target, bool overwrite,
         if (::close(fd) != 0) {
             throw path_error(target, std::string("write failed: ") + std::strerror(errno));
         }
-        move_into_place(temporary, target, overwrite);
-        sync_directory(parent_of(target));
     } catch (const std::ios_base::failure& error) {
         if (open) {
             ::close(fd);
         }
-        remove_temporary(temporary);
+        remove_temporary(temporary_);
         // The sink's message names the file and the reason; a stream's own says less.
         throw std::runtime_error(
             !failure.empty() ? failure : target.string() + ": write failed: " + error.what());
@@ -227,8 +253,74 @@ void write_file_atomically(const fs::path& target, bool overwrite,
         if (open) {
             ::close(fd);
         }
-        remove_temporary(temporary);
+        remove_temporary(temporary_);
         throw;
+    }
+}
+
+/// Renames finished temporaries onto their targets, all or none: before the first rename
+/// each existing target gets a hard-linked backup, and when a later rename fails the
+/// targets already replaced get their old content back (or are removed when they had
+/// none). The caller holds interrupts off (run_uninterrupted), so no signal lands between
+/// two renames.
+void publish_together(const std::vector<fs::path>& targets,
+                      const std::vector<std::unique_ptr<FinishedTemporary>>& files,
+                      bool overwrite) {
+    std::vector<fs::path> backups(targets.size());
+    for (std::size_t i = 0; i < targets.size(); ++i) {
+        const fs::path backup = sibling_temporary(fs::path(targets[i].string() + ".old"), "tmp");
+        if (overwrite && ::link(targets[i].c_str(), backup.c_str()) == 0) {
+            backups[i] = backup;
+        }
+    }
+    std::size_t published = 0;
+    try {
+        for (; published < targets.size(); ++published) {
+            move_into_place(files[published]->path(), targets[published], overwrite);
+        }
+    } catch (...) {
+        std::error_code ignored;
+        for (std::size_t i = 0; i < published; ++i) {
+            if (!backups[i].empty()) {
+                fs::rename(backups[i], targets[i], ignored);
+            } else {
+                fs::remove(targets[i], ignored);
+            }
+        }
+        for (const fs::path& backup : backups) {
+            fs::remove(backup, ignored);
+        }
+        throw;
+    }
+    for (const fs::path& backup : backups) {
+        std::error_code ignored;
+        fs::remove(backup, ignored);
+    }
+}
+
+}  // namespace
+
+void write_file_atomically(const fs::path& target, bool overwrite,
+                           const std::function<void(std::ostream&)>& produce) {
+    check_writable(target, overwrite);
+    const FinishedTemporary file(target, produce);
+    move_into_place(file.path(), target, overwrite);
+    sync_directory(parent_of(target));
+}
+
+void write_files_atomically(const std::vector<AtomicOutput>& outputs, bool overwrite) {
+    std::vector<fs::path> targets;
+    for (const AtomicOutput& output : outputs) {
+        check_writable(output.target, overwrite);
+        targets.push_back(output.target);
+    }
+    std::vector<std::unique_ptr<FinishedTemporary>> files;
+    for (const AtomicOutput& output : outputs) {
+        files.push_back(std::make_unique<FinishedTemporary>(output.target, output.produce));
+    }
+    run_uninterrupted([&] { publish_together(targets, files, overwrite); });
+    for (const fs::path& target : targets) {
+        sync_directory(parent_of(target));
     }
 }
 
@@ -242,7 +334,16 @@ void write_directory_atomically(const fs::path& target, bool overwrite,
         fs::create_directories(temporary);
     });
     try {
-        produce(temporary);
+        try {
+            produce(temporary);
+        } catch (const std::runtime_error& error) {
+            // A file of the temporary is named as the output it was for (the temporary
+            // is gone when the message is read); other errors pass unchanged.
+            if (std::string_view(error.what()).find(temporary.string()) == std::string::npos) {
+                throw;
+            }
+            throw std::runtime_error(as_output(error.what(), temporary, target));
+        }
         if (fs::exists(target)) {
             if (!overwrite) {
                 throw FileExists(target);
@@ -262,13 +363,38 @@ void write_directory_atomically(const fs::path& target, bool overwrite,
     }
 }
 
-void write_text_file(const fs::path& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.close();
-    if (!out) {
-        throw path_error(path, "cannot write");
+void write_stream_file(const fs::path& path, const std::function<void(std::ostream&)>& produce) {
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0) {
+        throw path_error(path, std::string("cannot write: ") + std::strerror(errno));
     }
+    std::string failure;
+    try {
+        boost::iostreams::filtering_ostream out;
+        out.push(DescriptorSink(fd, &path, &failure), 1 << 16);
+        out.exceptions(std::ios::badbit);  // a failed write stops `produce` at once
+        produce(out);
+        out.flush();
+        out.exceptions(std::ios::goodbit);
+        out.reset();
+        if (!failure.empty()) {
+            throw std::ios_base::failure(failure);
+        }
+    } catch (const std::ios_base::failure& error) {
+        ::close(fd);
+        throw std::runtime_error(
+            !failure.empty() ? failure : path.string() + ": write failed: " + error.what());
+    } catch (...) {
+        ::close(fd);
+        throw;
+    }
+    if (::close(fd) != 0) {
+        throw path_error(path, std::string("write failed: ") + std::strerror(errno));
+    }
+}
+
+void write_text_file(const fs::path& path, const std::string& text) {
+    write_stream_file(path, [&](std::ostream& out) { out << text; });
 }
 
 std::string read_text_file(const fs::path& path) {

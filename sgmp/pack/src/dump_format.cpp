@@ -70,6 +70,8 @@ DumpColumns parse_atom_labels(const std::vector<std::string_view>& labels,
     if (columns.id < 0) {
         throw reader.error("ATOMS section lacks the 'id' column");
     }
+    detail::check_one_size_column(columns.radius >= 0, columns.diameter >= 0, "ATOMS section",
+                                  reader);
     if (columns.radius < 0 && columns.diameter < 0) {
         throw reader.error("ATOMS section lacks a 'radius' or 'diameter' column");
     }

@@ -92,6 +92,12 @@ void remove_registered_temporaries() {
     sweep_registry();
 }
 
+void run_uninterrupted(const std::function<void()>& work) {
+    // The watcher sweeps and exits under this lock (watch), so it waits for `work`.
+    const std::lock_guard lock(registry_mutex);
+    work();
+}
+
 TemporaryGuard::TemporaryGuard(fs::path path, const std::function<void()>& create)
     : path_(std::move(path)) {
     const std::lock_guard lock(registry_mutex);

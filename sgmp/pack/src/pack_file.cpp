@@ -182,17 +182,12 @@ void write_pack_as(const std::filesystem::path& path, const Pack& pack, PackForm
     check_writable(container, options.overwrite);
     std::ostringstream box;
     write_vtk_container(box, pack);
-    write_text(container, box.str(), options.overwrite);
-    try {
-        // Until the particles are in place, an interrupt removes the container too: the
-        // pair is published whole or not at all (a re-run would refuse a lone container).
-        const TemporaryGuard pair(container);
-        write_text(path, text, options.overwrite);
-    } catch (...) {
-        std::error_code ignored;
-        std::filesystem::remove(container, ignored);
-        throw;
-    }
+    const std::string container_text = box.str();
+    // The pair is published whole or not at all: a lone container makes a re-run refuse,
+    // and particles beside another pack's container would be read in the wrong box.
+    write_files_atomically({{container, [&](std::ostream& out) { out << container_text; }},
+                            {path, [&](std::ostream& out) { out << text; }}},
+                           options.overwrite);
 }
 
 }  // namespace sgmp

@@ -92,6 +92,15 @@ bool is_blank(std::string_view line) {
     return line.find_first_not_of(" \t") == std::string_view::npos;
 }
 
+void check_one_size_column(bool radius, bool diameter, const std::string& columns,
+                           const LineReader& reader) {
+    if (radius && diameter) {
+        throw reader.error(columns +
+                           " holds both 'radius' and 'diameter': give one (which would count is "
+                           "not clear)");
+    }
+}
+
 }  // namespace sgmp::detail
 
 #include <cmath>

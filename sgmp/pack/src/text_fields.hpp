@@ -32,6 +32,12 @@ int decimals_of(std::string_view field);
 /// True when the line has only blanks.
 bool is_blank(std::string_view line);
 
+/// The one size rule of the readers: a particle's size comes from a 'radius' or a
+/// 'diameter' column, never both (which would count is not clear). `columns` names the
+/// list ("Properties", "ATOMS section"); throws the reader's error at its current line.
+void check_one_size_column(bool radius, bool diameter, const std::string& columns,
+                           const LineReader& reader);
+
 }  // namespace sgmp::detail
 
 #include <unordered_map>

@@ -198,11 +198,7 @@ Columns parse_properties(const std::string& descriptor, bool have_radius,
     if (columns.x < 0) {
         throw reader.error("Properties lacks the 'pos' column");
     }
-    if (columns.radius >= 0 && columns.diameter >= 0) {
-        throw reader.error(
-            "Properties holds both 'radius' and 'diameter': give one (which "
-            "would count is not clear)");
-    }
+    detail::check_one_size_column(columns.radius >= 0, columns.diameter >= 0, "Properties", reader);
     if (columns.radius < 0 && columns.diameter < 0 && !have_radius) {
         throw reader.error(
             "Properties lacks a 'radius' or 'diameter' column; give the radius (--radius R)");

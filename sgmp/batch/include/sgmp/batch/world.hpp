@@ -27,7 +27,8 @@ class World {
     /// Every rank's `text`, in rank order, at rank 0 (empty elsewhere). A collective.
     std::vector<std::string> gather(const std::string& text) const;
 
-    /// Stops every rank with `status` (after a failure on one rank).
+    /// Stops every rank with `status` (after a failure on one rank), first removing this
+    /// rank's registered temporaries (interrupt.hpp), the summary's lock file among them.
     [[noreturn]] void abort(int status) const;
 
   private:

@@ -40,6 +40,12 @@ std::string option_spelling(std::string_view name, const OptionSpellings& except
 /// "OPTION VALUE: RULE" (or "OPTION: RULE" for an empty value).
 std::string usage_message(const ParameterError& error, const OptionSpellings& exceptions = {});
 
+/// The one-line text of a runtime failure (exit 1): `error.what()`, except for
+/// std::bad_alloc, whose text ("std::bad_alloc") tells a user nothing: "out of memory: …".
+/// run_main shows every failure through it; a command that reports its own failures
+/// (`sgmp convert`, `sgmp-reference`'s runs) does too.
+std::string failure_message(const std::exception& error);
+
 /// Runs `parse` (which parses the command line into `app`) and then `body` (the
 /// program's work, returning its exit status), mapping every exception to its one-line
 /// message and exit status as in the table above.

@@ -11,6 +11,7 @@
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "sgmp/pack/interrupt.hpp"
 
@@ -35,15 +36,32 @@ void check_writable(const std::filesystem::path& target, bool overwrite);
 void write_file_atomically(const std::filesystem::path& target, bool overwrite,
                            const std::function<void(std::ostream&)>& produce);
 
+/// One file of a set written as a whole (write_files_atomically).
+struct AtomicOutput {
+    std::filesystem::path target;
+    std::function<void(std::ostream&)> produce;
+};
+
+/// Writes several files as one, e.g. a legacy VTK pack and its container: each is
+/// produced into its own temporary (as write_file_atomically), and only when all are
+/// complete are they renamed into place, in order, with SIGINT and SIGTERM held off
+/// (run_uninterrupted), so an interrupt leaves either the old set or the new one. When a
+/// rename fails, the targets already replaced get their old content back.
+void write_files_atomically(const std::vector<AtomicOutput>& outputs, bool overwrite);
+
 /// Removes the temporaries (files or directories `.NAME.tmp-PID.HOST`) in `directory`
 /// that writers on this host left behind: their process no longer runs (a SIGKILL, a
 /// power cut). Temporaries of running processes and of other hosts are kept. Returns how
 /// many were removed; errors are ignored (a leftover costs only space).
 std::size_t remove_stale_temporaries(const std::filesystem::path& directory);
 
-/// Writes `text` to `path`, replacing it: for files inside a directory that is itself
-/// being built atomically (write_directory_atomically) or a scratch directory. Throws
-/// std::runtime_error "<path>: cannot write".
+/// Writes what `produce` writes to `path`, replacing it: for files inside a directory that
+/// is itself being built atomically (write_directory_atomically) or a scratch directory.
+/// Throws std::runtime_error "<path>: write failed: <reason>" (or "cannot write: <reason>").
+void write_stream_file(const std::filesystem::path& path,
+                       const std::function<void(std::ostream&)>& produce);
+
+/// write_stream_file of `text`.
 void write_text_file(const std::filesystem::path& path, const std::string& text);
 
 /// The whole content of a file; throws std::runtime_error "<path>: cannot read".

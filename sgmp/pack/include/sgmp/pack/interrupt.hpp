@@ -28,6 +28,12 @@ void install_interrupt_handler(const std::string& program, std::function<bool()>
 /// Removes every registered temporary now (what an interrupt does before exiting).
 void remove_registered_temporaries();
 
+/// Runs `work` with interrupts held off: a SIGINT or SIGTERM that comes meanwhile removes
+/// the temporaries and exits only after `work` returns. For steps that must not be cut in
+/// two, such as renaming a pair of files into place. `work` must not create or end a
+/// TemporaryGuard.
+void run_uninterrupted(const std::function<void()>& work);
+
 /// Registers a temporary file or directory for removal on interrupt while it lives.
 /// `create` (when given) makes it under the registry's lock, so an interrupt either
 /// removes it or comes before it exists: none is left behind by a thread racing the exit.

@@ -207,9 +207,14 @@ void add_relax(CLI::App& app, Options& o) {
                    "crosses the pack's height); the pack records the force left "
                    "(relax_force_max)")
         ->capture_default_str();
+    app.add_option("--relax-settle-limit", r.settle_limit,
+                   "bound on the LP iterations of the hard-sphere settling that ends the "
+                   "relaxation (1 to 1000000); a pack that reaches it is usually not a certified "
+                   "equilibrium")
+        ->capture_default_str();
     app.add_option("--relax-friction", r.friction,
                    "sliding friction mu of --relax frictional (pairs and walls), in [0, 10]; "
-                   "0.2 stands in for DEM pours at mu = 0.5")
+                   "the DEM frictional class's own mu, untuned")
         ->capture_default_str();
     app.add_option("--relax-tangential-ratio", r.tangential_ratio,
                    "tangential over normal contact stiffness of --relax frictional, in (0, 1]")

@@ -137,13 +137,20 @@ BOOST_AUTO_TEST_CASE(relax_none_writes_the_bytes_of_no_relaxation_and_relaxed_pa
     BOOST_TEST(s.run(common + "'" + s.path("none.xyz") + "' --relax none").status == 0);
     BOOST_TEST(sgmp::testing::read_bytes(s.path("plain.xyz")) ==
                sgmp::testing::read_bytes(s.path("none.xyz")));
-    // The frictional relaxation is not certified (certificate_test.cpp): refused without
-    // --keep-uncertified, no file.
-    const Run refused = s.run(common + "'" + s.path("r.xyz") + "' --relax frictional");
+    // A settling stopped by --relax-settle-limit before it balances every sphere is not
+    // certified: refused without --keep-uncertified (one line naming the worst sphere and
+    // its residual), no file; with it, written with certified=false.
+    const std::string stopped = " --relax frictionless --relax-settle-limit 1";
+    const Run refused = s.run(common + "'" + s.path("r.xyz") + "'" + stopped);
     BOOST_TEST(refused.status == 1);
-    BOOST_TEST(refused.err.find("not a certified frictional equilibrium") != std::string::npos,
+    BOOST_TEST(refused.err.find("not a certified frictionless equilibrium") != std::string::npos,
                refused.err);
+    BOOST_TEST(refused.err.find("m*g") != std::string::npos, refused.err);
     BOOST_TEST(!std::filesystem::exists(s.path("r.xyz")));
+    const Run kept = s.run(common + "'" + s.path("k.xyz") + "'" + stopped + " --keep-uncertified");
+    BOOST_TEST(kept.status == 0, kept.err);
+    BOOST_TEST(sgmp::read_pack_file(s.path("k.xyz")).metadata.get("certified").value_or("") ==
+               "false");
     // The frictionless one ends in a certified equilibrium (settle_test.cpp).
     const Run a = s.run(common + "'" + s.path("a.xyz") + "' --relax frictionless");
     const Run b = s.run(common + "'" + s.path("b.xyz") + "' --relax frictionless");

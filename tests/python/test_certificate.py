@@ -112,3 +112,107 @@ def test_a_column_on_the_floor_is_certified_by_both():
     a, b = balance_matrix(centres, radii, d, 1e-6)
     solution = lsq_linear(a.toarray(), b, bounds=(0, np.inf), method="bvls")
     assert np.allclose(sorted(solution.x), [1.0, 2.0, 3.0])
+
+
+def pyramid(normal, mu):
+    """The 8 edges n + mu*cos(pi/8)*(cos t1 + sin t2) of the certificate's pyramid, built
+    here from its definition (coulomb_pyramid.hpp): t1 = n x h / |n x h|, h = x unless
+    |n_x| >= 0.9, then y; t2 = n x t1."""
+    helper = np.array([1.0, 0.0, 0.0]) if abs(normal[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
+    t1 = np.cross(normal, helper)
+    t1 /= np.linalg.norm(t1)
+    t2 = np.cross(normal, t1)
+    mu_in = mu * np.cos(np.pi / 8)
+    return [normal + mu_in * (np.cos(2 * np.pi * k / 8) * t1 + np.sin(2 * np.pi * k / 8) * t2)
+            for k in range(8)]
+
+
+def frictional_balance(centres, radii, d, tolerance, mu):
+    """Columns: one per pyramid edge of each contact; rows: force (3) and torque over d (3)
+    per sphere, the contact at the surface point c - r*n of the sphere pushed along n."""
+    n = len(radii)
+    rows, cols, vals = [], [], []
+    contacts = []
+    for i, j in sorted(cKDTree(centres).query_pairs(2 * radii.max() + tolerance * d)):
+        distance = np.linalg.norm(centres[i] - centres[j])
+        if distance - radii[i] - radii[j] <= tolerance * d:
+            contacts.append((i, j, (centres[i] - centres[j]) / distance))
+    walls = [(1, -HALF, 1.0), (0, -HALF, 1.0), (0, HALF, -1.0), (2, -HALF, 1.0), (2, HALF, -1.0)]
+    for i in range(n):
+        for axis, plane, sign in walls:
+            if sign * (centres[i, axis] - plane) - radii[i] <= tolerance * d:
+                normal = np.zeros(3)
+                normal[axis] = sign
+                contacts.append((i, None, normal))
+    column = 0
+    for i, j, normal in contacts:
+        for edge in pyramid(normal, mu):
+            # Force edge on i at c_i - r_i n, and -edge on j at c_j + r_j n.
+            torque_i = np.cross(-radii[i] * normal, edge) / d
+            entries = [(6 * i + a, edge[a]) for a in range(3)]
+            entries += [(6 * i + 3 + a, torque_i[a]) for a in range(3)]
+            if j is not None:
+                torque_j = np.cross(radii[j] * normal, -edge) / d
+                entries += [(6 * j + a, -edge[a]) for a in range(3)]
+                entries += [(6 * j + 3 + a, torque_j[a]) for a in range(3)]
+            for row, value in entries:
+                rows.append(row)
+                cols.append(column)
+                vals.append(value)
+            column += 1
+    a = coo_matrix((vals, (rows, cols)), shape=(6 * n, column)).tocsc()
+    b = np.zeros(6 * n)
+    b[1::6] = (2 * radii / d) ** 3
+    return a, b, len(contacts)
+
+
+def highs_worst_residual(a, b, per_sphere):
+    """The least-L1 residual of non-negative edge forces (HiGHS); the worst sphere's
+    Euclidean residual over its `per_sphere` rows."""
+    from scipy.sparse import eye, hstack
+    n_rows, n_cols = a.shape
+    a_eq = hstack([a, eye(n_rows), -eye(n_rows)]).tocsc()
+    cost = np.concatenate([np.zeros(n_cols), np.ones(2 * n_rows)])
+    lp = linprog(cost, A_eq=a_eq, b_eq=b, bounds=(0, None), method="highs")
+    assert lp.status == 0, lp.message
+    s = lp.x[n_cols:n_cols + n_rows] - lp.x[n_cols + n_rows:]
+    return np.linalg.norm(s.reshape(-1, per_sphere), axis=1).max()
+
+
+@pytest.mark.parametrize("mu", ["0.2", "0.5"])
+def test_highs_certifies_the_frictional_relaxation(tmp_path, mu):
+    out = tmp_path / "frictional.xyz"
+    r = subprocess.run([str(SGMP), "pack", "--count", "60", "--arrangement", "loose-random",
+                        "--seed", "4", "--relax", "frictional", "--relax-friction", mu,
+                        "--keep-uncertified", "--out", str(out)],
+                       capture_output=True, text=True, check=False)
+    assert r.returncode == 0, r.stderr
+    header, centres, radii = read_xyz(out)
+    d = float(header["diameter"])
+    assert header["certificate"] == "frictional"
+    assert float(header["certificate_friction"]) == float(mu)
+    a, b, contacts = frictional_balance(centres, radii, d,
+                                        float(header["certificate_gap_tolerance"]), float(mu))
+    assert contacts == int(header["certificate_contacts"])
+    worst = highs_worst_residual(a, b, 6)
+    print(f"mu {mu}: worst residual ours {header['certificate_residual_max']}, "
+          f"HiGHS {worst:.3g} m*g over {contacts} contacts")
+    assert header["certified"] == "true"
+    assert worst <= float(header["certificate_residual_tolerance"])
+    # No sphere overlaps another or a wall beyond the gap tolerance (scipy's own search).
+    pairs = cKDTree(centres).query_pairs(2 * radii.max())
+    gaps = [np.linalg.norm(centres[i] - centres[j]) - radii[i] - radii[j] for i, j in pairs]
+    assert min(gaps) >= -1e-12 * d
+
+
+def test_highs_decides_the_triangle_by_its_friction():
+    # The triangle of settle_test (two spheres on the floor, one on top): it stands at
+    # mu = 0.5 (needs 2 - sqrt(3) = 0.268 at the upper contacts) and not at 0.1.
+    d = 0.1
+    y0 = -HALF + 0.5 * d
+    centres = np.array([[-0.5 * d, y0, 0.0], [0.5 * d, y0, 0.0], [0.0, y0 + np.sqrt(3) / 2 * d, 0.0]])
+    radii = np.full(3, 0.5 * d)
+    a, b, _ = frictional_balance(centres, radii, d, 1e-6, 0.5)
+    assert highs_worst_residual(a, b, 6) <= 1e-9
+    a, b, _ = frictional_balance(centres, radii, d, 1e-6, 0.1)
+    assert highs_worst_residual(a, b, 6) > 1e-3

@@ -41,7 +41,7 @@ def run(*args):
              "--fall-step", "0.002", "--keep-uncertified"],
         ),
         (
-            dict(count=120, arrangement="loose-random", seed=3, size_modes="1:0.6,0.5:0.4",
+            dict(count=50, arrangement="loose-random", seed=3, size_modes="1:0.6,0.5:0.4",
                  fraction_basis="volume", relax="frictional", relax_friction=0.3,
                  relax_stages=1),
             ["--size-modes", "1:0.6,0.5:0.4", "--fraction-basis", "volume", "--relax",

@@ -8,13 +8,13 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <tuple>
 #include <unordered_map>
 
+#include "sgmp/engine/coulomb_pyramid.hpp"
 #include "sgmp/pack/cell_grid.hpp"
 #include "sgmp/pack/pack_overlaps.hpp"
 
@@ -32,8 +32,6 @@ struct Contact {
 };
 
 constexpr std::size_t kNone = static_cast<std::size_t>(-1);
-/// Edges of the pyramid that stands for the Coulomb cone.
-constexpr int kConeEdges = 8;
 
 std::vector<Contact> find_contacts(const std::vector<Particle>& particles, const Container& box,
                                    double tolerance, double& deepest) {
@@ -201,13 +199,6 @@ std::vector<double> witness_forces(const std::vector<Contact>& contacts,
     return f;
 }
 
-/// Two unit tangents of the plane normal to n.
-std::pair<Vec3, Vec3> tangents(const Vec3& n) {
-    const Vec3 helper = std::abs(n.x()) < 0.9 ? Vec3(1.0, 0.0, 0.0) : Vec3(0.0, 1.0, 0.0);
-    const Vec3 t1 = n.cross(helper).normalized();
-    return {t1, n.cross(t1)};
-}
-
 /// The certificate's system: one column per contact (frictionless), or per edge of an
 /// inscribed pyramid of the Coulomb cone (frictional, with torques over d).
 System build_system(const std::vector<Particle>& particles, const std::vector<Contact>& contacts,
@@ -228,13 +219,7 @@ System build_system(const std::vector<Particle>& particles, const std::vector<Co
             s.close_column();
             continue;
         }
-        // Edges n + μ'·(cos θ t₁ + sin θ t₂), θ = 2πk/8, μ' = μ·cos(π/8): the pyramid lies
-        // inside the cone, so forces it finds obey Coulomb's law.
-        const auto [t1, t2] = tangents(c.normal);
-        const double mu = *friction * std::cos(std::numbers::pi / kConeEdges);
-        for (int k = 0; k < kConeEdges; ++k) {
-            const double theta = 2.0 * std::numbers::pi * k / kConeEdges;
-            const Vec3 edge = c.normal + mu * (std::cos(theta) * t1 + std::sin(theta) * t2);
+        for (const Vec3& edge : coulomb_pyramid(c.normal, *friction)) {
             const Vec3 moment = c.normal.cross(edge);  // torque per unit lever (−r n) × edge
             s.add(c.first, 0, edge);
             s.add(c.first, 3, -particles[c.first].radius / diameter * moment);
@@ -311,7 +296,7 @@ EquilibriumCertificate certify(const std::vector<Particle>& particles, const Con
         record_residuals(system, f, cert);
     }
     // Per contact, the total force (the sum over its pyramid's edges, for friction).
-    const std::size_t per = friction ? static_cast<std::size_t>(kConeEdges) : 1;
+    const std::size_t per = friction ? static_cast<std::size_t>(kPyramidEdges) : 1;
     cert.force.assign(contacts.size(), 0.0);
     for (std::size_t k = 0; k < contacts.size(); ++k) {
         for (std::size_t e = 0; e < per; ++e) {

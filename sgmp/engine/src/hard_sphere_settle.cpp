@@ -2,6 +2,7 @@
 
 #include <ClpSimplex.hpp>
 #include <CoinPackedMatrix.hpp>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -9,8 +10,10 @@
 #include <cstdint>
 #include <initializer_list>
 #include <stdexcept>
+#include <tuple>
 #include <unordered_map>
 
+#include "sgmp/engine/coulomb_pyramid.hpp"
 #include "sgmp/engine/neighbour_list.hpp"
 
 namespace sgmp::engine {
@@ -24,10 +27,36 @@ constexpr double kSlidingShare = 0.02;
 /// The trust region shrinks when a step lowers the energy by less than this times s (in
 /// m·g): the energy's slope along the best feasible step, which vanishes at an equilibrium.
 constexpr double kStallRate = 1e-4;
+/// Frictional: the cost of a move, in m·g per unit of s (split_moves). Rolling without
+/// slipping lets the frictional LP move at no energy cost (a sphere on two others rolls
+/// about the axis through its contacts); taken, such moves wander from vertex to vertex
+/// and find second-order instabilities: a tripod took 2,603 LPs and at μ = 1 never ended
+/// (5,000). With the cost it takes 3–8. A sphere balanced but for a force below this
+/// stays, so the certificate's residual is below it too (10⁻⁶ ≪ 10⁻³ m·g).
+constexpr double kNeutralPenalty = 1e-6;
 
 std::uint64_t pair_key(std::uint32_t i, std::uint32_t j) {
     return (static_cast<std::uint64_t>(i) << 32) | j;
 }
+
+/// Wall w of sphere i as a pair key: the sphere first, a partner no sphere index reaches.
+std::uint64_t wall_key(std::size_t i, Partner wall) {
+    return (static_cast<std::uint64_t>(i) << 32) | (0xFFFFFFF0U + static_cast<std::uint32_t>(wall));
+}
+
+/// A row of the LP: its contact (pair_key or wall_key) and, for a frictional contact, the
+/// edge of its pyramid (kNormalRow for a plain non-overlap row).
+struct RowKey {
+    std::uint64_t contact = 0;
+    std::uint32_t edge = 0;
+    bool operator==(const RowKey&) const = default;
+};
+constexpr std::uint32_t kNormalRow = 0xFFU;
+struct RowKeyHash {
+    std::size_t operator()(const RowKey& k) const {
+        return std::hash<std::uint64_t>{}(k.contact * 16U + k.edge);
+    }
+};
 
 /// The LP of one iteration in the scaled variables u = Δ/s (units of d), and the pairs of
 /// its rows.
@@ -36,76 +65,175 @@ struct Step {
     std::vector<int> col_index;
     std::vector<double> element;
     std::vector<double> row_upper;
-    std::vector<std::uint64_t> row_pair;
+    std::vector<RowKey> row_key;
     std::vector<double> col_lower;
     std::vector<double> col_upper;
     std::vector<double> objective;
 };
 
-/// Columns of sphere i: its scaled moves along x, y and z.
-constexpr std::size_t kColumns = 3;
+/// Columns of sphere i: its scaled moves along x, y and z, then (frictional) its scaled
+/// rotation ψ = θ/(2·s) about x, y and z (θ in radians: a sphere of diameter d turning by θ
+/// moves its surface by at most s·|ψ|·d).
+constexpr std::size_t kMoves = 3;
+std::size_t columns_per_sphere(const SettleOptions& options) {
+    return options.friction ? 6 : 3;
+}
+
+/// Appends rows to a Step: `add` puts a coefficient of one column into the open row,
+/// `close` ends it with its bound and key.
+struct RowWriter {
+    Step& st;
+    int row = 0;
+    void add(std::size_t column, double value) {
+        if (value == 0.0) {
+            return;  // no explicit zeros: CLP may pivot on them
+        }
+        st.row_index.push_back(row);
+        st.col_index.push_back(static_cast<int>(column));
+        st.element.push_back(value);
+    }
+    void add(std::size_t first_column, const Vec3& v) {
+        for (int a = 0; a < 3; ++a) {
+            add(first_column + static_cast<std::size_t>(a), v[a]);
+        }
+    }
+    void close(double upper, RowKey key) {
+        st.row_upper.push_back(upper);
+        st.row_key.push_back(key);
+        ++row;
+    }
+};
+
+/// The frictional rows of one contact of sphere i with partner j (j = none for a wall):
+/// for each pyramid edge E around the normal N pushing i away from its partner,
+/// E·(uᵢ − uⱼ at the contact point) ≥ −gap, in the scaled columns:
+///     −E·uᵢ + 2rᵢ·(N×E)·ψᵢ + E·uⱼ + 2rⱼ·(N×E)·ψⱼ ≤ gap/s
+/// (the rotation terms move the contact point; see the header for the duality).
+void frictional_rows(RowWriter& w, std::size_t columns, std::size_t i, const Ball* partner,
+                     std::size_t j, const Vec3& normal, double radius_i, double upper,
+                     std::uint64_t contact, const SettleOptions& options,
+                     std::vector<char>& turns) {
+    const auto edges = coulomb_pyramid(normal, *options.friction);
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        const Vec3& edge = edges[k];
+        const Vec3 moment = normal.cross(edge);
+        w.add(columns * i, -edge);
+        w.add(columns * i + kMoves, 2.0 * radius_i * moment);
+        if (partner != nullptr) {
+            w.add(columns * j, edge);
+            w.add(columns * j + kMoves, 2.0 * partner->r * moment);
+        }
+        w.close(upper, {contact, static_cast<std::uint32_t>(k)});
+    }
+    turns[i] = 1;
+    if (partner != nullptr) {
+        turns[j] = 1;
+    }
+}
 
 Step build_step(const std::vector<Ball>& balls, const NeighbourList& list, const Container& box,
-                double trust, const std::vector<double>& weight) {
+                double trust, const std::vector<double>& weight, const SettleOptions& options) {
     Step st;
+    RowWriter w{st};
     const std::size_t n = balls.size();
+    const std::size_t columns = columns_per_sphere(options);
     const double cutoff = 2.0 * std::sqrt(3.0) * trust;
-    int row = 0;
+    std::vector<char> turns(n, 0);  // spheres with a frictional contact may turn
     for (std::size_t i = 0; i < n; ++i) {
         for (const std::uint32_t j : list.of(i)) {
-            const double dx = balls[j].x - balls[i].x;
-            const double dy = balls[j].y - balls[i].y;
-            const double dz = balls[j].z - balls[i].z;
-            const double dist = std::sqrt(dx * dx + dy * dy + dz * dz);
+            const Vec3 d(balls[j].x - balls[i].x, balls[j].y - balls[i].y, balls[j].z - balls[i].z);
+            const double dist = d.norm();
             const double gap = dist - balls[i].r - balls[j].r;
             if (gap >= cutoff || dist == 0.0) {
                 continue;
             }
-            const double normal[3] = {dx / dist, dy / dist, dz / dist};
-            for (std::size_t a = 0; a < 3; ++a) {
-                if (normal[a] == 0.0) {
-                    continue;  // no explicit zeros: CLP may pivot on them
-                }
-                for (const auto& [sphere, sign] :
-                     {std::pair{i, 1.0}, std::pair{std::size_t{j}, -1.0}}) {
-                    st.row_index.push_back(row);
-                    st.col_index.push_back(static_cast<int>(kColumns * sphere + a));
-                    st.element.push_back(sign * normal[a]);
-                }
+            const RowKey key{pair_key(static_cast<std::uint32_t>(i), j), kNormalRow};
+            if (options.friction && gap <= trust) {
+                frictional_rows(w, columns, i, &balls[j], j, -d / dist, balls[i].r, gap / trust,
+                                key.contact, options, turns);
+                continue;
             }
-            st.row_upper.push_back(gap / trust);
-            st.row_pair.push_back(pair_key(static_cast<std::uint32_t>(i), j));
-            ++row;
+            w.add(columns * i, d / dist);
+            w.add(columns * j, -d / dist);
+            w.close(gap / trust, key);
         }
     }
-    st.col_lower.assign(kColumns * n, -1.0);
-    st.col_upper.assign(kColumns * n, 1.0);
-    st.objective.assign(kColumns * n, 0.0);
+    st.col_lower.assign(columns * n, -1.0);
+    st.col_upper.assign(columns * n, 1.0);
+    st.objective.assign(columns * n, 0.0);
     const auto clamp = [&](std::size_t col, double lo, double hi) {
         st.col_upper[col] = std::min(1.0, hi / trust);
         st.col_lower[col] = std::min(std::max(-1.0, lo / trust), st.col_upper[col]);  // rounding
     };
     for (std::size_t i = 0; i < n; ++i) {
         const Ball& b = balls[i];
-        const std::size_t c = kColumns * i;
+        const std::size_t c = columns * i;
         clamp(c, box.x_min + b.r - b.x, box.x_max - b.r - b.x);
         clamp(c + 1, box.floor + b.r - b.y, 1e300);
         clamp(c + 2, box.z_min + b.r - b.z, box.z_max - b.r - b.z);
         st.objective[c + 1] = weight[i];
+        if (!options.friction) {
+            continue;
+        }
+        const std::array<std::tuple<double, Vec3, Partner>, 5> walls{{
+            {b.y - b.r - box.floor, Vec3(0.0, 1.0, 0.0), Partner::Floor},
+            {b.x - b.r - box.x_min, Vec3(1.0, 0.0, 0.0), Partner::XMin},
+            {box.x_max - b.x - b.r, Vec3(-1.0, 0.0, 0.0), Partner::XMax},
+            {b.z - b.r - box.z_min, Vec3(0.0, 0.0, 1.0), Partner::ZMin},
+            {box.z_max - b.z - b.r, Vec3(0.0, 0.0, -1.0), Partner::ZMax},
+        }};
+        for (const auto& [gap, normal, wall] : walls) {
+            if (gap <= trust) {
+                frictional_rows(w, columns, i, nullptr, 0, normal, b.r, std::max(gap, 0.0) / trust,
+                                wall_key(i, wall), options, turns);
+            }
+        }
+    }
+    for (std::size_t i = 0; options.friction && i < n; ++i) {
+        for (std::size_t a = kMoves; a < columns && turns[i] == 0; ++a) {
+            st.col_lower[columns * i + a] = 0.0;  // no contact to turn against: held still
+            st.col_upper[columns * i + a] = 0.0;
+        }
     }
     return st;
 }
 
+/// The step with each move u = p − q split into p, q ≥ 0, both at cost `penalty` beside
+/// u's own: a move that lowers no energy costs penalty·|u| and is not taken. Columns 2k
+/// and 2k + 1 are u_k's p and q.
+Step split_moves(const Step& st, double penalty) {
+    Step out;
+    out.row_upper = st.row_upper;
+    out.row_key = st.row_key;
+    for (std::size_t e = 0; e < st.element.size(); ++e) {
+        for (const int half : {0, 1}) {
+            out.row_index.push_back(st.row_index[e]);
+            out.col_index.push_back(2 * st.col_index[e] + half);
+            out.element.push_back(half == 0 ? st.element[e] : -st.element[e]);
+        }
+    }
+    for (std::size_t k = 0; k < st.objective.size(); ++k) {
+        const double lo = st.col_lower[k];
+        const double hi = st.col_upper[k];
+        out.col_lower.insert(out.col_lower.end(), {std::max(0.0, lo), std::max(0.0, -hi)});
+        out.col_upper.insert(out.col_upper.end(), {std::max(0.0, hi), std::max(0.0, -lo)});
+        out.objective.insert(out.objective.end(),
+                             {st.objective[k] + penalty, -st.objective[k] + penalty});
+    }
+    return out;
+}
+
 /// Sphere i's scaled displacement from the LP's columns.
-std::array<double, 3> displacement(const std::vector<double>& u, std::size_t i) {
-    const std::size_t c = kColumns * i;
+std::array<double, 3> displacement(const std::vector<double>& u, std::size_t i,
+                                   std::size_t columns) {
+    const std::size_t c = columns * i;
     return {u[c], u[c + 1], u[c + 2]};
 }
 
 /// The basis of the last LP, to warm-start the next.
 struct Basis {
     std::vector<ClpSimplex::Status> columns;
-    std::unordered_map<std::uint64_t, ClpSimplex::Status> rows;
+    std::unordered_map<RowKey, ClpSimplex::Status, RowKeyHash> rows;
 };
 
 /// Largest violation of the step's bounds and rows by the LP's solution.
@@ -131,8 +259,9 @@ double violation(const ClpSimplex& model, const Step& st) {
 enum class Start { Warm, ValuesPass, Slack };
 
 /// Solves the step's LP with CLP from `start`, falling back to the next start when CLP
-/// cannot use it.
-void solve_step(ClpSimplex& model, const Step& st, const Basis& basis, Start start,
+/// cannot use it; false when no start gives a feasible optimum (CLP's numerical trouble
+/// with nearly parallel rows, seen with frictional rows at mixed sizes).
+bool solve_step(ClpSimplex& model, const Step& st, const Basis& basis, Start start,
                 SettleStats& stats) {
     const bool warm = start == Start::Warm && basis.columns.size() == st.objective.size();
     CoinPackedMatrix matrix(false, st.row_index.data(), st.col_index.data(), st.element.data(),
@@ -148,8 +277,8 @@ void solve_step(ClpSimplex& model, const Step& st, const Basis& basis, Start sta
         for (std::size_t k = 0; k < basis.columns.size(); ++k) {
             model.setColumnStatus(static_cast<int>(k), basis.columns[k]);
         }
-        for (std::size_t r = 0; r < st.row_pair.size(); ++r) {
-            const auto it = basis.rows.find(st.row_pair[r]);
+        for (std::size_t r = 0; r < st.row_key.size(); ++r) {
+            const auto it = basis.rows.find(st.row_key[r]);
             model.setRowStatus(static_cast<int>(r),
                                it != basis.rows.end() ? it->second : ClpSimplex::basic);
         }
@@ -178,16 +307,14 @@ void solve_step(ClpSimplex& model, const Step& st, const Basis& basis, Start sta
         if (start != Start::Slack) {  // a start CLP could not use: solve afresh
             ClpSimplex fresh;
             fresh.setLogLevel(0);
-            solve_step(fresh, st, basis, warm ? Start::ValuesPass : Start::Slack, stats);
+            const bool solved =
+                solve_step(fresh, st, basis, warm ? Start::ValuesPass : Start::Slack, stats);
             model = fresh;
-            return;
+            return solved;
         }
-        throw std::runtime_error("settle_hard_spheres: the LP of iteration " +
-                                 std::to_string(stats.iterations) + " failed (CLP status " +
-                                 std::to_string(model.status()) + ", " +
-                                 std::to_string(model.secondaryStatus()) + ", violation " +
-                                 std::to_string(violation(model, st)) + ")");
+        return false;
     }
+    return true;
 }
 
 void save_basis(const ClpSimplex& model, const Step& st, Basis& basis) {
@@ -196,34 +323,34 @@ void save_basis(const ClpSimplex& model, const Step& st, Basis& basis) {
         basis.columns[k] = model.getColumnStatus(static_cast<int>(k));
     }
     basis.rows.clear();
-    for (std::size_t r = 0; r < st.row_pair.size(); ++r) {
-        basis.rows.emplace(st.row_pair[r], model.getRowStatus(static_cast<int>(r)));
+    for (std::size_t r = 0; r < st.row_key.size(); ++r) {
+        basis.rows.emplace(st.row_key[r], model.getRowStatus(static_cast<int>(r)));
     }
 }
 
-/// The contact forces of the step's LP optimum (see the header): pair rows' −y, and the
-/// reduced costs of columns held by a wall or the floor.
+/// The contact forces of a frictionless step's LP optimum (see the header): pair rows' −y,
+/// and the reduced costs of columns held by a wall or the floor.
 std::vector<ContactForce> lp_forces(const ClpSimplex& model, const Step& st) {
     std::vector<ContactForce> forces;
     const double* y = model.dualRowSolution();
-    for (std::size_t r = 0; r < st.row_pair.size(); ++r) {
+    for (std::size_t r = 0; r < st.row_key.size(); ++r) {
         if (-y[r] > 0.0) {
-            forces.push_back({static_cast<std::size_t>(st.row_pair[r] >> 32),
-                              static_cast<std::size_t>(st.row_pair[r] & 0xFFFFFFFFU),
+            forces.push_back({static_cast<std::size_t>(st.row_key[r].contact >> 32),
+                              static_cast<std::size_t>(st.row_key[r].contact & 0xFFFFFFFFU),
                               Partner::Sphere, -y[r]});
         }
     }
     const double* z = model.getReducedCost();
-    constexpr std::array<std::pair<Partner, Partner>, kColumns> walls{
+    constexpr std::array<std::pair<Partner, Partner>, kMoves> walls{
         {{Partner::XMin, Partner::XMax},
          {Partner::Floor, Partner::Floor},
          {Partner::ZMin, Partner::ZMax}}};
     for (std::size_t col = 0; col < st.objective.size(); ++col) {
-        const auto [low, high] = walls[col % kColumns];
-        const std::size_t sphere = col / kColumns;
+        const auto [low, high] = walls[col % kMoves];
+        const std::size_t sphere = col / kMoves;
         if (z[col] > 0.0 && st.col_lower[col] > -1.0) {  // held from below by a wall
             forces.push_back({sphere, 0, low, z[col]});
-        } else if (z[col] < 0.0 && st.col_upper[col] < 1.0 && col % kColumns != 1) {
+        } else if (z[col] < 0.0 && st.col_upper[col] < 1.0 && col % kMoves != 1) {
             forces.push_back({sphere, 0, high, -z[col]});
         }
     }
@@ -236,8 +363,9 @@ SettleStats settle_hard_spheres(std::vector<Particle>& particles, const Containe
                                 double diameter, const SettleOptions& options) {
     if (!(diameter > 0.0) || !(options.trust_min > 0.0) ||
         !(options.trust_start >= options.trust_min) ||
-        !(options.trust_max >= options.trust_start)) {
-        throw std::invalid_argument("settle_hard_spheres: bad diameter or trust region");
+        !(options.trust_max >= options.trust_start) ||
+        (options.friction && !(*options.friction >= 0.0 && std::isfinite(*options.friction)))) {
+        throw std::invalid_argument("settle_hard_spheres: bad diameter, trust region or friction");
     }
     SettleStats stats;
     const std::size_t n = particles.size();
@@ -257,6 +385,8 @@ SettleStats settle_hard_spheres(std::vector<Particle>& particles, const Containe
         weight[i] = std::pow(2.0 * balls[i].r, 3);
     }
     const std::vector<Ball> start = balls;
+    const std::size_t columns = columns_per_sphere(options);
+    const double penalty = options.friction ? kNeutralPenalty : 0.0;
     double trust = options.trust_start;
     NeighbourList list;
     Basis basis;
@@ -264,30 +394,43 @@ SettleStats settle_hard_spheres(std::vector<Particle>& particles, const Containe
     model.setLogLevel(0);
     while (stats.iterations < options.max_iterations) {
         list.build(balls, 2.0 * std::sqrt(3.0) * trust);
-        const Step st = build_step(balls, list, box, trust, weight);
-        std::vector<double> u(kColumns * n);
-        if (st.row_pair.empty()) {  // no pair can meet: each sphere falls as far as it may
+        const Step built = build_step(balls, list, box, trust, weight, options);
+        const Step st = penalty > 0.0 ? split_moves(built, penalty) : built;
+        std::vector<double> u(columns * n);
+        if (st.row_key.empty()) {  // no pair can meet: each sphere falls as far as it may
             for (std::size_t i = 0; i < n; ++i) {
-                u[kColumns * i + 1] = st.col_lower[kColumns * i + 1];
+                u[columns * i + 1] = built.col_lower[columns * i + 1];
             }
             basis.columns.clear();
             stats.forces.clear();  // a sphere resting on the floor carries its weight there
             for (std::size_t i = 0; i < n; ++i) {
-                if (st.col_lower[kColumns * i + 1] > -1.0) {
+                if (built.col_lower[columns * i + 1] > -1.0) {
                     stats.forces.push_back({i, 0, Partner::Floor, weight[i]});
                 }
             }
         } else {
-            solve_step(model, st, basis, Start::Warm, stats);
-            std::copy_n(model.primalColumnSolution(), kColumns * n, u.begin());
+            if (!solve_step(model, st, basis, Start::Warm, stats)) {
+                stats.solver_failed = true;  // the pack is left as the last step made it
+                break;
+            }
+            if (penalty > 0.0) {
+                const double* x = model.primalColumnSolution();
+                for (std::size_t k = 0; k < columns * n; ++k) {
+                    u[k] = x[2 * k] - x[2 * k + 1];
+                }
+            } else {
+                std::copy_n(model.primalColumnSolution(), columns * n, u.begin());
+            }
             save_basis(model, st, basis);
-            stats.forces = lp_forces(model, st);
+            if (!options.friction && penalty == 0.0) {
+                stats.forces = lp_forces(model, st);
+            }
         }
         ++stats.iterations;
         double drop = 0.0;
         std::size_t falling = 0;  // spheres held by the trust region on their way down
         for (std::size_t i = 0; i < n; ++i) {
-            const auto [ux, uy, uz] = displacement(u, i);
+            const auto [ux, uy, uz] = displacement(u, i, columns);
             balls[i].x += trust * ux;
             balls[i].y += trust * uy;
             balls[i].z += trust * uz;
@@ -295,6 +438,10 @@ SettleStats settle_hard_spheres(std::vector<Particle>& particles, const Containe
             falling += uy <= -1.0 + 1e-6 ? 1 : 0;
         }
         stats.energy_drop += drop;
+        if (penalty > 0.0 && std::all_of(u.begin(), u.end(), [](double v) { return v == 0.0; })) {
+            stats.converged = true;  // no move lowers the energy by more than it costs
+            break;
+        }
         if (static_cast<double>(falling) > kSlidingShare * static_cast<double>(n)) {
             trust = std::min(2.0 * trust, options.trust_max);
         } else if (drop < kStallRate * trust) {

@@ -174,12 +174,10 @@ void record_relaxation(const RelaxParams& params, const RelaxStats& stats, Metad
     m.set_integer("relax_finish_lifted", stats.finish_lifted);
     m.set_number("relax_finish_move_max", stats.finish_move_max);
     m.set_number("relax_finish_move_mean", stats.finish_move_mean);
-    if (params.mode == RelaxMode::Frictionless) {
-        m.set_integer("relax_settle_iterations", stats.settle_iterations);
-        m.set("relax_settle_converged", stats.settle_converged ? "true" : "false");
-        m.set_number("relax_settle_move_max", stats.settle_move_max);
-        m.set_number("relax_settle_energy_drop", stats.settle_energy_drop);
-    }
+    m.set_integer("relax_settle_iterations", stats.settle_iterations);
+    m.set("relax_settle_converged", stats.settle_converged ? "true" : "false");
+    m.set_number("relax_settle_move_max", stats.settle_move_max);
+    m.set_number("relax_settle_energy_drop", stats.settle_energy_drop);
 }
 
 /// The equilibrium certificate's header keys (equilibrium_certificate.hpp).

@@ -495,21 +495,23 @@ RelaxStats relax_pack(std::vector<Particle>& particles, const Container& contain
     stats.finish_lifted = static_cast<long long>(finish.lifted);
     stats.finish_move_max = finish.move_max / diameter;
     stats.finish_move_mean = finish.move_sum / static_cast<double>(particles.size()) / diameter;
-    if (params.mode == RelaxMode::Frictionless) {
-        SettleOptions options;
-        if (progress) {
-            options.progress = [&](int iteration, double trust) {
-                progress({RelaxProgress::Phase::Settling, params.stages - 1, params.stages,
-                          stats.steps, iteration, trust});
-            };
-        }
-        const SettleStats settle = settle_hard_spheres(particles, container, diameter, options);
-        stats.settle_iterations = settle.iterations;
-        stats.settle_converged = settle.converged;
-        stats.settle_move_max = settle.move_max;
-        stats.settle_energy_drop = settle.energy_drop;
-        stats.settle_forces = settle.forces;
+    SettleOptions options;
+    options.max_iterations = params.settle_limit;
+    if (params.mode == RelaxMode::Frictional && params.friction > 0.0) {
+        options.friction = params.friction;  // at μ = 0 the frictionless settling is the same
     }
+    if (progress) {
+        options.progress = [&](int iteration, double trust) {
+            progress({RelaxProgress::Phase::Settling, params.stages - 1, params.stages, stats.steps,
+                      iteration, trust});
+        };
+    }
+    const SettleStats settle = settle_hard_spheres(particles, container, diameter, options);
+    stats.settle_iterations = settle.iterations;
+    stats.settle_converged = settle.converged;
+    stats.settle_move_max = settle.move_max;
+    stats.settle_energy_drop = settle.energy_drop;
+    stats.settle_forces = settle.forces;
     return stats;
 }
 

@@ -39,6 +39,10 @@ void validate(const RelaxParams& p) {
     if (!(p.friction >= 0.0) || !(p.friction <= 10.0)) {
         throw ParameterError("relax_friction", format_number(p.friction), "must be in [0, 10]");
     }
+    if (p.settle_limit < 1 || p.settle_limit > 1000000) {
+        throw ParameterError("relax_settle_limit", std::to_string(p.settle_limit),
+                             "must be between 1 and 1000000");
+    }
     if (!(p.tangential_ratio > 0.0) || !(p.tangential_ratio <= 1.0)) {
         throw ParameterError("relax_tangential_ratio", format_number(p.tangential_ratio),
                              "must be in (0, 1]");
@@ -72,6 +76,7 @@ void record(const RelaxParams& p, Metadata& m) {
     m.set_number("relax_force_tolerance", p.force_tolerance);
     m.set_number("relax_time", p.time);
     m.set_number("relax_crossings", p.crossings);
+    m.set_integer("relax_settle_limit", p.settle_limit);
     if (p.mode == RelaxMode::Frictional) {
         m.set_number("relax_friction", p.friction);
         m.set_number("relax_tangential_ratio", p.tangential_ratio);

@@ -174,6 +174,10 @@ const std::map<std::string, Setter>& setters() {
          [](PackRequest& r, auto v) { r.relax.crossings = number(v, "relax-crossings"); }},
         {"relax_friction",
          [](PackRequest& r, auto v) { r.relax.friction = number(v, "relax-friction"); }},
+        {"relax_settle_limit",
+         [](PackRequest& r, auto v) {
+             r.relax.settle_limit = static_cast<int>(integer(v, "relax-settle-limit"));
+         }},
     };
     return table;
 }

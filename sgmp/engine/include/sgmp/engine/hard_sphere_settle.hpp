@@ -35,8 +35,28 @@
 /// read wᵢ·ŷ = Σⱼ λᵢⱼ·(−nᵢⱼ) + Σ_walls z·n_wall: the rows' multipliers λ = −y (CLP's row
 /// duals y ≤ 0 on active ≤ rows) and the reduced costs z of the wall-held columns are the
 /// contact forces, in m·g (the objective is in m·g per unit of u).
+///
+/// Frictional (`SettleOptions::friction` = μ): every sphere also has three rotation
+/// columns θᵢ, and each contact within s of touching (pairs and walls) gets, instead of its
+/// one non-overlap row, one row per edge Eₖ of the Coulomb pyramid (coulomb_pyramid.hpp)
+/// around the normal N pushing sphere i from its partner:
+///
+///     Eₖ·(Δᵢ + θᵢ × (−rᵢN) − Δⱼ − θⱼ × (rⱼN)) ≥ −hᵢⱼ
+///
+/// (the displacement of i's contact point relative to j's along Eₖ; a wall's Δⱼ, θⱼ are 0).
+/// This is the kinematics of rigid spheres with associated Coulomb sliding: a contact may
+/// slip only while it opens by μ'·|slip|, so it is conservative too (the mean of the eight
+/// rows is the non-overlap row), and the energy still falls monotonically. Its dual is the
+/// frictional certificate's (equilibrium_certificate.hpp): at an optimum Δ = 0 the
+/// multipliers βₖ ≥ 0 are forces Σₖ βₖ·Eₖ inside every pyramid that balance each sphere's
+/// weight, and the rotation columns' stationarity is each sphere's torque balance. The
+/// settled pack is a frictional equilibrium at μ; the certificate checks it on its own.
+/// Rolling without slipping makes many moves free; each move therefore costs 10⁻⁶ m·g per
+/// unit of s (every column split into its positive and negative parts), so only moves
+/// that lower the energy are taken, and the settling ends as soon as the LP moves nothing.
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "sgmp/engine/equilibrium_certificate.hpp"
@@ -50,25 +70,31 @@ struct SettleOptions {
     double trust_max = 0.2;     ///< largest s, over d
     double trust_min = 1e-9;    ///< the settling ends when s is below this, over d
     int max_iterations = 5000;
+    /// Sliding friction μ ≥ 0 of a frictional settling; unset: frictionless.
+    std::optional<double> friction;
     /// Called after every LP with the iteration count and the trust region (over d).
     std::function<void(int, double)> progress;
 };
 
 struct SettleStats {
     int iterations = 0;
-    bool converged = false;    ///< ended by the trust region, not by the iteration bound
+    bool converged = false;  ///< ended by the trust region, not by the iteration bound
+    /// The LP solver found no feasible optimum for a step (all its starts tried): the
+    /// settling stopped there, with every earlier step kept (each is overlap-free).
+    bool solver_failed = false;
     double energy_drop = 0.0;  ///< Σ wᵢ·(yᵢ before − yᵢ after) / d, in m·g·d
     double move_max = 0.0;     ///< largest displacement of a sphere, over d
     double lp_seconds = 0.0;   ///< time in the LP solver (not recorded in packs)
     long long lp_pivots = 0;   ///< simplex iterations over all LPs
-    /// The last LP's multipliers: λᵢⱼ ≥ 0 of the pair rows and the reduced costs of the
-    /// columns held by a wall or the floor, the contact forces in m·g of the equilibrium
-    /// found (the certificate's witness, equilibrium_certificate.hpp).
+    /// The last LP's multipliers (frictionless only): λᵢⱼ ≥ 0 of the pair rows and the reduced
+    /// costs of the columns held by a wall or the floor, the contact forces in m·g of the
+    /// equilibrium found (the certificate's witness, equilibrium_certificate.hpp).
     std::vector<ContactForce> forces;
 };
 
 /// Settles `particles` (scale diameter `diameter`, no overlaps deeper than rounding) in
-/// `container` as above. Particle order, ids, radii and colours are kept.
+/// `container` as above. Particle order, ids, radii and colours are kept. Whether the
+/// result is an equilibrium is the certificate's to say (equilibrium_certificate.hpp).
 SettleStats settle_hard_spheres(std::vector<Particle>& particles, const Container& container,
                                 double diameter, const SettleOptions& options = {});
 

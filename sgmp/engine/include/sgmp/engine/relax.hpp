@@ -46,9 +46,10 @@
 /// stages before the tolerance is met; `relax_force_max` in the header says what is left
 /// (about 1–5 m·g on the worst sphere at N = 3000–9000: a few spheres still sliding).
 ///
-/// Settle (frictionless): the hard-sphere pack is then settled under gravity by sequential
-/// linear programming (hard_sphere_settle.hpp) into an exact frictionless equilibrium, which
-/// the pack's certificate checks (equilibrium_certificate.hpp).
+/// Settle: the hard-sphere pack is then settled under gravity by sequential linear
+/// programming (hard_sphere_settle.hpp) into an exact equilibrium, frictionless or
+/// frictional at the relaxation's μ (at μ = 0 the frictionless settling), which the pack's
+/// certificate checks (equilibrium_certificate.hpp).
 ///
 /// Finish: the real spheres are (1 + s) times smaller than the soft ones (default s = 0: the
 /// same), so a soft overlap below s·(rᵢ + rⱼ) is a real gap of at most s·(rᵢ + rⱼ); deeper

@@ -57,16 +57,19 @@ struct RelaxParams {
     /// unconverged (the pack records the force left, `relax_force_max`).
     double crossings = 40.0;
     /// Sliding friction μ of the frictional relaxation (pairs, walls and floor alike). Unused
-    /// by the frictionless one. The default 0.2 is the relaxation's stand-in for the DEM
-    /// frictional class (pours at μ = 0.5): measured against that class, a relaxation from
-    /// rest at μ = 0.2 agrees on φ, Z(10⁻³), Z(10⁻²), the split ratio, g(r) and P(Z) at
-    /// N = 3000, where one at μ = 0.5 keeps too few contacts
-    /// (sgmp/engine/docs/relaxation-frictional-2026-11.md).
-    double friction = 0.2;
+    /// by the frictionless one. The default is the DEM frictional class's own, 0.5: the
+    /// relaxation ends in a certified equilibrium at this μ, and no value was chosen by
+    /// comparison with the pours (an earlier soft-only relaxation used 0.2, tuned against
+    /// them: sgmp/engine/docs/relaxation-frictional-2026-11.md).
+    double friction = 0.5;
     /// Tangential over normal stiffness k_t/k of the frictional relaxation. 2/7 makes the
     /// tangential oscillation of a contact as fast as the normal one for a solid sphere
     /// (I = 2/5·m·r²), the usual choice of linear-spring DEM.
     double tangential_ratio = 2.0 / 7.0;
+    /// Bound on the LP iterations of the hard-sphere settling that ends both relaxations
+    /// (hard_sphere_settle.hpp). A settling that reaches it leaves a pack that is usually
+    /// not an equilibrium: the certificate then says so (certified=false).
+    int settle_limit = 5000;
 };
 
 /// Throws ParameterError (the parameter's header name, its value, the rule) for the

@@ -173,6 +173,8 @@ BOOST_AUTO_TEST_CASE(frictional_relaxed_packs_are_certified_equilibria_over_seed
                        "seed " << seed << " mu " << mu << ": residual "
                                << pack.metadata.get("certificate_residual_max").value_or(""));
             BOOST_TEST(pack.metadata.get("certificate").value_or("") == "frictional");
+            const std::string end = pack.metadata.get("relax_settle_end").value_or("");
+            BOOST_TEST((end == "still" || end == "trust-region"), end);
             const auto overlaps = count_overlaps(pack.particles, kBox, 1e-12 * kD);
             BOOST_TEST(overlaps.pairs == 0u);
             BOOST_TEST(overlaps.walls == 0u);

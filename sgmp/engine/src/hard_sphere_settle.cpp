@@ -27,12 +27,13 @@ constexpr double kSlidingShare = 0.02;
 /// The trust region shrinks when a step lowers the energy by less than this times s (in
 /// m·g): the energy's slope along the best feasible step, which vanishes at an equilibrium.
 constexpr double kStallRate = 1e-4;
-/// Frictional: the cost of a move, in m·g per unit of s (split_moves). Rolling without
+/// Frictional: the cost of a move, in units of the sphere's weight per unit of s
+/// (split_moves). Rolling without
 /// slipping lets the frictional LP move at no energy cost (a sphere on two others rolls
 /// about the axis through its contacts); taken, such moves wander from vertex to vertex
 /// and find second-order instabilities: a tripod took 2,603 LPs and at μ = 1 never ended
 /// (5,000). With the cost it takes 3–8. A sphere balanced but for a force below this
-/// stays, so the certificate's residual is below it too (10⁻⁶ ≪ 10⁻³ m·g).
+/// stays, so the certificate's residual is below it too (10⁻⁶·wᵢ ≪ 10⁻³ m·g).
 constexpr double kNeutralPenalty = 1e-6;
 
 std::uint64_t pair_key(std::uint32_t i, std::uint32_t j) {
@@ -198,10 +199,11 @@ Step build_step(const std::vector<Ball>& balls, const NeighbourList& list, const
     return st;
 }
 
-/// The step with each move u = p − q split into p, q ≥ 0, both at cost `penalty` beside
-/// u's own: a move that lowers no energy costs penalty·|u| and is not taken. Columns 2k
-/// and 2k + 1 are u_k's p and q.
-Step split_moves(const Step& st, double penalty) {
+/// The step with each move u = p − q split into p, q ≥ 0, both at cost penalty·wᵢ (wᵢ the
+/// sphere's weight) beside u's own: a move that lowers no energy costs penalty·wᵢ·|u| and
+/// is not taken. Columns 2k and 2k + 1 are u_k's p and q.
+Step split_moves(const Step& st, double penalty, const std::vector<double>& weight,
+                 std::size_t columns) {
     Step out;
     out.row_upper = st.row_upper;
     out.row_key = st.row_key;
@@ -217,8 +219,9 @@ Step split_moves(const Step& st, double penalty) {
         const double hi = st.col_upper[k];
         out.col_lower.insert(out.col_lower.end(), {std::max(0.0, lo), std::max(0.0, -hi)});
         out.col_upper.insert(out.col_upper.end(), {std::max(0.0, hi), std::max(0.0, -lo)});
+        const double cost = penalty * weight[k / columns];
         out.objective.insert(out.objective.end(),
-                             {st.objective[k] + penalty, -st.objective[k] + penalty});
+                             {st.objective[k] + cost, -st.objective[k] + cost});
     }
     return out;
 }
@@ -395,7 +398,7 @@ SettleStats settle_hard_spheres(std::vector<Particle>& particles, const Containe
     while (stats.iterations < options.max_iterations) {
         list.build(balls, 2.0 * std::sqrt(3.0) * trust);
         const Step built = build_step(balls, list, box, trust, weight, options);
-        const Step st = penalty > 0.0 ? split_moves(built, penalty) : built;
+        const Step st = penalty > 0.0 ? split_moves(built, penalty, weight, columns) : built;
         std::vector<double> u(columns * n);
         if (st.row_key.empty()) {  // no pair can meet: each sphere falls as far as it may
             for (std::size_t i = 0; i < n; ++i) {
@@ -403,7 +406,7 @@ SettleStats settle_hard_spheres(std::vector<Particle>& particles, const Containe
             }
             basis.columns.clear();
             stats.forces.clear();  // a sphere resting on the floor carries its weight there
-            for (std::size_t i = 0; i < n; ++i) {
+            for (std::size_t i = 0; i < n && !options.friction; ++i) {
                 if (built.col_lower[columns * i + 1] > -1.0) {
                     stats.forces.push_back({i, 0, Partner::Floor, weight[i]});
                 }
@@ -438,11 +441,11 @@ SettleStats settle_hard_spheres(std::vector<Particle>& particles, const Containe
             falling += uy <= -1.0 + 1e-6 ? 1 : 0;
         }
         stats.energy_drop += drop;
-        if (penalty > 0.0 && std::all_of(u.begin(), u.end(), [](double v) { return v == 0.0; })) {
-            stats.converged = true;  // no move lowers the energy by more than it costs
-            break;
-        }
-        if (static_cast<double>(falling) > kSlidingShare * static_cast<double>(n)) {
+        const bool still =
+            penalty > 0.0 && std::all_of(u.begin(), u.end(), [](double v) { return v == 0.0; });
+        if (still) {
+            // No move lowers the energy by more than it costs: the end.
+        } else if (static_cast<double>(falling) > kSlidingShare * static_cast<double>(n)) {
             trust = std::min(2.0 * trust, options.trust_max);
         } else if (drop < kStallRate * trust) {
             trust /= 4.0;
@@ -450,8 +453,9 @@ SettleStats settle_hard_spheres(std::vector<Particle>& particles, const Containe
         if (options.progress) {
             options.progress(stats.iterations, trust);
         }
-        if (trust < options.trust_min) {
+        if (still || trust < options.trust_min) {
             stats.converged = true;
+            stats.ended_still = still;
             break;
         }
     }

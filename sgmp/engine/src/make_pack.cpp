@@ -176,6 +176,12 @@ void record_relaxation(const RelaxParams& params, const RelaxStats& stats, Metad
     m.set_number("relax_finish_move_mean", stats.finish_move_mean);
     m.set_integer("relax_settle_iterations", stats.settle_iterations);
     m.set("relax_settle_converged", stats.settle_converged ? "true" : "false");
+    // How the settling ended: its trust region shrank away, a step moved nothing, the LP
+    // solver failed, or --relax-settle-limit stopped it.
+    m.set("relax_settle_end", stats.settle_ended_still     ? "still"
+                              : stats.settle_converged     ? "trust-region"
+                              : stats.settle_solver_failed ? "solver-failed"
+                                                           : "limit");
     m.set_number("relax_settle_move_max", stats.settle_move_max);
     m.set_number("relax_settle_energy_drop", stats.settle_energy_drop);
 }

@@ -509,6 +509,8 @@ RelaxStats relax_pack(std::vector<Particle>& particles, const Container& contain
     const SettleStats settle = settle_hard_spheres(particles, container, diameter, options);
     stats.settle_iterations = settle.iterations;
     stats.settle_converged = settle.converged;
+    stats.settle_ended_still = settle.ended_still;
+    stats.settle_solver_failed = settle.solver_failed;
     stats.settle_move_max = settle.move_max;
     stats.settle_energy_drop = settle.energy_drop;
     stats.settle_forces = settle.forces;

@@ -131,7 +131,8 @@ void move_into_place(const fs::path& from, const fs::path& to, bool overwrite) {
         }
         throw path_error(to, std::string("cannot create: ") + std::strerror(code));
     }
-    fs::remove(from);
+    std::error_code ignored;  // the target is in place; a temporary left over is harmless
+    fs::remove(from, ignored);
 }
 
 /// `message` with every mention of the temporary directory `temporary` as `target`.
@@ -267,11 +268,31 @@ void publish_together(const std::vector<fs::path>& targets,
                       const std::vector<std::unique_ptr<FinishedTemporary>>& files,
                       bool overwrite) {
     std::vector<fs::path> backups(targets.size());
-    for (std::size_t i = 0; i < targets.size(); ++i) {
+    for (std::size_t i = 0; i < targets.size() && overwrite; ++i) {
         const fs::path backup = sibling_temporary(fs::path(targets[i].string() + ".old"), "tmp");
-        if (overwrite && ::link(targets[i].c_str(), backup.c_str()) == 0) {
+        if (::link(targets[i].c_str(), backup.c_str()) == 0) {
             backups[i] = backup;
+            continue;
         }
+        const int code = errno;
+        if (code == ENOENT) {
+            continue;  // no old file to keep
+        }
+        // A file system without hard links: a copy; without either, replace nothing rather
+        // than risk losing the old file.
+        std::error_code copied;
+        fs::copy_file(targets[i], backup, copied);
+        if (!copied) {
+            backups[i] = backup;
+            continue;
+        }
+        std::error_code ignored;
+        fs::remove(backup, ignored);
+        for (const fs::path& made : backups) {
+            fs::remove(made, ignored);
+        }
+        throw path_error(targets[i], std::string("cannot keep the old file while replacing it: ") +
+                                         std::strerror(code));
     }
     std::size_t published = 0;
     try {

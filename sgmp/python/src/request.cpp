@@ -176,7 +176,9 @@ const std::map<std::string, Setter>& setters() {
          [](PackRequest& r, auto v) { r.relax.friction = number(v, "relax-friction"); }},
         {"relax_settle_limit",
          [](PackRequest& r, auto v) {
-             r.relax.settle_limit = static_cast<int>(integer(v, "relax-settle-limit"));
+             const long long limit = integer(v, "relax-settle-limit");
+             // Out of int's range: a value validate() refuses, not one that wraps.
+             r.relax.settle_limit = static_cast<int>(std::clamp<long long>(limit, 0, 1000001));
          }},
     };
     return table;

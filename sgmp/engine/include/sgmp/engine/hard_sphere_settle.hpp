@@ -51,9 +51,10 @@
 /// multipliers βₖ ≥ 0 are forces Σₖ βₖ·Eₖ inside every pyramid that balance each sphere's
 /// weight, and the rotation columns' stationarity is each sphere's torque balance. The
 /// settled pack is a frictional equilibrium at μ; the certificate checks it on its own.
-/// Rolling without slipping makes many moves free; each move therefore costs 10⁻⁶ m·g per
-/// unit of s (every column split into its positive and negative parts), so only moves
-/// that lower the energy are taken, and the settling ends as soon as the LP moves nothing.
+/// Rolling without slipping makes many moves free; each move therefore costs 10⁻⁶ of its
+/// sphere's weight per unit of s (every column split into its positive and negative
+/// parts), so only moves that lower the energy are taken, and the settling ends as soon as
+/// the LP moves nothing.
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -78,7 +79,11 @@ struct SettleOptions {
 
 struct SettleStats {
     int iterations = 0;
-    bool converged = false;  ///< ended by the trust region, not by the iteration bound
+    /// Ended by the trust region or by a step that moved nothing, not by the iteration
+    /// bound or the solver.
+    bool converged = false;
+    /// Ended by a step that moved nothing (frictional: no move pays for its cost).
+    bool ended_still = false;
     /// The LP solver found no feasible optimum for a step (all its starts tried): the
     /// settling stopped there, with every earlier step kept (each is overlap-free).
     bool solver_failed = false;

@@ -83,9 +83,11 @@ struct RelaxStats {
     double finish_move_max = 0.0;     ///< largest displacement by the hard-sphere finish, over d
     double finish_move_mean = 0.0;    ///< mean displacement by the hard-sphere finish, over d
     int settle_iterations = 0;        ///< LP iterations of the hard-sphere settling (frictionless)
-    bool settle_converged = false;    ///< the settling ended by its trust region
-    double settle_move_max = 0.0;     ///< largest displacement by the settling, over d
-    double settle_energy_drop = 0.0;  ///< potential energy the settling released, m·g·d
+    bool settle_converged = false;    ///< the settling ended by its trust region or stillness
+    bool settle_ended_still = false;  ///< the settling's last step moved nothing
+    bool settle_solver_failed = false;  ///< the settling's LP solver failed; it stopped there
+    double settle_move_max = 0.0;       ///< largest displacement by the settling, over d
+    double settle_energy_drop = 0.0;    ///< potential energy the settling released, m·g·d
     /// The settling's contact forces, offered to the certificate as its witness (not
     /// recorded in packs).
     std::vector<ContactForce> settle_forces;

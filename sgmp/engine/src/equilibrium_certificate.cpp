@@ -11,7 +11,6 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <tuple>
 #include <unordered_map>
 
 #include "sgmp/engine/coulomb_pyramid.hpp"
@@ -52,16 +51,8 @@ std::vector<Contact> find_contacts(const std::vector<Particle>& particles, const
         });
     }
     for (std::size_t i = 0; i < particles.size(); ++i) {
-        const Vec3& c = particles[i].center;
-        const double r = particles[i].radius;
-        const std::array<std::tuple<double, Vec3, Partner>, 5> walls{{
-            {c.y() - r - box.floor, Vec3(0.0, 1.0, 0.0), Partner::Floor},
-            {c.x() - r - box.x_min, Vec3(1.0, 0.0, 0.0), Partner::XMin},
-            {box.x_max - c.x() - r, Vec3(-1.0, 0.0, 0.0), Partner::XMax},
-            {c.z() - r - box.z_min, Vec3(0.0, 0.0, 1.0), Partner::ZMin},
-            {box.z_max - c.z() - r, Vec3(0.0, 0.0, -1.0), Partner::ZMax},
-        }};
-        for (const auto& [gap, normal, partner] : walls) {
+        for (const auto& [gap, normal, partner] :
+             wall_gaps(particles[i].center, particles[i].radius, box)) {
             if (gap <= tolerance) {
                 deepest = std::max(deepest, -gap);
                 contacts.push_back({i, kNone, true, normal, partner});
@@ -167,16 +158,6 @@ std::vector<double> solve_forces(const System& system) {
         v = std::max(v, 0.0);  // within the LP's tolerance of its bound
     }
     return f;
-}
-
-/// A contact's key: its spheres in increasing order, or its sphere and its wall.
-std::uint64_t contact_key(std::size_t first, std::size_t second, Partner partner) {
-    if (partner != Partner::Sphere) {
-        second = static_cast<std::size_t>(partner);  // walls: small partners, sphere first
-        return (static_cast<std::uint64_t>(first) << 32) | (0xFFFFFFF0U + second);
-    }
-    const auto [lo, hi] = std::minmax(first, second);
-    return (static_cast<std::uint64_t>(lo) << 32) | hi;
 }
 
 /// The witness's forces on `contacts` (0 where it names none); throws on a negative one.
@@ -308,6 +289,25 @@ EquilibriumCertificate certify(const std::vector<Particle>& particles, const Con
 }
 
 }  // namespace
+
+std::uint64_t contact_key(std::size_t first, std::size_t second, Partner partner) {
+    if (partner != Partner::Sphere) {
+        second = static_cast<std::size_t>(partner);  // walls: small partners, sphere first
+        return (static_cast<std::uint64_t>(first) << 32) | (0xFFFFFFF0U + second);
+    }
+    const auto [lo, hi] = std::minmax(first, second);
+    return (static_cast<std::uint64_t>(lo) << 32) | hi;
+}
+
+std::array<WallGap, 5> wall_gaps(const Vec3& c, double r, const Container& box) {
+    return {{
+        {c.y() - r - box.floor, Vec3(0.0, 1.0, 0.0), Partner::Floor},
+        {c.x() - r - box.x_min, Vec3(1.0, 0.0, 0.0), Partner::XMin},
+        {box.x_max - c.x() - r, Vec3(-1.0, 0.0, 0.0), Partner::XMax},
+        {c.z() - r - box.z_min, Vec3(0.0, 0.0, 1.0), Partner::ZMin},
+        {box.z_max - c.z() - r, Vec3(0.0, 0.0, -1.0), Partner::ZMax},
+    }};
+}
 
 EquilibriumCertificate certify_frictionless(const std::vector<Particle>& particles,
                                             const Container& container, double diameter,

@@ -10,7 +10,6 @@
 #include <cstdint>
 #include <initializer_list>
 #include <stdexcept>
-#include <tuple>
 #include <unordered_map>
 
 #include "sgmp/engine/coulomb_pyramid.hpp"
@@ -36,16 +35,7 @@ constexpr double kStallRate = 1e-4;
 /// stays, so the certificate's residual is below it too (10⁻⁶·wᵢ ≪ 10⁻³ m·g).
 constexpr double kNeutralPenalty = 1e-6;
 
-std::uint64_t pair_key(std::uint32_t i, std::uint32_t j) {
-    return (static_cast<std::uint64_t>(i) << 32) | j;
-}
-
-/// Wall w of sphere i as a pair key: the sphere first, a partner no sphere index reaches.
-std::uint64_t wall_key(std::size_t i, Partner wall) {
-    return (static_cast<std::uint64_t>(i) << 32) | (0xFFFFFFF0U + static_cast<std::uint32_t>(wall));
-}
-
-/// A row of the LP: its contact (pair_key or wall_key) and, for a frictional contact, the
+/// A row of the LP: its contact (contact_key) and, for a frictional contact, the
 /// edge of its pyramid (kNormalRow for a plain non-overlap row).
 struct RowKey {
     std::uint64_t contact = 0;
@@ -148,7 +138,7 @@ Step build_step(const std::vector<Ball>& balls, const NeighbourList& list, const
             if (gap >= cutoff || dist == 0.0) {
                 continue;
             }
-            const RowKey key{pair_key(static_cast<std::uint32_t>(i), j), kNormalRow};
+            const RowKey key{contact_key(i, j, Partner::Sphere), kNormalRow};
             if (options.friction && gap <= trust) {
                 frictional_rows(w, columns, i, &balls[j], j, -d / dist, balls[i].r, gap / trust,
                                 key.contact, options, turns);
@@ -176,17 +166,10 @@ Step build_step(const std::vector<Ball>& balls, const NeighbourList& list, const
         if (!options.friction) {
             continue;
         }
-        const std::array<std::tuple<double, Vec3, Partner>, 5> walls{{
-            {b.y - b.r - box.floor, Vec3(0.0, 1.0, 0.0), Partner::Floor},
-            {b.x - b.r - box.x_min, Vec3(1.0, 0.0, 0.0), Partner::XMin},
-            {box.x_max - b.x - b.r, Vec3(-1.0, 0.0, 0.0), Partner::XMax},
-            {b.z - b.r - box.z_min, Vec3(0.0, 0.0, 1.0), Partner::ZMin},
-            {box.z_max - b.z - b.r, Vec3(0.0, 0.0, -1.0), Partner::ZMax},
-        }};
-        for (const auto& [gap, normal, wall] : walls) {
+        for (const auto& [gap, normal, wall] : wall_gaps(Vec3(b.x, b.y, b.z), b.r, box)) {
             if (gap <= trust) {
                 frictional_rows(w, columns, i, nullptr, 0, normal, b.r, std::max(gap, 0.0) / trust,
-                                wall_key(i, wall), options, turns);
+                                contact_key(i, 0, wall), options, turns);
             }
         }
     }

@@ -26,6 +26,7 @@
 /// the forces reported are non-negative forces on the pack's contacts with the residuals
 /// reported, so the certificate means the same; the witness only saves the LP (10 s at
 /// N = 3000).
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -43,6 +44,22 @@ struct CertificateOptions {
 
 /// What a contact touches besides its sphere `first`.
 enum class Partner : std::uint8_t { Sphere, Floor, XMin, XMax, ZMin, ZMax };
+
+/// A contact's key: its spheres in increasing order, or its sphere and its wall (a
+/// partner no sphere index reaches), (first << 32) | second.
+std::uint64_t contact_key(std::size_t first, std::size_t second, Partner partner);
+
+/// A sphere against one wall or the floor of the container: the gap between its surface
+/// and the wall (negative when it penetrates), the wall's inward unit normal, and which.
+struct WallGap {
+    double gap = 0.0;
+    Vec3 normal = Vec3::Zero();
+    Partner wall = Partner::Floor;
+};
+
+/// The floor and the four walls, in that order (floor, x min, x max, z min, z max), as
+/// seen from the sphere of centre c and radius r.
+std::array<WallGap, 5> wall_gaps(const Vec3& c, double r, const Container& box);
 
 /// A normal contact force, in m·g: between spheres `first` and `second` (either order), or
 /// between sphere `first` and a wall or the floor.

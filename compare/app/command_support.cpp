@@ -1,6 +1,6 @@
 #include "command_support.hpp"
 
-#include "sgmp/compare/pack_content_error.hpp"
+#include "sgmp/metrics/pack_content_error.hpp"
 
 #include <chrono>
 #include <filesystem>
@@ -8,13 +8,13 @@
 #include <iostream>
 #include <sstream>
 
-#include "sgmp/compare/metrics_output.hpp"
-#include "sgmp/compare/parallel.hpp"
-#include "sgmp/compare/precomputed.hpp"
+#include "sgmp/metrics/metrics_output.hpp"
+#include "sgmp/metrics/parallel.hpp"
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/option_rules.hpp"
 #include "sgmp/pack/pack_file.hpp"
+#include "sgmp/report/precomputed.hpp"
 
 namespace fs = std::filesystem;
 

@@ -13,11 +13,15 @@
 #include <vector>
 
 #include "sgmp/cli/run_main.hpp"
-#include "sgmp/compare/agreement.hpp"
-#include "sgmp/compare/measure.hpp"
+#include "sgmp/metrics/measure.hpp"
 #include "sgmp/pack/pack.hpp"
+#include "sgmp/report/agreement.hpp"
 
 namespace sgmp::compare::cli {
+
+// The front end puts the two libraries together: their names are used unqualified here.
+using namespace ::sgmp::metrics;
+using namespace ::sgmp::report;
 
 /// A usage error: exit status 2 (sgmp/cli/run_main.hpp).
 using UsageError = ::sgmp::cli::UsageError;
@@ -52,7 +56,7 @@ nlohmann::ordered_json measure_parameters(const CommonOptions& o);
 std::string stem_of(const std::string& path);
 /// Reads and measures `packs` as one labelled group. A path ending in `.metrics.json`
 /// (a `measure` output) and a pack found in the --metrics summaries are not measured
-/// again: their precomputed metrics are used (sgmp/compare/precomputed.hpp).
+/// again: their precomputed metrics are used (sgmp/report/precomputed.hpp).
 Group measure_group(const std::string& label, const std::vector<std::string>& packs,
                     const CommonOptions& o);
 

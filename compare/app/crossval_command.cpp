@@ -6,16 +6,16 @@
 #include <map>
 
 #include "command_support.hpp"
-#include "sgmp/compare/baseline.hpp"
-#include "sgmp/compare/crossval.hpp"
-#include "sgmp/compare/crossval_render.hpp"
-#include "sgmp/compare/manifest.hpp"
-#include "sgmp/compare/metrics_output.hpp"
-#include "sgmp/compare/report_files.hpp"
-#include "sgmp/compare/report_pictures.hpp"
-#include "sgmp/compare/thesis_table.hpp"
+#include "sgmp/metrics/metrics_output.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/version.hpp"
+#include "sgmp/report/baseline.hpp"
+#include "sgmp/report/crossval.hpp"
+#include "sgmp/report/crossval_render.hpp"
+#include "sgmp/report/manifest.hpp"
+#include "sgmp/report/report_files.hpp"
+#include "sgmp/report/report_pictures.hpp"
+#include "sgmp/report/thesis_table.hpp"
 
 namespace sgmp::compare::cli {
 namespace {

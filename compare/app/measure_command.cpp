@@ -7,12 +7,12 @@
 #include <memory>
 
 #include "command_support.hpp"
-#include "sgmp/compare/agreement.hpp"
-#include "sgmp/compare/metrics_output.hpp"
-#include "sgmp/compare/report_files.hpp"
+#include "sgmp/metrics/metrics_output.hpp"
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/pack_file.hpp"
+#include "sgmp/report/agreement.hpp"
+#include "sgmp/report/report_files.hpp"
 
 namespace sgmp::compare::cli {
 namespace fs = std::filesystem;

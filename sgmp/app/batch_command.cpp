@@ -28,8 +28,8 @@
 #include "sgmp/batch/seed_list.hpp"
 #include "sgmp/batch/shard.hpp"
 #include "sgmp/batch/world.hpp"
-#include "sgmp/compare/parallel.hpp"
-#include "sgmp/compare/summary_columns.hpp"
+#include "sgmp/metrics/parallel.hpp"
+#include "sgmp/metrics/summary_columns.hpp"
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/cpu_budget.hpp"
 #include "sgmp/pack/input_error.hpp"
@@ -80,7 +80,7 @@ std::string read_text(const fs::path& path) {
 
 /// The summary's columns: the batch's own and sgmp-compare's metric columns.
 const SummarySchema& schema() {
-    static const SummarySchema schema(compare::summary_column_names());
+    static const SummarySchema schema(metrics::summary_column_names());
     return schema;
 }
 
@@ -288,12 +288,12 @@ int run_sweep(const Settings& s, const World& world) {
     const std::vector<std::size_t> jobs =
         assigned_jobs(plan.job_count(), shard, world.rank(), world.size());
     const unsigned threads = s.threads > 0 ? s.threads : usable_threads();
-    compare::set_thread_count(1);  // packs run side by side; each measurement is serial
+    metrics::set_thread_count(1);  // packs run side by side; each measurement is serial
     const auto seconds = earlier_seconds(s);
     JobOptions options;
     if (s.measure) {
         options.measure = [voronoi = s.voronoi](const Pack& pack) {
-            return compare::summary_fields(pack, voronoi);
+            return metrics::summary_fields(pack, voronoi);
         };
     }
     std::atomic<std::size_t> reused{0};

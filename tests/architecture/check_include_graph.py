@@ -3,6 +3,8 @@
 
 Every `#include "sgmp/..."` in a library's sources and headers is resolved to the library
 whose include/ folder holds it, and must be the library itself or one it may depend on.
+Each library's headers sit under its own prefix, include/sgmp/<library>/, and its code in
+the namespace sgmp::<library>.
 Front ends (sgmp/app, compare/app, reference/app, sgmp/python) put parts together and are
 not checked. Exit 0 when the graph holds, 1 listing every upward include otherwise.
 
@@ -25,6 +27,7 @@ LIBRARIES = {
     "metrics": ("compare/metrics", {"pack"}),
     "report": ("compare/report", {"pack", "render", "metrics"}),
 }
+NAMESPACE = re.compile(r"^namespace\s+(sgmp(?:::\w+)*)\s*\{", re.MULTILINE)
 INCLUDE = re.compile(r'^\s*#\s*include\s+"(sgmp/[^"]+)"', re.MULTILINE)
 
 
@@ -57,6 +60,18 @@ def main(argv):
                 elif owner != name and owner not in allowed:
                     problems.append(f"{path.relative_to(root)}: includes \"{header}\" of "
                                     f"{owner}, which {name} may not depend on")
+    for name, (folder, _) in LIBRARIES.items():
+        include = root / folder / "include"
+        for path in sorted(include.rglob("*.hpp")) if include.is_dir() else []:
+            relative = path.relative_to(include).as_posix()
+            if not relative.startswith(f"sgmp/{name}/"):
+                problems.append(f"{path.relative_to(root)}: a header of {name} outside its "
+                                f"prefix sgmp/{name}/")
+            for space in NAMESPACE.findall(path.read_text(encoding="utf-8")):
+                if space != f"sgmp::{name}" and not space.startswith(f"sgmp::{name}::") \
+                        and space != "sgmp":
+                    problems.append(f"{path.relative_to(root)}: namespace {space} in a header "
+                                    f"of {name} (expected sgmp::{name})")
     if checked == 0:
         problems.append("no include was found: is SOURCE_DIR the project root?")
     for p in problems:
@@ -70,14 +85,14 @@ def self_test():
         root = pathlib.Path(tmp)
         for folder, header in (("sgmp/pack", "sgmp/pack/a.hpp"),
                                ("sgmp/engine", "sgmp/engine/b.hpp"),
-                               ("compare/metrics", "sgmp/compare/c.hpp")):
+                               ("compare/metrics", "sgmp/metrics/c.hpp")):
             path = root / folder / "include" / header
             path.parent.mkdir(parents=True)
             path.write_text('#include "sgmp/pack/a.hpp"\n' if "pack" not in folder else "\n")
         if main(["", str(root)]) != 0:
             return 1
         engine = root / "sgmp/engine/include/sgmp/engine/b.hpp"
-        engine.write_text('#include "sgmp/compare/c.hpp"\n')
+        engine.write_text('#include "sgmp/metrics/c.hpp"\n')
         return 0 if main(["", str(root)]) == 1 else 1
 
 

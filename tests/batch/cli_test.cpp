@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "sgmp/batch/summary.hpp"
-#include "sgmp/compare/summary_columns.hpp"
+#include "sgmp/metrics/summary_columns.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;
@@ -27,7 +27,7 @@ using Run = sgmp::testing::CommandRun;
 
 /// The schema `sgmp batch` writes: sgmp-compare's metric columns.
 const SummarySchema& schema() {
-    static const SummarySchema s(sgmp::compare::summary_column_names());
+    static const SummarySchema s(sgmp::metrics::summary_column_names());
     return s;
 }
 

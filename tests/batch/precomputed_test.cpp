@@ -15,8 +15,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sgmp/compare/precomputed.hpp"
 #include "sgmp/pack/input_error.hpp"
+#include "sgmp/report/precomputed.hpp"
 
 namespace fs = std::filesystem;
 
@@ -144,7 +144,7 @@ BOOST_AUTO_TEST_CASE(batch_rows_without_metrics_or_packs_are_refused) {
     const std::string header =
         "job,count,seed,seconds,measure_seconds,phi,z_0,z_1e-6,z_1e-3,z_1e-2,z_2e-2,z_5e-2,"
         "overlaps,overlap_max,wall_overlaps,split_ratio,voronoi_phi_mean,path\n";
-    const auto rows = sgmp::compare::summaries_from_batch(
+    const auto rows = sgmp::report::summaries_from_batch(
         header + "0,10,1,0.1,0.1,0.5,1,2,3,4,5,6,0,0,0,0.7,,p.xyz\n", "s.csv");
     BOOST_REQUIRE(rows.size() == 1u);
     BOOST_TEST(rows[0].first == "p.xyz");
@@ -152,19 +152,19 @@ BOOST_AUTO_TEST_CASE(batch_rows_without_metrics_or_packs_are_refused) {
     BOOST_TEST(std::isnan(rows[0].second.scalar("q6_global")));
     BOOST_TEST(!rows[0].second.has_curves());
     BOOST_CHECK_THROW(
-        sgmp::compare::summaries_from_batch(header + "0,10,1,0.1,,,,,,,,,,,,,,p.xyz\n", "s.csv"),
+        sgmp::report::summaries_from_batch(header + "0,10,1,0.1,,,,,,,,,,,,,,p.xyz\n", "s.csv"),
         sgmp::InputError);  // made without --measure
-    BOOST_CHECK_THROW(sgmp::compare::summaries_from_batch(
+    BOOST_CHECK_THROW(sgmp::report::summaries_from_batch(
                           header + "0,10,1,0.1,0.1,0.5,1,2,3,4,5,6,0,0,0,0.7,,\n", "s.csv"),
                       sgmp::InputError);  // made with --no-packs
-    BOOST_CHECK_THROW(sgmp::compare::summaries_from_batch("a,b\n1,2\n", "s.csv"), sgmp::InputError);
+    BOOST_CHECK_THROW(sgmp::report::summaries_from_batch("a,b\n1,2\n", "s.csv"), sgmp::InputError);
     // A measured metric that is NaN or infinite was taken for "not measured" (an empty
     // field) and reported as 0.0000.
     for (const char* phi : {"nan", "NaN", "inf", "-inf"}) {
         const std::string row =
             std::string("0,10,1,0.1,0.1,") + phi + ",1,2,3,4,5,6,0,0,0,0.7,,p.xyz\n";
         try {
-            (void)sgmp::compare::summaries_from_batch(header + row, "s.csv");
+            (void)sgmp::report::summaries_from_batch(header + row, "s.csv");
             BOOST_ERROR("phi " << phi << " was accepted");
         } catch (const sgmp::InputError& e) {
             BOOST_TEST(e.what() == "s.csv:2: 'phi' is '" + std::string(phi) +
@@ -172,7 +172,7 @@ BOOST_AUTO_TEST_CASE(batch_rows_without_metrics_or_packs_are_refused) {
                                        "measured is an empty field)");
         }
     }
-    BOOST_CHECK_THROW(sgmp::compare::summaries_from_batch(
+    BOOST_CHECK_THROW(sgmp::report::summaries_from_batch(
                           header + "0,10,1,0.1,0.1,0.5,1,2,nan,4,5,6,0,0,0,0.7,,p.xyz\n", "s.csv"),
                       sgmp::InputError);
     // Counts that are no particle count (the first was a fuzz finding: its cast to size_t
@@ -181,7 +181,7 @@ BOOST_AUTO_TEST_CASE(batch_rows_without_metrics_or_packs_are_refused) {
         const std::string row =
             std::string("0,") + count + ",1,0.1,0.1,0.5,1,2,3,4,5,6,0,0,0,0.7,,p.xyz\n";
         try {
-            (void)sgmp::compare::summaries_from_batch(header + row, "s.csv");
+            (void)sgmp::report::summaries_from_batch(header + row, "s.csv");
             BOOST_ERROR("count " << count << " was accepted");
         } catch (const sgmp::InputError& e) {
             BOOST_TEST(std::string(e.what()).find("s.csv:2: count ") == 0, e.what());
@@ -196,9 +196,9 @@ BOOST_AUTO_TEST_CASE(batch_rows_without_metrics_or_packs_are_refused) {
 BOOST_AUTO_TEST_CASE(metrics_files_of_the_wrong_shape_are_refused_in_one_line) {
     const auto error_of = [](const std::string& text) {
         try {
-            (void)sgmp::compare::summary_from_measure("m.metrics.json",
-                                                      nlohmann::ordered_json::parse(text), "", "",
-                                                      nlohmann::ordered_json());
+            (void)sgmp::report::summary_from_measure("m.metrics.json",
+                                                     nlohmann::ordered_json::parse(text), "", "",
+                                                     nlohmann::ordered_json());
         } catch (const sgmp::InputError& e) {
             return std::string(e.what());
         }

@@ -4,7 +4,7 @@
 
 #include "sgmp/batch/plan.hpp"
 #include "sgmp/batch/summary.hpp"
-#include "sgmp/compare/summary_columns.hpp"
+#include "sgmp/metrics/summary_columns.hpp"
 #include "sgmp/pack/csv_fields.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/metadata.hpp"
@@ -15,7 +15,7 @@ namespace {
 
 /// The schema `sgmp batch` writes: sgmp-compare's metric columns.
 const SummarySchema& schema() {
-    static const SummarySchema s(sgmp::compare::summary_column_names());
+    static const SummarySchema s(sgmp::metrics::summary_column_names());
     return s;
 }
 
@@ -28,7 +28,7 @@ SummaryRow row_for(std::size_t job, const std::string& path) {
     row.values[parameter_index("size_modes")] = "1:0.7,0.5:0.3";  // holds commas
     row.seed = 10 + job;
     row.seconds = 0.25;
-    for (const auto& column : sgmp::compare::summary_columns()) {
+    for (const auto& column : sgmp::metrics::summary_columns()) {
         row.metric_fields.push_back(column.optional ? "" : "1");
     }
     // 0.30000000000000004: written so it reads back exactly.
@@ -88,7 +88,7 @@ BOOST_AUTO_TEST_CASE(a_measured_row_has_one_field_per_metric_column) {
     BOOST_CHECK_THROW(schema().line(row), std::invalid_argument);
     // The batch's own columns come first, the metric columns in the table's order, then path.
     const auto header = schema().header();
-    const auto metrics = sgmp::compare::summary_column_names();
+    const auto metrics = sgmp::metrics::summary_column_names();
     BOOST_TEST(header.back() == "path");
     BOOST_TEST(std::equal(metrics.begin(), metrics.end(), header.end() - 1 - metrics.size()));
 }

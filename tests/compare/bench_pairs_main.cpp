@@ -15,11 +15,11 @@
 #include <ctime>
 #include <iostream>
 
-#include "sgmp/compare/column_grid.hpp"
-#include "sgmp/compare/local_structure.hpp"
-#include "sgmp/compare/measure.hpp"
-#include "sgmp/compare/parallel.hpp"
-#include "sgmp/compare/spatial_order.hpp"
+#include "column_grid.hpp"
+#include "sgmp/metrics/local_structure.hpp"
+#include "sgmp/metrics/measure.hpp"
+#include "sgmp/metrics/parallel.hpp"
+#include "sgmp/metrics/spatial_order.hpp"
 #include "sgmp/pack/pack_file.hpp"
 
 namespace {
@@ -34,7 +34,7 @@ double cpu_seconds() {
 
 int main(int argc, char** argv) {
     using namespace sgmp;
-    using namespace sgmp::compare;
+    using namespace sgmp::metrics;
     if (argc != 2) {
         std::cerr << "usage: sgmp-compare-bench-pairs PACK\n";
         return 2;

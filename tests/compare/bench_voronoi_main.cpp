@@ -7,9 +7,9 @@
 #include <iostream>
 #include <limits>
 
-#include "sgmp/compare/measure.hpp"
-#include "sgmp/compare/parallel.hpp"
-#include "sgmp/compare/voronoi.hpp"
+#include "sgmp/metrics/measure.hpp"
+#include "sgmp/metrics/parallel.hpp"
+#include "sgmp/metrics/voronoi.hpp"
 #include "sgmp/pack/pack_file.hpp"
 
 namespace {
@@ -34,17 +34,17 @@ int main(int argc, char** argv) {
         return 2;
     }
     try {
-        sgmp::compare::set_thread_count(argc == 3 ? static_cast<unsigned>(std::stoul(argv[2]))
+        sgmp::metrics::set_thread_count(argc == 3 ? static_cast<unsigned>(std::stoul(argv[2]))
                                                   : 0U);
         Stopwatch start;
         const sgmp::Pack pack = sgmp::read_pack_file(argv[1]);
         std::cout << "read " << start << ", " << pack.particles.size() << " particles\n";
-        const sgmp::Container container = sgmp::compare::container_of(pack);
+        const sgmp::Container container = sgmp::metrics::container_of(pack);
         const sgmp::Box everything = container.box_up_to(std::numeric_limits<double>::infinity());
         for (const auto& [label, region] :
              {std::pair{"control-volume", sgmp::control_volume()}, std::pair{"all", everything}}) {
             start = Stopwatch{};
-            const auto phi = sgmp::compare::voronoi_local_phi(pack.particles, container, region);
+            const auto phi = sgmp::metrics::voronoi_local_phi(pack.particles, container, region);
             std::cout << "voronoi " << label << ' ' << start << ", " << phi.cells << " cells, mean "
                       << phi.mean << " sd " << phi.sd << " global " << phi.global << '\n';
         }

@@ -7,9 +7,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "sgmp/compare/manifest.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/pack_file.hpp"
+#include "sgmp/report/manifest.hpp"
 #include "synthetic_packs.hpp"
 #include "test_support.hpp"
 
@@ -313,7 +313,7 @@ BOOST_AUTO_TEST_CASE(manifest_paths_may_hold_commas_and_quotes) {
         "role,group,count,seed,seconds,path\n"
         "candidate,g,150,1,0.5,\"out, \"\"x y\"\"/a.xyz\"\n"
         "reference,\"DEM, mu=0.5\",150,1,,plain/b.xyz\n");
-    const auto entries = sgmp::compare::read_manifest(in, "m.csv");
+    const auto entries = sgmp::report::read_manifest(in, "m.csv");
     BOOST_TEST_REQUIRE(entries.size() == 2u);
     BOOST_TEST(entries[0].path == "out, \"x y\"/a.xyz");
     BOOST_TEST(entries[1].group == "DEM, mu=0.5");
@@ -321,7 +321,7 @@ BOOST_AUTO_TEST_CASE(manifest_paths_may_hold_commas_and_quotes) {
     std::istringstream open_quote("role,group,count,seed,seconds,path\ncandidate,g,150,1,,\"a\n");
     std::string message;
     try {
-        (void)sgmp::compare::read_manifest(open_quote, "m.csv");
+        (void)sgmp::report::read_manifest(open_quote, "m.csv");
     } catch (const sgmp::InputError& error) {
         message = error.what();
     }
@@ -332,7 +332,7 @@ BOOST_AUTO_TEST_CASE(a_manifest_with_seconds_nan_is_refused) {
     std::istringstream in("role,group,count,seed,seconds,path\ncandidate,g,150,1,nan,a.xyz\n");
     std::string message;
     try {
-        (void)sgmp::compare::read_manifest(in, "m.csv");
+        (void)sgmp::report::read_manifest(in, "m.csv");
     } catch (const sgmp::InputError& error) {
         message = error.what();
     }

@@ -1,18 +1,19 @@
 #include <boost/test/unit_test.hpp>
 #include <sstream>
 
-#include "sgmp/compare/baseline.hpp"
-#include "sgmp/compare/crossval.hpp"
-#include "sgmp/compare/crossval_render.hpp"
-#include "sgmp/compare/manifest.hpp"
-#include "sgmp/compare/metrics_output.hpp"
-#include "sgmp/compare/report_render.hpp"
-#include "sgmp/compare/thesis_table.hpp"
+#include "sgmp/metrics/metrics_output.hpp"
 #include "sgmp/pack/input_error.hpp"
+#include "sgmp/report/baseline.hpp"
+#include "sgmp/report/crossval.hpp"
+#include "sgmp/report/crossval_render.hpp"
+#include "sgmp/report/manifest.hpp"
+#include "sgmp/report/report_render.hpp"
+#include "sgmp/report/thesis_table.hpp"
 #include "test_support.hpp"
 
 using namespace sgmp;
-using namespace sgmp::compare;
+using namespace sgmp::metrics;
+using namespace sgmp::report;
 
 namespace {
 
@@ -324,7 +325,7 @@ BOOST_AUTO_TEST_SUITE(markdown_html)
 
 BOOST_AUTO_TEST_CASE(markdown_renders_through_md4c) {
     // Emphasis, code, lists and GitHub pipe tables; raw HTML is escaped, not passed through.
-    const std::string html = sgmp::compare::markdown_to_html(
+    const std::string html = sgmp::report::markdown_to_html(
         "## Head <1>\n\nSome **bold** and `code`.\n\n- item a\n- item b\n\n| x | verdict |\n"
         "| ---: | --- |\n| 1 | differ |\n");
     BOOST_TEST(html.find("<h2>Head &lt;1&gt;</h2>") != std::string::npos);

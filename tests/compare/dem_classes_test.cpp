@@ -19,13 +19,14 @@
 #include <string>
 #include <vector>
 
-#include "sgmp/compare/agreement.hpp"
-#include "sgmp/compare/crossval.hpp"
-#include "sgmp/compare/equivalence.hpp"
 #include "sgmp/pack/pack_file.hpp"
+#include "sgmp/report/agreement.hpp"
+#include "sgmp/report/crossval.hpp"
+#include "sgmp/report/equivalence.hpp"
 
 using namespace sgmp;
-using namespace sgmp::compare;
+using namespace sgmp::metrics;
+using namespace sgmp::report;
 namespace fs = std::filesystem;
 
 namespace {

@@ -8,9 +8,9 @@
 #include <random>
 #include <vector>
 
-#include "sgmp/compare/equivalence.hpp"
+#include "sgmp/report/equivalence.hpp"
 
-using namespace sgmp::compare;
+using namespace sgmp::report;
 
 namespace {
 

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "sgmp/compare/equivalence.hpp"
+#include "sgmp/report/equivalence.hpp"
 
-using namespace sgmp::compare;
+using namespace sgmp::report;
 
 namespace {
 

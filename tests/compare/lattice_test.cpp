@@ -4,11 +4,11 @@
 #include <cmath>
 #include <numbers>
 
-#include "sgmp/compare/measure.hpp"
+#include "sgmp/metrics/measure.hpp"
 #include "synthetic_packs.hpp"
 
 using namespace sgmp;
-using namespace sgmp::compare;
+using namespace sgmp::metrics;
 using sgmp::testing::Lattice;
 
 namespace {

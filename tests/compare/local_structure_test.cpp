@@ -7,14 +7,15 @@
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
-#include "sgmp/compare/bond_order.hpp"
-#include "sgmp/compare/column_grid.hpp"
-#include "sgmp/compare/local_structure.hpp"
-#include "sgmp/compare/parallel.hpp"
+#include "column_grid.hpp"
+#include "sgmp/metrics/bond_order.hpp"
+#include "sgmp/metrics/kd_columns.hpp"
+#include "sgmp/metrics/local_structure.hpp"
+#include "sgmp/metrics/parallel.hpp"
 #include "sgmp/pack/random.hpp"
 
 using namespace sgmp;
-using namespace sgmp::compare;
+using namespace sgmp::metrics;
 
 namespace {
 
@@ -228,6 +229,108 @@ BOOST_AUTO_TEST_CASE(column_windows_hold_every_center_within_the_radius) {
                         BOOST_TEST(seen[p - begin][j] == 1);
                     }
                 }
+            }
+        }
+    }
+}
+
+BOOST_AUTO_TEST_CASE(kd_columns_partition_the_centres_sorted_by_height) {
+    // Every member once, each column sorted by z (then index), for spread, flat, linear
+    // and coincident centres, and for no centre at all.
+    Random random(7);
+    std::vector<std::vector<Particle>> sets(4, std::vector<Particle>(900));
+    for (std::size_t i = 0; i < 900; ++i) {
+        const double u = random.uniform(-1, 1);
+        sets[0][i].center = Vec3(u, random.uniform(0, 0.5), random.uniform(-2, 1));
+        sets[1][i].center = Vec3(u, 0.25, random.uniform(-2, 1));        // a plane
+        sets[2][i].center = Vec3(u, 0.25, 0.5);                          // a line
+        sets[3][i].center = Vec3(0.1, 0.2, static_cast<double>(i % 7));  // one column
+    }
+    sets.emplace_back();
+    for (const auto& particles : sets) {
+        for (const double side : {0.01, 0.2, 3.0}) {
+            const KdColumns columns(particles, side);
+            BOOST_TEST(columns.column_begin(columns.columns()) == particles.size());
+            std::vector<int> seen(particles.size(), 0);
+            for (std::size_t c = 0; c < columns.columns(); ++c) {
+                BOOST_TEST(columns.column_begin(c) < columns.column_begin(c + 1));
+                for (std::size_t k = columns.column_begin(c); k < columns.column_begin(c + 1);
+                     ++k) {
+                    ++seen[columns.index[k]];
+                    BOOST_TEST(columns.z[k] == particles[columns.index[k]].center.z());
+                    if (k > columns.column_begin(c)) {
+                        BOOST_TEST((columns.z[k - 1] < columns.z[k] ||
+                                    (columns.z[k - 1] == columns.z[k] &&
+                                     columns.index[k - 1] < columns.index[k])));
+                    }
+                }
+            }
+            BOOST_TEST(std::count(seen.begin(), seen.end(), 1) ==
+                       static_cast<std::ptrdiff_t>(particles.size()));
+        }
+    }
+}
+
+BOOST_AUTO_TEST_CASE(kd_column_windows_hold_every_center_within_the_radius) {
+    // For the columns of a kd-tree over one set and those of another over a different
+    // set (other column sides): for every source centre p, the windows |z − z_p| ≤ half of
+    // the columns met are disjoint and hold every target centre within the radius of p
+    // (brute force); with first_column, each pair of columns within reach is met once.
+    Random random(8);
+    std::vector<Particle> particles(1500);
+    for (auto& p : particles) {
+        p.center = Vec3(random.uniform(-1, 1), random.uniform(0, 0.5), random.uniform(-2, 1));
+    }
+    std::vector<Index> sources;
+    std::vector<Index> targets;
+    for (Index i = 0; i < particles.size(); ++i) {
+        (i % 3 == 0 ? sources : targets).push_back(i);
+    }
+    for (const double side : {0.05, 0.2, 1.0}) {
+        const KdColumns source(particles, sources, side);
+        const KdColumns target(particles, targets, 0.7 * side);
+        for (const double radius : {0.0, 0.07, 0.3}) {
+            for (std::size_t c = 0; c < source.columns(); ++c) {
+                const std::size_t begin = source.column_begin(c);
+                const std::size_t end = source.column_begin(c + 1);
+                std::vector<std::vector<int>> seen(end - begin,
+                                                   std::vector<int>(particles.size(), 0));
+                target.for_each_column(
+                    source.footprint(begin, end), radius, 0,
+                    [&](std::size_t, std::size_t first, std::size_t last, double half) {
+                        for (std::size_t p = begin; p < end; ++p) {
+                            for (std::size_t k = first; k < last; ++k) {
+                                if (std::abs(target.z[k] - source.z[p]) <= half) {
+                                    ++seen[p - begin][target.index[k]];
+                                }
+                            }
+                        }
+                    });
+                for (std::size_t p = begin; p < end; ++p) {
+                    const Vec3& a = particles[source.index[p]].center;
+                    for (const Index j : targets) {
+                        BOOST_TEST(seen[p - begin][j] <= 1);
+                        if ((particles[j].center - a).norm() <= radius) {
+                            BOOST_TEST(seen[p - begin][j] == 1);
+                        }
+                    }
+                }
+            }
+        }
+        // Pairs of columns of one tree: met once, from the lower-numbered one.
+        const double radius = 0.3;
+        std::vector<std::vector<int>> met(source.columns(), std::vector<int>(source.columns(), 0));
+        for (std::size_t c = 0; c < source.columns(); ++c) {
+            const auto f = source.footprint(source.column_begin(c), source.column_begin(c + 1));
+            source.for_each_column(f, radius, c,
+                                   [&](std::size_t other, std::size_t, std::size_t, double) {
+                                       BOOST_TEST(other >= c);
+                                       ++met[std::min(c, other)][std::max(c, other)];
+                                   });
+        }
+        for (std::size_t a = 0; a < source.columns(); ++a) {
+            for (std::size_t b = a; b < source.columns(); ++b) {
+                BOOST_TEST(met[a][b] <= 1);
             }
         }
     }

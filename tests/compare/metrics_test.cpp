@@ -2,13 +2,13 @@
 #include <cmath>
 #include <limits>
 
-#include "sgmp/compare/measure.hpp"
-#include "sgmp/compare/metrics_output.hpp"
-#include "sgmp/compare/parallel.hpp"
+#include "sgmp/metrics/measure.hpp"
+#include "sgmp/metrics/metrics_output.hpp"
+#include "sgmp/metrics/parallel.hpp"
 #include "synthetic_packs.hpp"
 
 using namespace sgmp;
-using namespace sgmp::compare;
+using namespace sgmp::metrics;
 
 BOOST_AUTO_TEST_SUITE(metrics)
 

@@ -4,12 +4,12 @@
 #include <cmath>
 #include <numbers>
 
-#include "sgmp/compare/mixing_profile.hpp"
+#include "sgmp/metrics/mixing_profile.hpp"
 #include "sgmp/pack/ball_cut.hpp"
 #include "sgmp/pack/random.hpp"
 
 using namespace sgmp;
-using namespace sgmp::compare;
+using namespace sgmp::metrics;
 
 namespace {
 

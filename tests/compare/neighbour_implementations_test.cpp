@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
-#include "sgmp/compare/neighbour_index.hpp"
 #include "sgmp/engine/settled_grid.hpp"
+#include "sgmp/metrics/neighbour_index.hpp"
 #include "sgmp/pack/cell_grid.hpp"
 #include "sgmp/pack/random.hpp"
 
@@ -75,12 +75,12 @@ struct SettledGridSearch {
 
 struct KdTreeSearch {
     static PairSet pairs(const std::vector<Vec3>& points, double cutoff) {
-        const compare::NeighbourIndex index(points);
+        const metrics::NeighbourIndex index(points);
         PairSet pairs;
-        std::vector<compare::Index> found;
+        std::vector<metrics::Index> found;
         for (std::size_t i = 0; i < points.size(); ++i) {
             index.within(points[i], cutoff, found);
-            for (const compare::Index j : found) {
+            for (const metrics::Index j : found) {
                 if (j > i) {
                     pairs.insert({i, j});
                 }

@@ -1,4 +1,4 @@
-#include "sgmp/compare/neighbour_index.hpp"
+#include "sgmp/metrics/neighbour_index.hpp"
 
 #include <boost/test/unit_test.hpp>
 #include <set>
@@ -6,7 +6,7 @@
 #include "sgmp/pack/random.hpp"
 
 using namespace sgmp;
-using namespace sgmp::compare;
+using namespace sgmp::metrics;
 
 namespace {
 

@@ -7,12 +7,12 @@
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
-#include "sgmp/compare/overlaps.hpp"
-#include "sgmp/compare/parallel.hpp"
+#include "sgmp/metrics/overlaps.hpp"
+#include "sgmp/metrics/parallel.hpp"
 #include "sgmp/pack/random.hpp"
 
 using namespace sgmp;
-using namespace sgmp::compare;
+using namespace sgmp::metrics;
 
 namespace {
 

@@ -10,13 +10,13 @@
 #include <cmath>
 #include <tuple>
 
-#include "sgmp/compare/local_structure.hpp"
-#include "sgmp/compare/overlaps.hpp"
-#include "sgmp/compare/pair_kernels.hpp"
+#include "sgmp/metrics/local_structure.hpp"
+#include "sgmp/metrics/overlaps.hpp"
+#include "sgmp/metrics/pair_kernels.hpp"
 #include "sgmp/pack/random.hpp"
 
 using namespace sgmp;
-using namespace sgmp::compare;
+using namespace sgmp::metrics;
 
 namespace {
 

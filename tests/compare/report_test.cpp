@@ -5,13 +5,14 @@
 #include <filesystem>
 #include <fstream>
 
-#include "sgmp/compare/agreement.hpp"
-#include "sgmp/compare/report_files.hpp"
-#include "sgmp/compare/report_plots.hpp"
+#include "sgmp/report/agreement.hpp"
+#include "sgmp/report/report_files.hpp"
+#include "sgmp/report/report_plots.hpp"
 #include "synthetic_packs.hpp"
 
 using namespace sgmp;
-using namespace sgmp::compare;
+using namespace sgmp::metrics;
+using namespace sgmp::report;
 namespace fs = std::filesystem;
 
 namespace {

@@ -6,12 +6,13 @@
 #include <string>
 #include <vector>
 
-#include "sgmp/compare/agreement.hpp"
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/pack/pack_file.hpp"
+#include "sgmp/report/agreement.hpp"
 
 using namespace sgmp;
-using namespace sgmp::compare;
+using namespace sgmp::metrics;
+using namespace sgmp::report;
 
 namespace {
 

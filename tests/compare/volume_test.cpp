@@ -4,12 +4,12 @@
 #include <cmath>
 #include <numbers>
 
-#include "sgmp/compare/ball_box_volume.hpp"
+#include "sgmp/metrics/ball_box_volume.hpp"
 #include "sgmp/pack/random.hpp"
 #include "sgmp/pack/sphere_box_volume.hpp"
 
 using namespace sgmp;
-using namespace sgmp::compare;
+using namespace sgmp::metrics;
 
 namespace {
 constexpr double kPi = std::numbers::pi;

@@ -2,8 +2,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "sgmp/compare/baseline.hpp"
 #include "sgmp/pack/input_error.hpp"
+#include "sgmp/report/baseline.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const auto json = nlohmann::json::parse(data, data + size, nullptr, false);
@@ -11,7 +11,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return 0;  // not JSON: the caller reports that before parse_baseline
     }
     try {
-        (void)sgmp::compare::parse_baseline(json, "fuzz.json");
+        (void)sgmp::report::parse_baseline(json, "fuzz.json");
     } catch (const sgmp::InputError&) {
     }
     return 0;

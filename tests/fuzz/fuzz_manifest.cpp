@@ -6,15 +6,15 @@
 #include <stdexcept>
 #include <string>
 
-#include "sgmp/compare/crossval.hpp"
-#include "sgmp/compare/manifest.hpp"
 #include "sgmp/pack/input_error.hpp"
+#include "sgmp/report/crossval.hpp"
+#include "sgmp/report/manifest.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
     try {
-        const auto manifest = sgmp::compare::read_manifest(in, "fuzz.csv");
-        (void)sgmp::compare::plan_groups(manifest);
+        const auto manifest = sgmp::report::read_manifest(in, "fuzz.csv");
+        (void)sgmp::report::plan_groups(manifest);
     } catch (const sgmp::InputError&) {
     } catch (const std::invalid_argument&) {  // plan_groups' refusal
     }

@@ -8,9 +8,9 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "sgmp/compare/agreement.hpp"
-#include "sgmp/compare/precomputed.hpp"
 #include "sgmp/pack/input_error.hpp"
+#include "sgmp/report/agreement.hpp"
+#include "sgmp/report/precomputed.hpp"
 
 namespace {
 
@@ -39,8 +39,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     try {
         const auto summary =
-            sgmp::compare::summary_from_measure("fuzz.metrics.json", json, g_r, phi_y, parameters);
-        sgmp::compare::check_physical(summary);
+            sgmp::report::summary_from_measure("fuzz.metrics.json", json, g_r, phi_y, parameters);
+        sgmp::report::check_physical(summary);
     } catch (const sgmp::InputError&) {
     } catch (const std::invalid_argument&) {  // check_physical's refusal
     }

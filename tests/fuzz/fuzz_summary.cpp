@@ -6,15 +6,15 @@
 #include <stdexcept>
 #include <string>
 
-#include "sgmp/compare/agreement.hpp"
-#include "sgmp/compare/precomputed.hpp"
 #include "sgmp/pack/input_error.hpp"
+#include "sgmp/report/agreement.hpp"
+#include "sgmp/report/precomputed.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
     try {
-        for (const auto& [path, summary] : sgmp::compare::summaries_from_batch(text, "fuzz.csv")) {
-            sgmp::compare::check_physical(summary);
+        for (const auto& [path, summary] : sgmp::report::summaries_from_batch(text, "fuzz.csv")) {
+            sgmp::report::check_physical(summary);
         }
     } catch (const sgmp::InputError&) {
     } catch (const std::invalid_argument&) {  // check_physical's refusal

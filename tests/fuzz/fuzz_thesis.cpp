@@ -4,19 +4,19 @@
 #include <sstream>
 #include <string>
 
-#include "sgmp/compare/thesis_table.hpp"
 #include "sgmp/pack/input_error.hpp"
+#include "sgmp/report/thesis_table.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
     try {
         std::istringstream in(text);
-        (void)sgmp::compare::read_thesis_results(in, "results.csv");
+        (void)sgmp::report::read_thesis_results(in, "results.csv");
     } catch (const sgmp::InputError&) {
     }
     try {
         std::istringstream in(text);
-        (void)sgmp::compare::read_thesis_starts(in, "starting_packs.csv");
+        (void)sgmp::report::read_thesis_starts(in, "starting_packs.csv");
     } catch (const sgmp::InputError&) {
     }
     return 0;

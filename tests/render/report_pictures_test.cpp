@@ -7,14 +7,14 @@
 #include <fstream>
 #include <sstream>
 
-#include "sgmp/compare/report_pictures.hpp"
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/render/png_info.hpp"
+#include "sgmp/report/report_pictures.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;
-using namespace sgmp::compare;
+using namespace sgmp::report;
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "sgmp/compare/ball_box_volume.hpp"
+#include "sgmp/metrics/ball_box_volume.hpp"
 
 #include <algorithm>
 #include <array>
@@ -9,7 +9,7 @@
 #include "sgmp/pack/ball_cut.hpp"
 #include "sgmp/pack/sphere_box_volume.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::metrics {
 namespace {
 
 constexpr int kNodes = 32;
@@ -138,4 +138,4 @@ double ball_box_volume(const Vec3& center, double r, const Box& box) {
     return std::clamp(volume, 0.0, ball);
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::metrics

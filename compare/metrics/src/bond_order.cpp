@@ -1,9 +1,9 @@
-#include "sgmp/compare/bond_order.hpp"
+#include "sgmp/metrics/bond_order.hpp"
 
 #include <cmath>
 #include <numbers>
 
-namespace sgmp::compare {
+namespace sgmp::metrics {
 namespace {
 
 /// √(13/(4π) · (6−m)!/(6+m)!), the normalisation of Y_6m.
@@ -68,4 +68,4 @@ double BondSums::q6() const {
     return std::sqrt(4.0 * std::numbers::pi / 13.0 * sum);
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::metrics

@@ -1,6 +1,6 @@
-#include "sgmp/compare/coordination_tolerances.hpp"
+#include "sgmp/metrics/coordination_tolerances.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::metrics {
 
 const std::vector<double>& coordination_tolerances() {
     static const std::vector<double> values{0.0, 1e-6, 1e-3, 1e-2, 2e-2, 5e-2};
@@ -12,4 +12,4 @@ const std::vector<std::string>& coordination_tolerance_names() {
     return names;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::metrics

@@ -1,8 +1,8 @@
-#include "sgmp/compare/csv_text.hpp"
+#include "sgmp/metrics/csv_text.hpp"
 
 #include "sgmp/pack/version.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::metrics {
 
 void write_csv_preamble(std::ostream& out, const std::string& tool, const std::string& command,
                         const std::vector<std::string>& rules) {
@@ -13,4 +13,4 @@ void write_csv_preamble(std::ostream& out, const std::string& tool, const std::s
     }
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::metrics

@@ -1,4 +1,4 @@
-#include "sgmp/compare/local_structure.hpp"
+#include "sgmp/metrics/local_structure.hpp"
 
 #include <algorithm>
 #include <array>
@@ -6,12 +6,12 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "sgmp/compare/ball_box_volume.hpp"
-#include "sgmp/compare/column_grid.hpp"
-#include "sgmp/compare/pair_kernels.hpp"
-#include "sgmp/compare/parallel.hpp"
+#include "sgmp/metrics/ball_box_volume.hpp"
+#include "sgmp/metrics/kd_columns.hpp"
+#include "sgmp/metrics/pair_kernels.hpp"
+#include "sgmp/metrics/parallel.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::metrics {
 namespace {
 
 // Columns of the origins' grid per parallel work item (~400 origins at 10^6 particles).
@@ -189,8 +189,8 @@ struct Scratch {
 
 /// The g(r) and split-window counts of the origins of one column of the origins' grid:
 /// pairs with the origins after each of them (weight 2: both are origins) and with every
-/// other particle (weight 1), over the sliding windows of ColumnGrid::for_each_window.
-void count_column_pairs(const ColumnGrid& origin_grid, const ColumnGrid& other_grid,
+/// other particle (weight 1), over the sliding windows of KdColumns::for_each_column.
+void count_column_pairs(const KdColumns& origin_grid, const KdColumns& other_grid,
                         std::size_t column, const Setup& s, Scratch& scratch) {
     const std::size_t begin = origin_grid.column_begin(column);
     const std::size_t end = origin_grid.column_begin(column + 1);
@@ -198,7 +198,7 @@ void count_column_pairs(const ColumnGrid& origin_grid, const ColumnGrid& other_g
         return;
     }
     const std::array<double, 4> footprint = origin_grid.footprint(begin, end);
-    for (const ColumnGrid* grid : {&origin_grid, &other_grid}) {
+    for (const KdColumns* grid : {&origin_grid, &other_grid}) {
         const bool origins = grid == &origin_grid;
         grid->for_each_column(
             footprint, s.reach, origins ? column : 0,
@@ -214,14 +214,14 @@ void count_column_pairs(const ColumnGrid& origin_grid, const ColumnGrid& other_g
 /// Fills scratch.close with the centres close enough to an origin of the column
 /// [begin, end) of the origins' grid to be a contact or a bond (both grids, the origin
 /// itself left out), sorted by origin, then particle index.
-void gather_close(const ColumnGrid& origin_grid, const ColumnGrid& other_grid, std::size_t begin,
+void gather_close(const KdColumns& origin_grid, const KdColumns& other_grid, std::size_t begin,
                   std::size_t end, const Setup& s, Scratch& scratch) {
     scratch.close.clear();
     if (begin == end) {
         return;
     }
     const std::array<double, 4> footprint = origin_grid.footprint(begin, end);
-    for (const ColumnGrid* grid : {&origin_grid, &other_grid}) {
+    for (const KdColumns* grid : {&origin_grid, &other_grid}) {
         const bool own = grid == &origin_grid;
         grid->for_each_column(
             footprint, std::sqrt(s.close_squared), 0,
@@ -265,14 +265,14 @@ void gather_close(const ColumnGrid& origin_grid, const ColumnGrid& other_grid, s
 /// Z at every tolerance and the Q6 bond sums of one origin, bonds summed in increasing
 /// particle index (which fixes their rounding whatever the grid or the thread count).
 BondSums contacts_and_bonds(const std::vector<Particle>& particles, const Particle& a,
-                            const Setup& s, const std::array<const ColumnGrid*, 2>& grids,
+                            const Setup& s, const std::array<const KdColumns*, 2>& grids,
                             const Close* first, const Close* last, Scratch& scratch) {
     std::fill(scratch.z.begin(), scratch.z.end(), 0);
     BondSums bonds;
     for (const Close* close = first; close != last; ++close) {
         const Close& c = *close;
         // The grid's copy of the centre (in cache) and, for equal spheres, the one radius.
-        const ColumnGrid& grid = *grids[c.grid];
+        const KdColumns& grid = *grids[c.grid];
         const double rb = s.equal ? s.radius : particles[c.index].radius;
         const double gap = c.distance - a.radius - rb;
         if (gap <= s.max_threshold) {
@@ -405,9 +405,9 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
     // origins' grid (weight 2, both are origins), origin–other pairs from the origin.
     // Origins are visited in the grid's stored order (column by column: near in space).
     const double side = kPairPassColumnSide * options.mean_diameter;
-    const ColumnGrid origin_grid(particles, origins, side, true);
-    const ColumnGrid other_grid(particles, others(particles.size(), origins), side, true);
-    const std::array<const ColumnGrid*, 2> grids{&origin_grid, &other_grid};
+    const KdColumns origin_grid(particles, origins, side);
+    const KdColumns other_grid(particles, others(particles.size(), origins), side);
+    const std::array<const KdColumns*, 2> grids{&origin_grid, &other_grid};
     const Partial total = chunked_reduce(
         origin_grid.columns(), kColumnsPerChunk, Partial(s.tolerances, options.bins),
         [&](Partial& part, std::size_t first, std::size_t last) {
@@ -455,4 +455,4 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
     return result;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::metrics

@@ -1,6 +1,7 @@
-#include "sgmp/compare/measure.hpp"
+#include "sgmp/metrics/measure.hpp"
 
-#include "sgmp/compare/pack_content_error.hpp"
+#include "sgmp/metrics/pack_content_error.hpp"
+#include "sgmp/pack/sphere_box_volume.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -14,11 +15,11 @@
 #include <malloc.h>
 #endif
 
-#include "sgmp/compare/parallel.hpp"
-#include "sgmp/compare/spatial_order.hpp"
+#include "sgmp/metrics/parallel.hpp"
+#include "sgmp/metrics/spatial_order.hpp"
 #include "sgmp/pack/parameter_error.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::metrics {
 namespace {
 
 thread_local StageTimes stage_times;
@@ -246,4 +247,4 @@ const StageTimes& last_stage_times() {
     return stage_times;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::metrics

@@ -1,4 +1,4 @@
-#include "sgmp/compare/metrics_output.hpp"
+#include "sgmp/metrics/metrics_output.hpp"
 
 #include <functional>
 #include <stdexcept>
@@ -6,7 +6,7 @@
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/version.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::metrics {
 namespace {
 
 using Json = nlohmann::ordered_json;
@@ -277,4 +277,4 @@ void write_pack_metrics(const std::filesystem::path& dir, const std::string& ste
     write(".voronoi_phi.csv", [&](std::ostream& out) { write_voronoi_csv(out, m, provenance); });
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::metrics

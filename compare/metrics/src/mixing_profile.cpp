@@ -1,10 +1,10 @@
-#include "sgmp/compare/mixing_profile.hpp"
+#include "sgmp/metrics/mixing_profile.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-namespace sgmp::compare {
+namespace sgmp::metrics {
 namespace {
 
 /// Volume of the ball of radius r below u, measured from its centre.
@@ -76,4 +76,4 @@ std::optional<MixingProfile> mixing_profile(const std::vector<Particle>& particl
     return p;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::metrics

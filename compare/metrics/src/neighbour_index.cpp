@@ -1,4 +1,4 @@
-#include "sgmp/compare/neighbour_index.hpp"
+#include "sgmp/metrics/neighbour_index.hpp"
 
 #include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Kd_tree.h>
@@ -11,9 +11,9 @@
 #include <limits>
 #include <stdexcept>
 
-#include "sgmp/compare/parallel.hpp"
+#include "sgmp/metrics/parallel.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::metrics {
 namespace {
 
 using Kernel = CGAL::Simple_cartesian<double>;
@@ -181,4 +181,4 @@ std::vector<std::pair<Index, Index>> pairs_within(const std::vector<Vec3>& point
     return pairs;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::metrics

@@ -1,13 +1,13 @@
-#include "sgmp/compare/overlaps.hpp"
+#include "sgmp/metrics/overlaps.hpp"
 
 #include <algorithm>
 
-#include "sgmp/compare/column_grid.hpp"
-#include "sgmp/compare/pair_kernels.hpp"
-#include "sgmp/compare/parallel.hpp"
+#include "sgmp/metrics/kd_columns.hpp"
+#include "sgmp/metrics/pair_kernels.hpp"
+#include "sgmp/metrics/parallel.hpp"
 #include "sgmp/pack/pack_overlaps.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::metrics {
 namespace {
 
 // Grid columns per parallel work item: fixed, so the depth sums do not depend on the
@@ -99,8 +99,8 @@ OverlapSummary summarise(Tally tally, std::size_t limit) {
     return summary;
 }
 
-/// Every pair once, from its earlier member in a grid of whole columns of side 2·r_max
-/// over all centres (ColumnGrid::for_each_window), searched within 2·r_max: an overlap
+/// Every pair once, from its earlier member in the kd-tree columns of side 2·r_max
+/// over all centres (KdColumns::for_each_column), searched within 2·r_max: an overlap
 /// needs |c_i − c_j| < r_i + r_j. The depth is computed as the pack library's overlap
 /// search does, so the same pairs count.
 Tally pair_overlaps(const std::vector<Particle>& particles, double mean_diameter, double floor,
@@ -112,7 +112,7 @@ Tally pair_overlaps(const std::vector<Particle>& particles, double mean_diameter
     const double reach = 2.0 * r_max;
     const bool equal = std::all_of(particles.begin(), particles.end(),
                                    [&](const Particle& p) { return p.radius == r_max; });
-    const ColumnGrid grid(particles, reach, true);
+    const KdColumns grid(particles, reach);
     const double reach_squared = reach * reach * (1.0 + 1e-9);  // the exact test decides
     return chunked_reduce(
         grid.columns(), kColumnsPerChunk, Tally{},
@@ -172,4 +172,4 @@ OverlapStats measure_overlaps(const std::vector<Particle>& particles, const Cont
     return stats;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::metrics

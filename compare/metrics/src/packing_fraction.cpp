@@ -1,16 +1,16 @@
-#include "sgmp/compare/packing_fraction.hpp"
+#include "sgmp/metrics/packing_fraction.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 
-#include "sgmp/compare/ball_box_volume.hpp"
-#include "sgmp/compare/parallel.hpp"
+#include "sgmp/metrics/ball_box_volume.hpp"
+#include "sgmp/metrics/parallel.hpp"
 #include "sgmp/pack/ball_cut.hpp"
 #include "sgmp/pack/sphere_box_volume.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::metrics {
 namespace {
 
 constexpr std::size_t kChunk = 8192;
@@ -37,25 +37,6 @@ bool misses(const Particle& p, const Box& box) {
 }
 
 }  // namespace
-
-double packing_fraction(const std::vector<Particle>& particles, const Box& region) {
-    const double volume = region.volume();
-    if (!(volume > 0.0)) {
-        throw std::invalid_argument("packing fraction of an empty region");
-    }
-    const double inside = chunked_reduce(
-        particles.size(), kChunk, 0.0,
-        [&](double& sum, std::size_t begin, std::size_t end) {
-            for (std::size_t i = begin; i < end; ++i) {
-                const Particle& p = particles[i];
-                if (!misses(p, region)) {
-                    sum += sphere_box_volume(p.center, p.radius, region);
-                }
-            }
-        },
-        [](double& total, double partial) { total += partial; });
-    return inside / volume;
-}
 
 PhiProfile packing_fraction_profile(const std::vector<Particle>& particles,
                                     const Box& cross_section, double y0, double y1,
@@ -128,4 +109,4 @@ PhiProfile packing_fraction_profile(const std::vector<Particle>& particles,
     return profile;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::metrics

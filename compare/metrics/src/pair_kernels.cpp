@@ -1,8 +1,8 @@
-#include "sgmp/compare/pair_kernels.hpp"
+#include "sgmp/metrics/pair_kernels.hpp"
 
 #include <cmath>
 
-namespace sgmp::compare {
+namespace sgmp::metrics {
 namespace {
 
 bool cpu_has_avx512() {
@@ -378,4 +378,4 @@ void count_bins(const double* xs, const double* ys, const double* zs, const doub
     count_bins_scalar(xs, ys, zs, a, from, to, weight, s, lanes, split);
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::metrics

@@ -1,4 +1,4 @@
-#include "sgmp/compare/parallel.hpp"
+#include "sgmp/metrics/parallel.hpp"
 
 #include "sgmp/pack/cpu_budget.hpp"
 
@@ -6,7 +6,7 @@
 
 #include "sgmp/pack/parallel.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::metrics {
 namespace {
 std::atomic<unsigned> requested_threads{0};
 }  // namespace
@@ -27,4 +27,4 @@ void parallel_for(std::size_t count, const std::function<void(std::size_t)>& tas
     sgmp::parallel_for(thread_count(), count, task);
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::metrics

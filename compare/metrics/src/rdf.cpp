@@ -1,4 +1,4 @@
-#include "sgmp/compare/rdf.hpp"
+#include "sgmp/metrics/rdf.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,10 +6,10 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "sgmp/compare/ball_box_volume.hpp"
-#include "sgmp/compare/pack_content_error.hpp"
+#include "sgmp/metrics/ball_box_volume.hpp"
+#include "sgmp/metrics/pack_content_error.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::metrics {
 
 Box center_space(const std::vector<Particle>& particles, const Container& container,
                  double mean_radius) {
@@ -128,4 +128,4 @@ ThesisRdf thesis_rdf(const std::vector<Particle>& particles, const Box& region, 
     return result;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::metrics

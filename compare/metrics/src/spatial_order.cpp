@@ -1,13 +1,13 @@
-#include "sgmp/compare/spatial_order.hpp"
+#include "sgmp/metrics/spatial_order.hpp"
 
-#include "sgmp/compare/parallel.hpp"
+#include "sgmp/metrics/parallel.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 
-namespace sgmp::compare {
+namespace sgmp::metrics {
 namespace {
 
 /// Spreads the low 21 bits of v so that two zero bits separate consecutive bits.
@@ -134,4 +134,4 @@ std::vector<Index> spatial_order(const std::vector<Particle>& points, std::vecto
     return subset;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::metrics

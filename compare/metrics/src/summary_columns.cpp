@@ -1,11 +1,11 @@
-#include "sgmp/compare/summary_columns.hpp"
+#include "sgmp/metrics/summary_columns.hpp"
 
 #include <cmath>
 #include <string>
 
 #include "sgmp/pack/metadata.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::metrics {
 
 const std::vector<SummaryColumn>& summary_columns() {
     static const std::vector<SummaryColumn> columns = [] {
@@ -66,4 +66,4 @@ const SummaryColumn* summary_column_of(const std::string& metric) {
     return nullptr;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::metrics

@@ -3,10 +3,10 @@
 #include <cmath>
 #include <string>
 
-#include "sgmp/compare/summary_columns.hpp"
+#include "sgmp/metrics/summary_columns.hpp"
 #include "sgmp/pack/metadata.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::metrics {
 
 std::vector<std::string> summary_fields(const Pack& pack, bool voronoi) {
     MeasureOptions options;
@@ -27,4 +27,4 @@ std::vector<std::string> summary_fields(const Pack& pack, bool voronoi) {
     return fields;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::metrics

@@ -1,6 +1,6 @@
-#include "sgmp/compare/voronoi.hpp"
+#include "sgmp/metrics/voronoi.hpp"
 
-#include "sgmp/compare/pack_content_error.hpp"
+#include "sgmp/metrics/pack_content_error.hpp"
 
 #include <voro++/voro++.hh>
 
@@ -15,19 +15,18 @@
 #include <string>
 #include <tuple>
 
-#include "sgmp/compare/parallel.hpp"
+#include "sgmp/metrics/parallel.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::metrics {
 namespace {
 
 /// voro++ finds neighbours by blocks; about 5–8 particles per block is its sweet spot.
 constexpr double kParticlesPerBlock = 6.0;
 /// Initial particle slots per block (voro++ doubles them when a block fills).
 constexpr int kInitialBlockMemory = 8;
-/// Threads split the measured cells, each with its own copy of the tessellation's container
-/// (~60 bytes per particle): at most kMaxTasks copies, and only for ≥ kCellsPerTask cells each.
-constexpr std::size_t kMaxTasks = 4;
-constexpr std::size_t kCellsPerTask = 20000;
+/// The halo of centres around a slab, in mean diameters (a cell needs every centre within
+/// twice its largest vertex distance: about 1.5 d in a dense pack).
+constexpr double kHaloDiameters = 3.0;
 
 std::string text_of(const Vec3& v) {
     std::ostringstream out;
@@ -51,6 +50,9 @@ void check_input(const std::vector<Particle>& particles, const Container& contai
     }
     if (options.histogram_bins == 0) {
         reject("histogram_bins = 0 (must be at least 1)");
+    }
+    if (options.cells_per_slab == 0) {
+        reject("cells_per_slab = 0 (must be at least 1)");
     }
     const bool finite = std::isfinite(container.x_min) && std::isfinite(container.x_max) &&
                         std::isfinite(container.z_min) && std::isfinite(container.z_max) &&
@@ -118,58 +120,185 @@ struct Cell {
     bool empty = false;
 };
 
+/// Fills out from voro++'s cell of sorted position k, centre c, and returns the cell's
+/// largest vertex distance from the centre, squared (voro++ stores vertices doubled).
+double fill_cell(voro::voronoicell& cell, const Vec3& c, double radius, double cap,
+                 double cap_tolerance, Cell& out) {
+    out.volume = cell.volume();
+    out.sphere_volume = 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
+    out.phi = out.sphere_volume / out.volume;
+    double top = -std::numeric_limits<double>::infinity();
+    double reach = 0.0;
+    for (int v = 0; v < cell.p; ++v) {
+        const double* q = cell.pts + 3 * v;
+        top = std::max(top, q[1]);
+        reach = std::max(reach, 0.25 * (q[0] * q[0] + q[1] * q[1] + q[2] * q[2]));
+    }
+    out.at_cap = c.y() + 0.5 * top >= cap - cap_tolerance;
+    return reach;
+}
+
 /// Tessellates with `VoroContainer` (voro::container or voro::container_poly) and fills
-/// `cells[slot[k]]` for the origins k (indices into `sorted`) with slot[k] ≥ 0. The measured
-/// origins are cut into `tasks` ranges of slots; each task builds its own, identical,
-/// container, so a cell comes out with the same bits whichever task computes it.
+/// `cells[slot[k]]` for the origins k (indices into `sorted`, which runs by increasing x)
+/// with slot[k] ≥ 0.
+///
+/// Slabs: the measured origins are cut, in sorted order, into slabs of about cells_per_slab
+/// (a number fixed by the input, never by the thread count); each slab is tessellated on
+/// its own, in a container spanning the box of its measured centres widened by a halo of
+/// kHaloDiameters mean diameters on each side (cut at the real walls), holding only the
+/// centres in it.
+/// A cell computed there is the cell of the whole pack when no centre it lacks could cut
+/// it: with R its largest vertex distance, every centre within 2R is present, and no
+/// artificial side lies within 2R (then none clipped the cell either). A cell that fails
+/// the test is computed again in a container of every centre. Slabs run on the threads;
+/// each cell comes from one fixed container, so results do not depend on the thread count.
 template <class VoroContainer, class Put>
 void tessellate(const std::vector<Particle>& particles, const std::vector<int>& sorted,
-                const std::vector<int>& slot, const Box& bounds, std::size_t tasks, Put put,
-                std::vector<Cell>& cells) {
-    const Vec3 sides = bounds.hi - bounds.lo;
-    const auto blocks = block_grid(sides, particles.size());
+                const std::vector<int>& slot, const Box& bounds, double mean_diameter,
+                std::size_t cells_per_slab, Put put, std::vector<Cell>& cells) {
     const double cap = bounds.hi.y();
-    const double cap_tolerance = 1e-9 * sides.maxCoeff();
-    parallel_for(tasks, [&](std::size_t task) {
-        const std::size_t first = task * cells.size() / tasks;
-        const std::size_t last = (task + 1) * cells.size() / tasks;
-        VoroContainer voro(bounds.lo.x(), bounds.hi.x(), bounds.lo.y(), bounds.hi.y(),
-                           bounds.lo.z(), bounds.hi.z(), blocks[0], blocks[1], blocks[2], false,
-                           false, false, kInitialBlockMemory);
-        for (std::size_t k = 0; k < sorted.size(); ++k) {
-            put(voro, static_cast<int>(k), particles[static_cast<std::size_t>(sorted[k])]);
+    const double cap_tolerance = 1e-9 * (bounds.hi - bounds.lo).maxCoeff();
+    const double halo = kHaloDiameters * mean_diameter;
+    // Sorted positions of the measured origins, in slot order (sorted is x-major).
+    std::vector<std::size_t> origin_at(cells.size());
+    for (std::size_t k = 0; k < sorted.size(); ++k) {
+        if (slot[k] >= 0) {
+            origin_at[static_cast<std::size_t>(slot[k])] = k;
         }
-        if (static_cast<std::size_t>(voro.total_particles()) != sorted.size()) {
+    }
+    const std::size_t slabs = std::max<std::size_t>(1, cells.size() / cells_per_slab);
+    std::vector<std::vector<std::size_t>> redo(slabs);  // slots whose cell failed the test
+    parallel_for(slabs, [&](std::size_t s) {
+        const std::size_t first = s * cells.size() / slabs;
+        const std::size_t last = (s + 1) * cells.size() / slabs;
+        if (first == last) {
+            return;
+        }
+        // The box of the slab's measured centres widened by the halo, cut at the real walls;
+        // its sides inside the container are open (artificial).
+        Vec3 lo = particles[static_cast<std::size_t>(sorted[origin_at[first]])].center;
+        Vec3 hi = lo;
+        for (std::size_t sl = first; sl < last; ++sl) {
+            const Vec3& c = particles[static_cast<std::size_t>(sorted[origin_at[sl]])].center;
+            lo = lo.cwiseMin(c);
+            hi = hi.cwiseMax(c);
+        }
+        lo = (lo.array() - halo).matrix().cwiseMax(bounds.lo);
+        hi = (hi.array() + halo).matrix().cwiseMin(bounds.hi);
+        std::array<bool, 3> open_lo{};
+        std::array<bool, 3> open_hi{};
+        for (int a = 0; a < 3; ++a) {
+            open_lo[static_cast<std::size_t>(a)] = lo[a] > bounds.lo[a];
+            open_hi[static_cast<std::size_t>(a)] = hi[a] < bounds.hi[a];
+        }
+        // The centres strictly inside the box: within one range of the x-sorted positions.
+        const auto x_below = [&](double x, bool strict) {
+            return static_cast<std::size_t>(
+                std::partition_point(sorted.begin(), sorted.end(),
+                                     [&](int i) {
+                                         const double v =
+                                             particles[static_cast<std::size_t>(i)].center.x();
+                                         return strict ? v < x : v <= x;
+                                     }) -
+                sorted.begin());
+        };
+        const std::size_t begin = x_below(lo.x(), false);
+        const std::size_t end = x_below(hi.x(), true);
+        const auto inside = [&](const Vec3& c) {
+            return (!open_lo[1] || c.y() > lo.y()) && (!open_hi[1] || c.y() < hi.y()) &&
+                   (!open_lo[2] || c.z() > lo.z()) && (!open_hi[2] || c.z() < hi.z());
+        };
+        std::size_t held = 0;
+        for (std::size_t k = begin; k < end; ++k) {
+            held += inside(particles[static_cast<std::size_t>(sorted[k])].center) ? 1 : 0;
+        }
+        const auto blocks = block_grid(hi - lo, std::max<std::size_t>(held, 1));
+        VoroContainer voro(lo.x(), hi.x(), lo.y(), hi.y(), lo.z(), hi.z(), blocks[0], blocks[1],
+                           blocks[2], false, false, false, kInitialBlockMemory);
+        for (std::size_t k = begin; k < end; ++k) {
+            const Particle& p = particles[static_cast<std::size_t>(sorted[k])];
+            if (inside(p.center)) {
+                put(voro, static_cast<int>(k), p);
+            }
+        }
+        if (static_cast<std::size_t>(voro.total_particles()) != held) {
             reject("a centre lies on a container wall (the tessellation could not place it)");
         }
+        // Squared distance from c to the nearest open side of the box.
+        const auto open_gap_squared = [&](const Vec3& c) {
+            double gap = std::numeric_limits<double>::infinity();
+            for (int a = 0; a < 3; ++a) {
+                if (open_lo[static_cast<std::size_t>(a)]) {
+                    gap = std::min(gap, c[a] - lo[a]);
+                }
+                if (open_hi[static_cast<std::size_t>(a)]) {
+                    gap = std::min(gap, hi[a] - c[a]);
+                }
+            }
+            return gap * gap;
+        };
         voro::voronoicell cell;
         voro::c_loop_all loop(voro);
         if (!loop.start()) {
             return;
         }
         do {
-            const int s = slot[static_cast<std::size_t>(loop.pid())];
-            if (s < 0 || static_cast<std::size_t>(s) < first ||
-                static_cast<std::size_t>(s) >= last) {
+            const auto k = static_cast<std::size_t>(loop.pid());
+            const int sl = slot[k];
+            if (sl < 0 || static_cast<std::size_t>(sl) < first ||
+                static_cast<std::size_t>(sl) >= last) {
                 continue;
             }
-            Cell& out = cells[static_cast<std::size_t>(s)];
+            Cell& out = cells[static_cast<std::size_t>(sl)];
             if (!voro.compute_cell(cell, loop)) {
-                out.empty = true;
+                redo[s].push_back(static_cast<std::size_t>(sl));
                 continue;
             }
-            const double r = particles[static_cast<std::size_t>(sorted[loop.pid()])].radius;
-            out.volume = cell.volume();
-            out.sphere_volume = 4.0 / 3.0 * std::numbers::pi * r * r * r;
-            out.phi = out.sphere_volume / out.volume;
-            // voro++ stores the vertices relative to the centre, doubled.
-            double top = -std::numeric_limits<double>::infinity();
-            for (int v = 0; v < cell.p; ++v) {
-                top = std::max(top, cell.pts[3 * v + 1]);
+            const Particle& p = particles[static_cast<std::size_t>(sorted[k])];
+            const double reach = fill_cell(cell, p.center, p.radius, cap, cap_tolerance, out);
+            const double need = 4.0 * reach * (1.0 + 1e-9);  // (2R)², widened for rounding
+            if (open_gap_squared(p.center) <= need) {
+                redo[s].push_back(static_cast<std::size_t>(sl));
             }
-            out.at_cap = loop.y() + 0.5 * top >= cap - cap_tolerance;
         } while (loop.inc());
     });
+    std::vector<std::size_t> again;
+    for (const auto& r : redo) {
+        again.insert(again.end(), r.begin(), r.end());
+    }
+    if (again.empty()) {
+        return;
+    }
+    // The cells a slab could not vouch for, in a container of every centre.
+    const auto blocks = block_grid(bounds.hi - bounds.lo, sorted.size());
+    VoroContainer voro(bounds.lo.x(), bounds.hi.x(), bounds.lo.y(), bounds.hi.y(), bounds.lo.z(),
+                       bounds.hi.z(), blocks[0], blocks[1], blocks[2], false, false, false,
+                       kInitialBlockMemory);
+    for (std::size_t k = 0; k < sorted.size(); ++k) {
+        put(voro, static_cast<int>(k), particles[static_cast<std::size_t>(sorted[k])]);
+    }
+    std::vector<char> wanted(cells.size(), 0);
+    for (const std::size_t sl : again) {
+        wanted[sl] = 1;
+    }
+    voro::voronoicell cell;
+    voro::c_loop_all loop(voro);
+    if (!loop.start()) {
+        return;
+    }
+    do {
+        const int sl = slot[static_cast<std::size_t>(loop.pid())];
+        if (sl < 0 || wanted[static_cast<std::size_t>(sl)] == 0) {
+            continue;
+        }
+        Cell& out = cells[static_cast<std::size_t>(sl)];
+        if (!voro.compute_cell(cell, loop)) {
+            out.empty = true;
+            continue;
+        }
+        const Particle& p = particles[static_cast<std::size_t>(sorted[loop.pid()])];
+        fill_cell(cell, p.center, p.radius, cap, cap_tolerance, out);
+    } while (loop.inc());
 }
 
 }  // namespace
@@ -204,18 +333,16 @@ VoronoiPhi voronoi_local_phi(const std::vector<Particle>& particles, const Conta
     }
 
     std::vector<Cell> cells(static_cast<std::size_t>(count));
-    const std::size_t tasks = std::clamp<std::size_t>(
-        std::min<std::size_t>(thread_count(), cells.size() / kCellsPerTask), 1, kMaxTasks);
     if (equal_radii) {
         tessellate<voro::container>(
-            particles, sorted, slot, bounds, tasks,
+            particles, sorted, slot, bounds, mean_diameter, options.cells_per_slab,
             [](voro::container& voro, int k, const Particle& p) {
                 voro.put(k, p.center.x(), p.center.y(), p.center.z());
             },
             cells);
     } else {
         tessellate<voro::container_poly>(
-            particles, sorted, slot, bounds, tasks,
+            particles, sorted, slot, bounds, mean_diameter, options.cells_per_slab,
             [](voro::container_poly& voro, int k, const Particle& p) {
                 voro.put(k, p.center.x(), p.center.y(), p.center.z(), p.radius);
             },
@@ -258,4 +385,4 @@ VoronoiPhi voronoi_local_phi(const std::vector<Particle>& particles, const Conta
     return result;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::metrics

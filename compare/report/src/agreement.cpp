@@ -1,4 +1,4 @@
-#include "sgmp/compare/agreement.hpp"
+#include "sgmp/report/agreement.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,13 +8,17 @@
 #include <set>
 #include <stdexcept>
 
-#include "sgmp/compare/coordination_tolerances.hpp"
-#include "sgmp/compare/equivalence.hpp"
-#include "sgmp/compare/group_curves.hpp"
-#include "sgmp/compare/statistics.hpp"
+#include "sgmp/metrics/coordination_tolerances.hpp"
 #include "sgmp/pack/metadata.hpp"
+#include "sgmp/report/equivalence.hpp"
+#include "sgmp/report/group_curves.hpp"
+#include "sgmp/report/statistics.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::report {
+
+using metrics::coordination_tolerance_names;
+using metrics::coordination_tolerances;
+using metrics::Measurement;
 namespace {
 
 /// A contact metric at δ is judged where the groups' overlap depths differ by at most this
@@ -647,4 +651,4 @@ Report build_report(std::vector<Group> groups, ReportPlan plan) {
     return report;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::report

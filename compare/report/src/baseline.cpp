@@ -1,4 +1,4 @@
-#include "sgmp/compare/baseline.hpp"
+#include "sgmp/report/baseline.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -6,10 +6,12 @@
 #include <sstream>
 #include <tuple>
 
-#include "sgmp/compare/metrics_output.hpp"
+#include "sgmp/metrics/metrics_output.hpp"
 #include "sgmp/pack/input_error.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::report {
+
+using metrics::kSchemaVersion;
 namespace {
 
 using Key = std::tuple<std::string, std::size_t, std::string>;
@@ -185,4 +187,4 @@ std::string render_regression_table(const std::vector<RegressionRow>& rows, bool
     return out.str();
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::report

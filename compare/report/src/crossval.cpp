@@ -1,11 +1,11 @@
-#include "sgmp/compare/crossval.hpp"
+#include "sgmp/report/crossval.hpp"
 
 #include <algorithm>
 #include <map>
 #include <set>
 #include <stdexcept>
 
-namespace sgmp::compare {
+namespace sgmp::report {
 namespace {
 
 /// Mean wall seconds of the manifest's packs of `group` at `count` (any role).
@@ -379,4 +379,4 @@ CrossValidation cross_validate(const Report& report, const std::vector<ManifestE
     return cv;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::report

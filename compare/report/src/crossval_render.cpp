@@ -1,15 +1,18 @@
-#include "sgmp/compare/crossval_render.hpp"
+#include "sgmp/report/crossval_render.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 
-#include "sgmp/compare/csv_text.hpp"
-#include "sgmp/compare/metrics_output.hpp"
-#include "sgmp/compare/report_render.hpp"
+#include "sgmp/metrics/csv_text.hpp"
+#include "sgmp/metrics/metrics_output.hpp"
+#include "sgmp/report/report_render.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::report {
+
+using metrics::kSchemaVersion;
+using metrics::write_csv_preamble;
 namespace {
 
 using Json = nlohmann::ordered_json;
@@ -460,4 +463,4 @@ Json crossval_json(const CrossValidation& cv) {
             {"tuning", tuning_json(cv)},        {"headline", rows}};
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::report

@@ -1,6 +1,6 @@
-#include "sgmp/compare/equivalence.hpp"
+#include "sgmp/report/equivalence.hpp"
 
-#include "sgmp/compare/statistics.hpp"
+#include "sgmp/report/statistics.hpp"
 
 #include <algorithm>
 #include <boost/math/distributions/normal.hpp>
@@ -9,7 +9,7 @@
 #include <limits>
 #include <numbers>
 
-namespace sgmp::compare {
+namespace sgmp::report {
 namespace {
 
 constexpr double kPowerQuantile = 0.80;
@@ -520,4 +520,4 @@ EquivalenceResult test_l2_curves(const std::vector<std::vector<double>>& candida
     return r;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::report

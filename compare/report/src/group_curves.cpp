@@ -1,11 +1,11 @@
-#include "sgmp/compare/group_curves.hpp"
+#include "sgmp/report/group_curves.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "sgmp/compare/statistics.hpp"
+#include "sgmp/report/statistics.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::report {
 namespace {
 
 std::vector<double> sd_curve(const std::vector<std::vector<double>>& curves) {
@@ -99,4 +99,4 @@ GroupCurves curves_of(const std::vector<const PackSummary*>& all) {
     return c;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::report

@@ -3,7 +3,7 @@
 
 #include <string>
 
-namespace sgmp::compare::detail {
+namespace sgmp::report::detail {
 
 inline std::string html_escape(const std::string& text) {
     std::string out;
@@ -28,4 +28,4 @@ inline std::string html_escape(const std::string& text) {
     return out;
 }
 
-}  // namespace sgmp::compare::detail
+}  // namespace sgmp::report::detail

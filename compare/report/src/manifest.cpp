@@ -1,4 +1,4 @@
-#include "sgmp/compare/manifest.hpp"
+#include "sgmp/report/manifest.hpp"
 
 #include <set>
 
@@ -6,7 +6,7 @@
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/line_reader.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::report {
 namespace {
 
 constexpr const char* kHeader = "role,group,count,seed,seconds,path";
@@ -109,4 +109,4 @@ std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& so
     return entries;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::report

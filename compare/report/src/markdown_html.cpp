@@ -3,9 +3,9 @@
 
 #include <stdexcept>
 
-#include "sgmp/compare/report_render.hpp"
+#include "sgmp/report/report_render.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::report {
 namespace {
 
 void append(const MD_CHAR* text, MD_SIZE size, void* out) {
@@ -24,4 +24,4 @@ std::string markdown_to_html(const std::string& markdown) {
     return html;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::report

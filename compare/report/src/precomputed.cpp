@@ -1,16 +1,22 @@
-#include "sgmp/compare/precomputed.hpp"
+#include "sgmp/report/precomputed.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "sgmp/compare/metrics_output.hpp"
-#include "sgmp/compare/summary_columns.hpp"
+#include "sgmp/metrics/metrics_output.hpp"
+#include "sgmp/metrics/summary_columns.hpp"
 #include "sgmp/pack/csv_fields.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/metadata.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::report {
+
+using metrics::coordination_tolerance_names;
+using metrics::kSchemaVersion;
+using metrics::summary_column_of;
+using metrics::summary_columns;
+using metrics::SummaryColumn;
 namespace {
 
 constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
@@ -304,4 +310,4 @@ std::vector<std::pair<std::string, PackSummary>> summaries_from_batch(std::strin
     return out;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::report

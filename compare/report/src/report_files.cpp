@@ -1,13 +1,13 @@
-#include "sgmp/compare/report_files.hpp"
+#include "sgmp/report/report_files.hpp"
 
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
-#include "sgmp/compare/report_plots.hpp"
 #include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/report/report_plots.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::report {
 namespace fs = std::filesystem;
 namespace {
 
@@ -46,4 +46,4 @@ ReportContext write_report(const fs::path& directory, bool overwrite, const Repo
     return context;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::report

@@ -1,4 +1,4 @@
-#include "sgmp/compare/report_pictures.hpp"
+#include "sgmp/report/report_pictures.hpp"
 
 #include <unistd.h>
 
@@ -16,7 +16,7 @@
 #include "sgmp/render/povray.hpp"
 #include "sgmp/render/scene.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::report {
 namespace fs = std::filesystem;
 namespace {
 
@@ -182,4 +182,4 @@ std::string pictures_markdown(const std::vector<PictureChoice>& choices, const P
     return md.str();
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::report

@@ -1,4 +1,4 @@
-#include "sgmp/compare/report_plots.hpp"
+#include "sgmp/report/report_plots.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -7,13 +7,16 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "sgmp/compare/measure.hpp"
+#include "sgmp/metrics/measure.hpp"
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/child_process.hpp"
 #include "sgmp/pack/executables.hpp"
 #include "sgmp/pack/metadata.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::report {
+
+using metrics::coordination_tolerance_names;
+using metrics::coordination_tolerances;
 namespace fs = std::filesystem;
 namespace {
 
@@ -470,4 +473,4 @@ PlotResult make_plots(const std::vector<PlotPanel>& panels, const std::vector<Tr
     return run_gnuplot(*gnuplot, directory, files);
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::report

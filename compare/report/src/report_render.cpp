@@ -1,16 +1,19 @@
-#include "sgmp/compare/report_render.hpp"
+#include "sgmp/report/report_render.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 
 #include "html_text.hpp"
-#include "sgmp/compare/csv_text.hpp"
-#include "sgmp/compare/metrics_output.hpp"
+#include "sgmp/metrics/csv_text.hpp"
+#include "sgmp/metrics/metrics_output.hpp"
 #include "sgmp/pack/metadata.hpp"
 #include "sgmp/pack/version.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::report {
+
+using metrics::kSchemaVersion;
+using metrics::write_csv_preamble;
 
 using detail::html_escape;
 
@@ -468,4 +471,4 @@ std::string render_html(const Report& report, const ReportContext& context,
     return html.str();
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::report

@@ -1,10 +1,10 @@
-#include "sgmp/compare/statistics.hpp"
+#include "sgmp/report/statistics.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-namespace sgmp::compare {
+namespace sgmp::report {
 
 double mean(const std::vector<double>& values) {
     if (values.empty()) {
@@ -63,4 +63,4 @@ double l2_distance(const std::vector<double>& x, const std::vector<double>& a,
     return std::sqrt(sum);
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::report

@@ -1,4 +1,4 @@
-#include "sgmp/compare/thesis_table.hpp"
+#include "sgmp/report/thesis_table.hpp"
 
 #include <algorithm>
 #include <functional>
@@ -7,7 +7,7 @@
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/line_reader.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::report {
 namespace {
 
 using Fields = std::vector<std::string>;
@@ -96,4 +96,4 @@ std::optional<ThesisStart> find_thesis_start(const std::vector<ThesisStart>& sta
     return find_row(starts, arrangement, count);
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::report

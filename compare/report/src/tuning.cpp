@@ -1,4 +1,4 @@
-#include "sgmp/compare/tuning.hpp"
+#include "sgmp/report/tuning.hpp"
 
 #include <sstream>
 
@@ -6,7 +6,7 @@
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/line_reader.hpp"
 
-namespace sgmp::compare {
+namespace sgmp::report {
 namespace {
 
 constexpr const char* kHeader = "group,parameter,value,reference,count,seeds,note";
@@ -104,4 +104,4 @@ std::size_t withhold_tuned(Report& report, const std::vector<TunedParameter>& tu
     return withheld;
 }
 
-}  // namespace sgmp::compare
+}  // namespace sgmp::report

@@ -149,12 +149,20 @@ double disk_rectangle_area(double rho, double y0, double y1, double z0, double z
     return std::clamp(area, 0.0, kPi * rho * rho);
 }
 
-double packing_fraction(const Pack& pack, const Box& region) {
+double packing_fraction(const std::vector<Particle>& particles, const Box& region) {
+    const double volume = region.volume();
+    if (!(volume > 0.0)) {
+        throw std::invalid_argument("packing fraction of an empty region");
+    }
     double solid = 0.0;
-    for (const auto& p : pack.particles) {
+    for (const auto& p : particles) {
         solid += sphere_box_volume(p.center, p.radius, region);
     }
-    return solid / region.volume();
+    return solid / volume;
+}
+
+double packing_fraction(const Pack& pack, const Box& region) {
+    return packing_fraction(pack.particles, region);
 }
 
 double sphere_box_volume(const Vec3& center, double radius, const Box& box) {

@@ -6,16 +6,16 @@
 #include <stdexcept>
 
 #include "bindings.hpp"
-#include "sgmp/compare/measure.hpp"
-#include "sgmp/compare/metrics_output.hpp"
-#include "sgmp/compare/parallel.hpp"
+#include "sgmp/metrics/measure.hpp"
+#include "sgmp/metrics/metrics_output.hpp"
+#include "sgmp/metrics/parallel.hpp"
 #include "sgmp/pack/parameter_error.hpp"
 
 namespace sgmp::python {
 namespace {
 
-using compare::Measurement;
-using compare::MeasureOptions;
+using metrics::Measurement;
+using metrics::MeasureOptions;
 
 /// Columns `columns` of equal length as one (rows, columns) array.
 py::array_t<double> table(const std::vector<const std::vector<double>*>& columns) {
@@ -74,7 +74,7 @@ py::dict measure(const py::object& pack_object, const std::optional<std::vector<
         throw ParameterError("gr_density", gr_density, "must be one of neighbours, space");
     }
     o.gr_density =
-        gr_density == "space" ? compare::RdfDensity::Space : compare::RdfDensity::Neighbours;
+        gr_density == "space" ? metrics::RdfDensity::Space : metrics::RdfDensity::Neighbours;
     o.gr_container_space = gr_container_space;
     o.voronoi = voronoi;
     o.q6_cutoff = q6_cutoff;
@@ -83,14 +83,14 @@ py::dict measure(const py::object& pack_object, const std::optional<std::vector<
         throw ParameterError("threads", std::to_string(threads),
                              "must be in [0, 256] (0: all cores)");
     }
-    compare::validate(o);
-    compare::set_thread_count(threads);
+    metrics::validate(o);
+    metrics::set_thread_count(threads);
     Measurement m;
     {
         py::gil_scoped_release unlocked;
-        m = compare::measure(pack, o);
+        m = metrics::measure(pack, o);
     }
-    const auto json = compare::metrics_json(m, compare::provenance("python", pack, o));
+    const auto json = metrics::metrics_json(m, metrics::provenance("python", pack, o));
     py::dict out = py::module_::import("json").attr("loads")(json.dump());
     const auto& rdf = m.local.rdf;
     out["g_r"] = table({&rdf.r_over_d, &rdf.g});
@@ -100,7 +100,7 @@ py::dict measure(const py::object& pack_object, const std::optional<std::vector<
     }
     out["phi_y"] = table({&y_mid, &m.phi_profile.phi});
     out["p_z"] = p_z(m);
-    out["p_z_tolerances"] = compare::coordination_tolerance_names();
+    out["p_z_tolerances"] = metrics::coordination_tolerance_names();
     return out;
 }
 

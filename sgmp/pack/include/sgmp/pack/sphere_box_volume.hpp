@@ -12,6 +12,8 @@
 /// take quadrature: no clip is the ball, one a slab ∫ π(r² − u²) du, two the closed form of
 /// ball_cut.hpp.
 
+#include <vector>
+
 #include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/pack.hpp"
 
@@ -21,7 +23,11 @@ namespace sgmp {
 /// bounds). Accurate to ~1e-13 relative to (4/3)πr³.
 double sphere_box_volume(const Vec3& center, double radius, const Box& box);
 
-/// Packing fraction of `region`: Σ sphere_box_volume(c_i, r_i, region) / |region|.
+/// Packing fraction of `region`: Σ sphere_box_volume(c_i, r_i, region) / |region|, summed
+/// in particle order — the one φ of the project (pack headers, pours, `measure`). Throws
+/// std::invalid_argument for a region of no volume.
+double packing_fraction(const std::vector<Particle>& particles, const Box& region);
+/// The same over `pack.particles`.
 double packing_fraction(const Pack& pack, const Box& region);
 
 /// Area of the disk of radius `rho` centred at the origin inside [y0, y1] × [z0, z1].

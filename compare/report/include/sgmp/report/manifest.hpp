@@ -1,0 +1,39 @@
+#pragma once
+/// @file manifest.hpp
+/// The list of packs a cross-validation reads: a CSV file with the header
+/// `role,group,count,seed,seconds,path`, one pack per line. `role` is `candidate` (packs
+/// under test, e.g. one SGMP arrangement per group) or `reference` (the classes they are
+/// judged against, e.g. one DEM friction class per group) or `variant` / `stiff` (another
+/// protocol or stiffness of the reference group named by `group`: a reference class of its
+/// own, "<group> (variant)", crossval.hpp);
+/// `seconds` is the wall time that made the pack (empty when unknown).
+
+#include <cstddef>
+#include <cstdint>
+#include <istream>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sgmp::report {
+
+enum class Role { Candidate, Reference, Variant, Stiff };
+/// "candidate", "reference", "variant", "stiff": the manifest's words.
+const char* to_string(Role role);
+
+struct ManifestEntry {
+    Role role = Role::Candidate;
+    std::string group;
+    std::size_t count = 0;
+    std::uint64_t seed = 0;
+    std::optional<double> seconds;
+    std::string path;
+};
+
+/// Reads a manifest strictly; throws sgmp::InputError ("source:line: reason") on a wrong
+/// header, a wrong number of fields, an unknown role, a non-numeric count, seed or seconds,
+/// an empty group or path, or a path listed twice. Fields holding a comma or a quote are
+/// double-quoted, with quotes doubled (RFC 4180).
+std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& source);
+
+}  // namespace sgmp::report

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """ARCHITECTURE.md names every script and every library the tree has.
 
-A script is an executable file directly in scripts/ (and the scripts/slurm/ folder); a
-library is an `add_library(NAME` of a CMakeLists.txt outside tests/ (imported targets and
+A script is an executable file directly in scripts/, or a folder of scripts/ (slurm/, lib/)
+named with its slash; a library is an `add_library(NAME` of a CMakeLists.txt outside tests/ (imported targets and
 the INTERFACE target of the compile flags excepted). Exit 0 when ARCHITECTURE.md names
 every one in backquotes, 1 listing the missing ones otherwise.
 
@@ -22,7 +22,8 @@ def main(argv):
     missing = []
     scripts = [p.name for p in sorted((root / "scripts").iterdir())
                if p.is_file() and os.access(p, os.X_OK)]
-    scripts += ["slurm/"] if (root / "scripts" / "slurm").is_dir() else []
+    scripts += [folder.name + "/" for folder in sorted((root / "scripts").iterdir())
+                if folder.is_dir() and not folder.name.startswith((".", "__"))]
     for name in scripts:
         if name not in named:
             missing.append(f"script scripts/{name}")

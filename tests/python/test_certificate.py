@@ -66,6 +66,7 @@ def relaxed(tmp_path_factory):
     return read_xyz(out)
 
 
+@pytest.mark.cli
 def test_the_header_counts_the_contacts_scipy_finds(relaxed):
     header, centres, radii = relaxed
     d = float(header["diameter"])
@@ -73,6 +74,7 @@ def test_the_header_counts_the_contacts_scipy_finds(relaxed):
     assert a.shape[1] == int(header["certificate_contacts"])
 
 
+@pytest.mark.cli
 def test_the_reported_residual_is_the_least_squares_one(relaxed):
     header, centres, radii = relaxed
     d = float(header["diameter"])
@@ -86,6 +88,7 @@ def test_the_reported_residual_is_the_least_squares_one(relaxed):
     assert abs(ours - residual.max()) <= 0.05 * max(1.0, residual.max()), (ours, residual.max())
 
 
+@pytest.mark.cli
 def test_highs_reaches_the_certificate_decision(relaxed):
     header, centres, radii = relaxed
     d = float(header["diameter"])
@@ -179,6 +182,7 @@ def highs_worst_residual(a, b, per_sphere):
     return np.linalg.norm(s.reshape(-1, per_sphere), axis=1).max()
 
 
+@pytest.mark.cli
 @pytest.mark.parametrize("mu", ["0.2", "0.5"])
 def test_highs_certifies_the_frictional_relaxation(tmp_path, mu):
     out = tmp_path / "frictional.xyz"

@@ -50,6 +50,7 @@ def run(*args):
         ),
     ],
 )
+@pytest.mark.cli
 def test_pack_writes_the_same_bytes_as_sgmp_pack(tmp_path, options, cli):
     ours = tmp_path / "python.xyz"
     theirs = tmp_path / "cli.xyz"
@@ -76,6 +77,7 @@ def test_arrays_and_header():
     assert start.header["generator"] == "sgmp" and len(start) == 120
 
 
+@pytest.mark.cli
 def test_measure_equals_sgmp_compare_measure(tmp_path):
     path = tmp_path / "p.xyz"
     sgmp.write(sgmp.pack(count=600, arrangement="large-dense", seed=1), path)
@@ -109,6 +111,7 @@ def test_measure_equals_sgmp_compare_measure(tmp_path):
         (dict(momentum=1.5), ["--momentum", "1.5"], "1.5"),
     ],
 )
+@pytest.mark.cli
 def test_bad_options_raise_value_error_with_the_command_line_text(tmp_path, options, cli, value):
     with pytest.raises(ValueError) as error:
         sgmp.pack(count=100, arrangement="small-dense", seed=1, **options)

@@ -1,5 +1,7 @@
 #include "command_support.hpp"
 
+#include "sgmp/pack/parameter_error.hpp"
+
 #include "sgmp/metrics/pack_content_error.hpp"
 
 #include <chrono>
@@ -142,7 +144,9 @@ Measurement measure_pack(const std::string& path, const Pack& pack, const Common
         m = measure(pack, o.measure);
     } catch (const PackContentError& error) {  // the file's fault: status 1
         throw InputError(path, 0, error.what());
-    } catch (const std::invalid_argument& error) {  // an option's: status 2
+    } catch (const ParameterError& error) {  // an option's: status 2
+        throw UsageError(path + ": " + ::sgmp::cli::usage_message(error));
+    } catch (const std::invalid_argument& error) {
         throw UsageError(path + ": " + error.what());
     }
     if (o.timings) {
@@ -151,8 +155,8 @@ Measurement measure_pack(const std::string& path, const Pack& pack, const Common
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::cerr << "timings " << path << ": index " << t.index << " s, phi " << t.phi
                   << " s, phi(y) " << t.phi_profile << " s, overlaps " << t.overlaps
-                  << " s, Z(delta)+g(r)+Q6 " << t.local << " s, Voronoi " << t.voronoi
-                  << " s, total " << total << " s\n";
+                  << " s, Z(delta)+g(r)+Q6 " << t.local << " s, per species " << t.species
+                  << " s, Voronoi " << t.voronoi << " s, total " << total << " s\n";
     }
     return m;
 }

@@ -28,6 +28,7 @@
 #include "sgmp/batch/seed_list.hpp"
 #include "sgmp/batch/shard.hpp"
 #include "sgmp/batch/world.hpp"
+#include "sgmp/cli/run_main.hpp"
 #include "sgmp/metrics/parallel.hpp"
 #include "sgmp/metrics/summary_columns.hpp"
 #include "sgmp/pack/atomic_file.hpp"
@@ -35,6 +36,7 @@
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/output_lock.hpp"
 #include "sgmp/pack/pack_file.hpp"
+#include "sgmp/pack/parameter_error.hpp"
 
 namespace sgmp::app {
 namespace fs = std::filesystem;
@@ -434,6 +436,9 @@ int BatchCommand::run() {
         return run_sweep(s, world);
     } catch (const BadValue& e) {
         std::cerr << "sgmp: " << printable(e.message) << "\n";
+        return 2;
+    } catch (const ParameterError& e) {  // named as headers do; said as the option is typed
+        std::cerr << "sgmp: " << printable(cli::usage_message(e)) << "\n";
         return 2;
     } catch (const std::invalid_argument& e) {
         std::cerr << "sgmp: " << printable(e.what()) << "\n";

@@ -261,7 +261,7 @@ BOOST_AUTO_TEST_CASE(no_option_or_pack_allocates_without_bound) {
         {"measure a.xyz --out o --threads 4294967295",
          "sgmp-compare: --threads: must be a number in [0, 256] (0: all cores)"},
         {"measure tall.xyz --out o",
-         "sgmp-compare: tall.xyz: --slab 1 gives 10000000007 slabs from the floor to the top "
+         "sgmp-compare: tall.xyz: --slab 1: gives 10000000007 slabs from the floor to the top "
          "sphere; at most 1000000 are allowed"},
     };
     for (const auto& [arguments, message] : bad) {

@@ -55,15 +55,15 @@ std::string describe(const Box& b) {
 void check_region(const Box& region, const Container& container) {
     if (!((region.hi - region.lo).array() > 0.0).all() || !region.lo.allFinite() ||
         !region.hi.allFinite()) {
-        throw std::invalid_argument("--region '" + describe(region) +
-                                    "' must be finite with xlo < xhi, ylo < yhi, zlo < zhi");
+        throw ParameterError("region", "'" + describe(region) + "'",
+                             "must be finite with xlo < xhi, ylo < yhi, zlo < zhi");
     }
     if (region.lo.x() < container.x_min || region.hi.x() > container.x_max ||
         region.lo.z() < container.z_min || region.hi.z() > container.z_max ||
         region.lo.y() < container.floor) {
-        throw std::invalid_argument("--region '" + describe(region) +
-                                    "' must lie inside the container '" + container.to_string() +
-                                    "' (x_min x_max z_min z_max floor)");
+        throw ParameterError("region", "'" + describe(region) + "'",
+                             "must lie inside the container '" + container.to_string() +
+                                 "' (x_min x_max z_min z_max floor)");
     }
 }
 
@@ -191,10 +191,10 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     const double slabs =
         (std::max(m.top, m.region.hi.y()) - m.container.floor) / (options.slab_thickness * d);
     if (!(slabs <= kMaxSlabs)) {
-        throw std::invalid_argument("--slab " + format_number(options.slab_thickness) + " gives " +
-                                    format_number(std::ceil(slabs)) +
-                                    " slabs from the floor to the top sphere; at most " +
-                                    std::to_string(static_cast<long>(kMaxSlabs)) + " are allowed");
+        throw ParameterError("slab", format_number(options.slab_thickness),
+                             "gives " + format_number(std::ceil(slabs)) +
+                                 " slabs from the floor to the top sphere; at most " +
+                                 std::to_string(static_cast<long>(kMaxSlabs)) + " are allowed");
     }
     const std::vector<Particle> particles = spatially_ordered(pack.particles, d);
 
@@ -205,8 +205,7 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
         }
     }
     if (origins.empty()) {
-        throw std::invalid_argument("--region '" + describe(m.region) +
-                                    "' holds no particle centre");
+        throw ParameterError("region", "'" + describe(m.region) + "'", "holds no particle centre");
     }
     stage_times.index = watch.lap();
 
@@ -235,6 +234,16 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
         m.thesis_rdf = thesis_rdf(particles, m.region, m.phi, options.gr_bin_width * d, local.bins);
     }
     stage_times.local = watch.lap();
+    SpeciesStructureOptions per_species;
+    per_species.region = m.region;
+    per_species.space = local.space;
+    per_species.mean_diameter = d;
+    per_species.bin_width_over_d = local.bin_width_over_d;
+    per_species.bins = local.bins;
+    per_species.density_rule = local.density_rule;
+    per_species.tolerances = local.tolerances;
+    m.species = measure_species_structure(particles, per_species);
+    stage_times.species = watch.lap();
     if (options.voronoi) {
         m.voronoi = voronoi_local_phi(particles, m.container, m.region);
     }

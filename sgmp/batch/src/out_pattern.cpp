@@ -1,5 +1,7 @@
 #include "sgmp/batch/out_pattern.hpp"
 
+#include "sgmp/pack/parameter_error.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -9,7 +11,7 @@ namespace sgmp::batch {
 
 OutPattern::OutPattern(std::string_view pattern, const Plan& plan) {
     const auto refuse = [&](const std::string& rule) {
-        throw std::invalid_argument("--out-pattern " + printable(pattern) + ": " + rule);
+        throw ParameterError("out_pattern", printable(pattern), rule);
     };
     if (pattern.empty()) {
         refuse("must name the pack files, e.g. packs/{arrangement}/n{count}-s{seed}.xyz.gz");

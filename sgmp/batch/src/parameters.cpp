@@ -13,15 +13,9 @@ namespace {
 
 using engine::PackRequest;
 
-std::string option_of(const std::string& name) {
-    std::string option = name;
-    std::replace(option.begin(), option.end(), '_', '-');
-    return "--" + option;
-}
-
 [[noreturn]] void refuse(const std::string& name, const std::string& value,
                          const std::string& rule) {
-    throw std::invalid_argument(option_of(name) + (value.empty() ? "" : " " + value) + ": " + rule);
+    throw ParameterError(name, value, rule);
 }
 
 template <class T>
@@ -180,12 +174,7 @@ engine::PackRequest to_request(const ParameterValues& values, std::uint64_t seed
             apply(request, table[i].name, values[i]);
         }
     }
-    try {
-        engine::validate(request);
-    } catch (const ParameterError& e) {
-        // The engine names the parameter as headers do; say it as the option is typed.
-        refuse(e.name(), e.value(), e.rule());
-    }
+    engine::validate(request);  // ParameterError, named as headers do: the front end spells it
     return request;
 }
 

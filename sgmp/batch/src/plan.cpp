@@ -1,16 +1,12 @@
 #include "sgmp/batch/plan.hpp"
 
+#include "sgmp/pack/parameter_error.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 
 namespace sgmp::batch {
 namespace {
-
-std::string option_of(const std::string& name) {
-    std::string option = name;
-    std::replace(option.begin(), option.end(), '_', '-');
-    return "--" + option;
-}
 
 /// The value lists with defaults filled in; throws for an empty required list.
 std::vector<std::vector<std::string>> filled(const Grid& grid) {
@@ -23,8 +19,8 @@ std::vector<std::vector<std::string>> filled(const Grid& grid) {
         auto& list = lists[i];
         if (list.empty()) {
             if (table[i].name == "count" || table[i].name == "arrangement") {
-                throw std::invalid_argument(option_of(table[i].name) +
-                                            ": the grid is empty; give at least one value");
+                throw ParameterError(table[i].name, "",
+                                     "the grid is empty; give at least one value");
             }
             list.push_back(table[i].default_value);
         }
@@ -32,8 +28,7 @@ std::vector<std::vector<std::string>> filled(const Grid& grid) {
         std::sort(sorted.begin(), sorted.end());
         const auto repeated = std::adjacent_find(sorted.begin(), sorted.end());
         if (repeated != sorted.end()) {
-            throw std::invalid_argument(option_of(table[i].name) + " " + *repeated +
-                                        ": is listed twice (each value once)");
+            throw ParameterError(table[i].name, *repeated, "is listed twice (each value once)");
         }
     }
     return lists;
@@ -44,7 +39,7 @@ std::vector<std::vector<std::string>> filled(const Grid& grid) {
 Plan make_plan(const Grid& grid) {
     const auto lists = filled(grid);
     if (grid.seeds.empty()) {
-        throw std::invalid_argument("--seeds: the grid is empty; give at least one seed");
+        throw ParameterError("seeds", "", "the grid is empty; give at least one seed");
     }
     std::uint64_t total = grid.seeds.size();
     for (const auto& list : lists) {

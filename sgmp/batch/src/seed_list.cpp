@@ -1,5 +1,7 @@
 #include "sgmp/batch/seed_list.hpp"
 
+#include "sgmp/pack/parameter_error.hpp"
+
 #include <algorithm>
 #include <optional>
 #include <stdexcept>
@@ -20,7 +22,7 @@ std::optional<std::uint64_t> whole(std::string_view text) {
 
 std::vector<std::uint64_t> parse_seed_list(std::string_view text) {
     const auto refuse = [&](const std::string& rule) {
-        throw std::invalid_argument("--seeds " + printable(text) + ": " + rule);
+        throw ParameterError("seeds", printable(text), rule);
     };
     const std::string form =
         "must be seeds S or ranges A-B (A <= B) of whole numbers from 0 to "

@@ -1,5 +1,7 @@
 #include "sgmp/batch/shard.hpp"
 
+#include "sgmp/pack/parameter_error.hpp"
+
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -23,13 +25,12 @@ Shard parse_shard(std::string_view text) {
     const auto count =
         slash == std::string_view::npos ? std::nullopt : whole(text.substr(slash + 1));
     if (!index || !count || *count == 0) {
-        throw std::invalid_argument("--shard " + printable(text) +
-                                    ": must be I/N with whole numbers N >= 1 and 1 <= I <= N, "
-                                    "e.g. 3/40");
+        throw ParameterError("shard", printable(text),
+                             "must be I/N with whole numbers N >= 1 and 1 <= I <= N, e.g. 3/40");
     }
     if (*index < 1 || *index > *count) {
-        throw std::invalid_argument("--shard " + printable(text) + ": I must lie in 1.." +
-                                    std::to_string(*count));
+        throw ParameterError("shard", printable(text),
+                             "I must lie in 1.." + std::to_string(*count));
     }
     return {*index, *count};
 }

@@ -31,6 +31,55 @@ Json overlap_json(const OverlapSummary& s) {
                 {"worst", worst}};
 }
 
+/// A blend's per-species structure (species_structure.hpp): per species its origins, count,
+/// mean diameter and Z_I(δ); per pair type I ≤ J its bin offset, ρ_J and Z_IJ(δ), Z_JI(δ).
+/// The partial g_IJ(r) are the g_I_J columns of g_r.csv.
+Json species_json(const SpeciesStructure& s, const std::vector<std::string>& names) {
+    Json species = Json::array();
+    for (const SpeciesSummary& one : s.species) {
+        Json z;
+        for (std::size_t t = 0; t < names.size() && t < one.z_mean.size(); ++t) {
+            z[names[t]] = one.z_mean[t];
+        }
+        species.push_back(Json{{"species", one.species},
+                               {"origins", one.origins},
+                               {"count", one.count},
+                               {"diameter_over_d", one.diameter_over_d},
+                               {"z_mean", z}});
+    }
+    Json pairs = Json::array();
+    for (const SpeciesPair& pair : s.pairs) {
+        Json z_ij;
+        Json z_ji;
+        for (std::size_t t = 0; t < names.size() && t < pair.z_ij.size(); ++t) {
+            z_ij[names[t]] = pair.z_ij[t];
+            z_ji[names[t]] = pair.z_ji[t];
+        }
+        pairs.push_back(
+            Json{{"i", pair.i},
+                 {"j", pair.j},
+                 {"column", "g_" + std::to_string(pair.i) + "_" + std::to_string(pair.j)},
+                 {"bin_offset_over_d", pair.bin_offset_over_d},
+                 {"density", pair.density},
+                 {"z_ij", z_ij},
+                 {"z_ji", z_ji}});
+    }
+    return Json{
+        {"definitions", Json{{"z_mean",
+                              "Z_I(delta): neighbours of any species within gap delta*d, "
+                              "per centre of species I in the region"},
+                             {"z_ij",
+                              "Z_IJ(delta): neighbours of species J per centre of species I "
+                              "in the region"},
+                             {"g_I_J",
+                              "partial g(r) of origins of species I (centres in the region) "
+                              "and neighbours of species J, column g_I_J of g_r.csv; its bin "
+                              "k is centred on r_over_d + bin_offset_over_d, so the contact "
+                              "distance r_I + r_J is a bin centre"}}},
+        {"species", species},
+        {"pairs", pairs}};
+}
+
 std::string csv_number(double v) {
     return format_number(v);
 }
@@ -164,6 +213,9 @@ Json metrics_json(const Measurement& m, const Json& prov) {
                            {"quarters", quarters},
                            {"deviation_max", m.mixing->deviation}};
     }
+    if (m.species) {
+        j["species"] = species_json(*m.species, names);
+    }
     if (m.voronoi) {
         j["voronoi_detail"] = Json{{"cells", m.voronoi->cells},
                                    {"global", m.voronoi->global},
@@ -198,6 +250,11 @@ void write_g_r_csv(std::ostream& out, const Measurement& m, const Json& prov) {
     if (m.thesis_rdf) {
         out << ",g_thesis";
     }
+    if (m.species) {
+        for (const SpeciesPair& pair : m.species->pairs) {
+            out << ",g_" << pair.i << '_' << pair.j;
+        }
+    }
     out << '\n';
     write_comment_header(out, prov);
     out << "# r_over_d: bin centre, centre distance over the mean diameter d (also for "
@@ -210,6 +267,11 @@ void write_g_r_csv(std::ostream& out, const Measurement& m, const Json& prov) {
             << ',' << csv_number(rdf.shell_volume[k]);
         if (m.thesis_rdf) {
             out << ',' << csv_number(m.thesis_rdf->g[k]);
+        }
+        if (m.species) {
+            for (const SpeciesPair& pair : m.species->pairs) {
+                out << ',' << csv_number(k < pair.g.size() ? pair.g[k] : 0.0);
+            }
         }
         out << '\n';
     }

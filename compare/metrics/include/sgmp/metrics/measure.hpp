@@ -13,6 +13,7 @@
 #include "sgmp/metrics/mixing_profile.hpp"
 #include "sgmp/metrics/overlaps.hpp"
 #include "sgmp/metrics/packing_fraction.hpp"
+#include "sgmp/metrics/species_structure.hpp"
 #include "sgmp/metrics/voronoi.hpp"
 #include "sgmp/pack/pack.hpp"
 
@@ -52,7 +53,8 @@ struct Measurement {
     LocalStructure local;
     std::optional<VoronoiPhi> voronoi;  // absent when not asked for
     std::optional<ThesisRdf> thesis_rdf;
-    std::optional<MixingProfile> mixing;  // a blend's (particles with species) only
+    std::optional<MixingProfile> mixing;      // a blend's (particles with species) only
+    std::optional<SpeciesStructure> species;  // a blend's: partial g_IJ(r), Z_IJ(δ)
 };
 
 /// The container of a pack: its `container` metadata key, else the thesis container.
@@ -70,6 +72,7 @@ struct StageTimes {
     double phi_profile = 0.0;
     double overlaps = 0.0;
     double local = 0.0;
+    double species = 0.0;
     double voronoi = 0.0;
 };
 const StageTimes& last_stage_times();

@@ -2,7 +2,7 @@
 
 namespace sgmp::reference {
 
-void add_physics_options(CLI::App& command, PourParameters& p) {
+void add_physics_options(CLI::App& command, PourParams& p) {
     command.add_option("--restitution", p.restitution, "Normal coefficient of restitution e")
         ->capture_default_str();
     command

@@ -20,7 +20,7 @@ namespace {
 
 /// The engine's starting arrangement for this pour (same count, φ*, hence diameter, and
 /// seed), made by the engine itself.
-StartPositions start_positions(const std::string& name, const PourParameters& p) {
+StartPositions start_positions(const std::string& name, const PourParams& p) {
     engine::PackRequest request;
     request.count = p.count;
     request.arrangement = *engine::parse_arrangement(name);
@@ -41,7 +41,7 @@ StartPositions start_positions(const std::string& name, const PourParameters& p)
 CLI::App* add_pour_command(CLI::App& app, PourOptions& o) {
     CLI::App* cmd = app.add_subcommand(
         "pour", "Pour N equal spheres into the container and write the settled pack.");
-    PourParameters& p = o.request.parameters;
+    PourParams& p = o.request.parameters;
     cmd->add_option("--count", p.count,
                     "Number of spheres N; d follows the sizing rule "
                     "(N/3)(pi/6)d^3 = phi_target")
@@ -108,7 +108,7 @@ CLI::App* add_pour_command(CLI::App& app, PourOptions& o) {
 int run_pour(PourOptions& o, const PourObserver& observer, const std::function<bool()>& interrupted,
              const std::function<void()>& finish) {
     PourRequest& request = o.request;
-    PourParameters& p = request.parameters;
+    PourParams& p = request.parameters;
     p.tangential_damping = o.tangential_damping == "on";
     p.validate();
     try {

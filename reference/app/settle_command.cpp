@@ -21,7 +21,7 @@ namespace {
 
 /// The start of a settle: the pack's centres and colours, its count and the φ* that gives
 /// its diameter by the sizing rule. Throws std::invalid_argument naming the rule broken.
-StartPositions start_from(const Pack& pack, const std::string& path, PourParameters& p) {
+StartPositions start_from(const Pack& pack, const std::string& path, PourParams& p) {
     if (pack.particles.empty()) {
         throw std::invalid_argument(path + ": holds no spheres");
     }
@@ -56,7 +56,7 @@ CLI::App* add_settle_command(CLI::App& app, SettleOptions& o) {
         "settle",
         "Start LIGGGHTS from the spheres of a pack file (SGMP or DEM, equal spheres) at rest "
         "and run until settled, by the settling rule of pour; write the settled pack.");
-    PourParameters& p = o.request.parameters;
+    PourParams& p = o.request.parameters;
     cmd->add_option("pack", o.input, "Pack file to start from (extended XYZ or dump custom)")
         ->required()
         ->check(CLI::ExistingFile);
@@ -88,7 +88,7 @@ CLI::App* add_settle_command(CLI::App& app, SettleOptions& o) {
 int run_settle(SettleOptions& o, const PourObserver& observer,
                const std::function<bool()>& should_stop, const std::function<void()>& finish) {
     PourRequest& request = o.request;
-    PourParameters& p = request.parameters;
+    PourParams& p = request.parameters;
     p.tangential_damping = o.tangential_damping == "on";
     Pack input;
     try {

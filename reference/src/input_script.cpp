@@ -48,7 +48,7 @@ double domain_top(double start_top, double diameter) {
     return start_top + 0.25 * (start_top + 0.625) + 4.0 * diameter;
 }
 
-std::string processor_grid(const PourParameters& p) {
+std::string processor_grid(const PourParams& p) {
     const Container c;
     const auto grid = p.processors.empty()
                           ? choose_processor_grid(p.ranks, c.x_max - c.x_min, c.z_max - c.z_min)
@@ -56,7 +56,7 @@ std::string processor_grid(const PourParameters& p) {
     return std::to_string(grid[0]) + " " + std::to_string(grid[1]) + " " + std::to_string(grid[2]);
 }
 
-std::string pour_script(const PourParameters& p, double start_top) {
+std::string pour_script(const PourParams& p, double start_top) {
     const double d = p.diameter();
     const LiggghtsSeeds seeds = liggghts_seeds(p.seed);
     std::map<std::string, std::string> values{

@@ -95,7 +95,7 @@ void write_text(const fs::path& path, const std::string& text) {
 
 /// LIGGGHTS data file with the starting spheres (atom_style granular:
 /// id type diameter density x y z) and the simulation box.
-std::string start_data(const PourParameters& p, const StartPositions& start, double top) {
+std::string start_data(const PourParams& p, const StartPositions& start, double top) {
     const Container container;
     std::string text = "LIGGGHTS data file: SGMP arrangement " + start.name + "\n\n";
     text += std::to_string(start.centers.size()) + " atoms\n1 atom types\n\n";
@@ -213,7 +213,7 @@ std::string ratio_text(double ratio) {
 }
 
 void check_run(const ChildResult& run, const RunWatch& watch, const PourRequest& request) {
-    const PourParameters& p = request.parameters;
+    const PourParams& p = request.parameters;
     if (watch.short_insertion) {
         throw PourError("LIGGGHTS inserted only " + std::to_string(*watch.log.inserted) + " of " +
                         std::to_string(p.count) +
@@ -267,7 +267,7 @@ constexpr const char* kResultName = "the LIGGGHTS result final.dump";
 /// energy per particle, m·v_rms²/2 over m·g·d, is below the settle threshold (the dump is
 /// written at the step of the last check, with every digit, so it is the ratio LIGGGHTS
 /// reported up to rounding). A result whose spheres still move was not settled.
-void check_at_rest(const Pack& raw, const PourParameters& p) {
+void check_at_rest(const Pack& raw, const PourParams& p) {
     const std::optional<double> rms = raw.metadata.get_number("velocity_rms");
     if (!rms) {
         throw PourError(std::string(kResultName) +
@@ -285,7 +285,7 @@ void check_at_rest(const Pack& raw, const PourParameters& p) {
     }
 }
 
-Pack read_final(const fs::path& dump, const PourParameters& p) {
+Pack read_final(const fs::path& dump, const PourParams& p) {
     Pack raw;
     try {
         raw = read_pack_file(dump);
@@ -345,7 +345,7 @@ void check_settled(const PourResult& result) {
 }
 
 void record(Metadata& m, const PourRequest& request, const PourLog& log, const PourResult& r) {
-    const PourParameters& p = request.parameters;
+    const PourParams& p = request.parameters;
     const LiggghtsSeeds seeds = liggghts_seeds(p.seed);
     m.set("generator", "liggghts");
     m.set("version", version());
@@ -394,7 +394,7 @@ void record(Metadata& m, const PourRequest& request, const PourLog& log, const P
 }  // namespace
 
 PourResult pour(const PourRequest& request, const PourObserver& observer) {
-    const PourParameters& p = request.parameters;
+    const PourParams& p = request.parameters;
     try {
         p.validate();
     } catch (const std::invalid_argument& e) {

@@ -1,4 +1,4 @@
-#include "sgmp/reference/pour_parameters.hpp"
+#include "sgmp/reference/pour_params.hpp"
 
 #include "sgmp/reference/launcher.hpp"
 
@@ -24,7 +24,7 @@ void require(bool ok, const char* name, double value, const std::string& rule) {
 
 }  // namespace
 
-void PourParameters::validate() const {
+void PourParams::validate() const {
     require(count >= 1 && count <= kMaxCount, "count", static_cast<double>(count),
             "between 1 and " + std::to_string(kMaxCount));
     require(phi_target > 0.0 && phi_target <= kMaxPhiTarget, "phi_target", phi_target,
@@ -63,11 +63,11 @@ void PourParameters::validate() const {
     }
 }
 
-double PourParameters::diameter() const {
+double PourParams::diameter() const {
     return diameter_for_count(count, phi_target);
 }
 
-double PourParameters::cloud_top() const {
+double PourParams::cloud_top() const {
     // Centres of spheres wholly inside the cloud lie in a box narrower by d on every side,
     // so the cloud's solid fraction is counted over that box: N v = f (L - d)² (h - d).
     const double d = diameter();

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "sgmp/reference/launcher.hpp"
-#include "sgmp/reference/pour_parameters.hpp"
+#include "sgmp/reference/pour_params.hpp"
 
 namespace fs = std::filesystem;
 using namespace sgmp::reference;
@@ -92,7 +92,7 @@ BOOST_AUTO_TEST_CASE(grids_follow_the_container_and_the_option) {
     for (const char* bad : {"", "2,1", "2,1,0", "2,1,3,4", "a,1,1", "-1,1,1"}) {
         BOOST_TEST(!parse_processor_grid(bad), bad);
     }
-    PourParameters p;
+    PourParams p;
     p.count = 150;
     p.ranks = 4;
     p.processors = "2,2,2";

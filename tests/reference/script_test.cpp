@@ -8,7 +8,7 @@
 
 #include "sgmp/pack/geometry.hpp"
 #include "sgmp/reference/input_script.hpp"
-#include "sgmp/reference/pour_parameters.hpp"
+#include "sgmp/reference/pour_params.hpp"
 
 using namespace sgmp::reference;
 
@@ -59,7 +59,7 @@ BOOST_AUTO_TEST_CASE(placeholders_are_filled_and_unknown_ones_refused) {
 }
 
 BOOST_AUTO_TEST_CASE(the_script_carries_every_parameter_exactly) {
-    PourParameters p;
+    PourParams p;
     p.count = 1002;
     p.seed = 7;
     p.friction = 0.01;
@@ -80,7 +80,7 @@ BOOST_AUTO_TEST_CASE(the_script_carries_every_parameter_exactly) {
 }
 
 BOOST_AUTO_TEST_CASE(tangential_damping_is_switched_on_the_pair_style_and_every_wall) {
-    PourParameters p;
+    PourParams p;
     p.count = 150;
     p.tangential_damping = false;
     const std::string script = pour_script(p, p.cloud_top());
@@ -94,7 +94,7 @@ BOOST_AUTO_TEST_CASE(tangential_damping_is_switched_on_the_pair_style_and_every_
 }
 
 BOOST_AUTO_TEST_CASE(an_arrangement_start_reads_a_data_file) {
-    PourParameters p;
+    PourParams p;
     p.count = 150;
     p.arrangement = "small-dense";
     const std::string script = pour_script(p, 0.5);
@@ -120,7 +120,7 @@ BOOST_AUTO_TEST_CASE(liggghts_seeds_are_primes_above_10000_fixed_by_the_seed) {
 BOOST_AUTO_TEST_CASE(the_cloud_holds_the_spheres_at_the_asked_fraction) {
     // N (π/6) d³ = f (L − d)² (h − d), h measured from the floor.
     for (std::size_t n : {150u, 9000u}) {
-        PourParameters p;
+        PourParams p;
         p.count = n;
         const double d = p.diameter();
         const double h = p.cloud_top() + 0.625;
@@ -131,7 +131,7 @@ BOOST_AUTO_TEST_CASE(the_cloud_holds_the_spheres_at_the_asked_fraction) {
 }
 
 BOOST_AUTO_TEST_CASE(parameters_outside_their_range_are_refused_by_name) {
-    PourParameters p;
+    PourParams p;
     p.count = 150;
     p.validate();
     p.youngs_modulus = 5e6;  // LIGGGHTS refuses 5e6 Pa and softer
@@ -148,7 +148,7 @@ BOOST_AUTO_TEST_CASE(parameters_outside_their_range_are_refused_by_name) {
 
 BOOST_AUTO_TEST_CASE(the_processor_grid_splits_horizontally) {
     const auto grid = [](int ranks, const std::string& processors = "") {
-        PourParameters p;
+        PourParams p;
         p.ranks = ranks;
         p.processors = processors;
         return processor_grid(p);

@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-#include "sgmp/reference/pour_parameters.hpp"
+#include "sgmp/reference/pour_params.hpp"
 
 namespace sgmp::reference {
 
@@ -24,10 +24,10 @@ double domain_top(double start_top, double diameter);
 
 /// The complete input script. `start_top` is the top of the starting positions (the cloud
 /// top, or the highest sphere of an arrangement), which sets the box and the fall phase.
-std::string pour_script(const PourParameters& parameters, double start_top);
+std::string pour_script(const PourParams& parameters, double start_top);
 
 /// The "processors" grid "PX PY PZ" of a pour: its `processors` when given, else chosen
 /// from the container's shape for its ranks (launcher.hpp).
-std::string processor_grid(const PourParameters& parameters);
+std::string processor_grid(const PourParams& parameters);
 
 }  // namespace sgmp::reference

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "sgmp/pack/pack.hpp"
-#include "sgmp/reference/pour_parameters.hpp"
+#include "sgmp/reference/pour_params.hpp"
 #include "sgmp/reference/progress.hpp"
 
 namespace sgmp::reference {
@@ -47,7 +47,7 @@ struct StartPositions {
 };
 
 struct PourRequest {
-    PourParameters parameters;
+    PourParams parameters;
     std::optional<StartPositions> start;   ///< empty: a loose random cloud
     std::filesystem::path work_directory;  ///< empty: a temporary, removed afterwards
     std::string liggghts = "liggghts";     ///< program name or path

@@ -1,5 +1,5 @@
 #pragma once
-/// @file pour_parameters.hpp
+/// @file pour_params.hpp
 /// Everything that defines a LIGGGHTS pour, in SI units with 1 project length unit = 1 m.
 ///
 /// The sphere diameter follows the project's sizing rule, d = (18 φ* / (π N))^(1/3), so
@@ -17,7 +17,7 @@ namespace sgmp::reference {
 /// 1 project length unit in metres. Positions pass through unchanged.
 inline constexpr double kMetresPerUnit = 1.0;
 
-struct PourParameters {
+struct PourParams {
     std::size_t count = 0;           ///< number of spheres
     std::uint64_t seed = 1;          ///< drives LIGGGHTS' seeds and the colour labels
     double phi_target = 0.63;        ///< φ* of the sizing rule

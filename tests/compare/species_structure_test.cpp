@@ -225,6 +225,12 @@ BOOST_AUTO_TEST_CASE(one_species_gives_none_and_measure_gives_a_blends) {
             BOOST_TEST(g >= 0.0);  // never a negative g
         }
     }
+    // φ(y) by species adds up to φ(y) (exact volumes: rounding only).
+    BOOST_TEST_REQUIRE(m.phi_profile_by_species.size() == 2u);
+    for (std::size_t k = 0; k < m.phi_profile.phi.size(); ++k) {
+        const double sum = m.phi_profile_by_species[0].phi[k] + m.phi_profile_by_species[1].phi[k];
+        BOOST_TEST(std::abs(sum - m.phi_profile.phi[k]) <= 1e-12);
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

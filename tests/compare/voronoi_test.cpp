@@ -145,6 +145,33 @@ BOOST_AUTO_TEST_CASE(fcc_cells_are_rhombic_dodecahedra) {
                   std::numbers::pi / (3.0 * std::sqrt(2.0)), 8 * 8 * 8 / 2);
 }
 
+BOOST_AUTO_TEST_CASE(species_of_a_labelled_fcc_lattice_each_have_rhombic_dodecahedra) {
+    // The FCC lattice above with its four basis sites labelled species 1, 2, 1, 2: every
+    // cell is still a rhombic dodecahedron, so each species' mean and global φ is π/(3√2),
+    // and the species' cells add up to the whole.
+    const double a = 0.1;
+    const Vec3 q = Vec3::Constant(0.25);
+    auto lattice = cubic_lattice(
+        {q, q + Vec3(0.5, 0.5, 0.0), q + Vec3(0.5, 0.0, 0.5), q + Vec3(0.0, 0.5, 0.5)}, a, 6,
+        a / (2.0 * std::sqrt(2.0)));
+    for (std::size_t i = 0; i < lattice.particles.size(); ++i) {
+        lattice.particles[i].species = 1 + static_cast<int>(i % 2);
+    }
+    const Box interior{Vec3::Constant(1.1 * a), Vec3::Constant(4.9 * a)};
+    const auto result = voronoi_local_phi(lattice.particles, lattice.container, interior);
+    BOOST_TEST_REQUIRE(result.by_species.size() == 2u);
+    std::int64_t cells = 0;
+    for (const VoronoiSpecies& s : result.by_species) {
+        BOOST_TEST(s.mean == std::numbers::pi / (3.0 * std::sqrt(2.0)),
+                   boost::test_tools::tolerance(kExact));
+        BOOST_TEST(s.global == std::numbers::pi / (3.0 * std::sqrt(2.0)),
+                   boost::test_tools::tolerance(kExact));
+        BOOST_TEST(s.sd < kExact);
+        cells += s.cells;
+    }
+    BOOST_TEST(cells == result.cells);
+}
+
 BOOST_AUTO_TEST_CASE(bcc_cells_are_truncated_octahedra) {
     // Touching spheres, r = √3·a/4; cells a³/2, φ = π√3/8.
     const double a = 0.1;

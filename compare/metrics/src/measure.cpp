@@ -8,6 +8,7 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <map>
 #include <stdexcept>
 #include <thread>
 
@@ -214,6 +215,19 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     m.phi_profile =
         packing_fraction_profile(particles, m.region, m.container.floor,
                                  std::max(m.top, m.region.hi.y()), options.slab_thickness * d);
+    if (has_species(particles)) {
+        std::map<int, std::vector<Particle>> of_species;
+        for (const Particle& p : particles) {
+            of_species[p.species].push_back(p);
+        }
+        for (const auto& [species, members] : of_species) {
+            m.phi_profile_by_species.push_back(
+                {species, packing_fraction_profile(members, m.region, m.container.floor,
+                                                   std::max(m.top, m.region.hi.y()),
+                                                   options.slab_thickness * d)
+                              .phi});
+        }
+    }
     stage_times.phi_profile = watch.lap();
     m.overlaps =
         measure_overlaps(particles, m.container, d, options.overlap_floor, options.worst_count);

@@ -215,6 +215,17 @@ Json metrics_json(const Measurement& m, const Json& prov) {
     }
     if (m.species) {
         j["species"] = species_json(*m.species, names);
+        if (m.voronoi) {
+            for (Json& one : j["species"]["species"]) {
+                for (const VoronoiSpecies& v : m.voronoi->by_species) {
+                    if (v.species == one["species"].get<int>()) {
+                        one["voronoi_phi_mean"] = v.mean;
+                        one["voronoi_phi_sd"] = v.sd;
+                        one["voronoi_phi_global"] = v.global;
+                    }
+                }
+            }
+        }
     }
     if (m.voronoi) {
         j["voronoi_detail"] = Json{{"cells", m.voronoi->cells},
@@ -279,11 +290,19 @@ void write_g_r_csv(std::ostream& out, const Measurement& m, const Json& prov) {
 
 void write_phi_y_csv(std::ostream& out, const Measurement& m, const Json& prov) {
     const auto& p = m.phi_profile;
-    out << "y_mid,y_lo,y_hi,phi\n";
+    out << "y_mid,y_lo,y_hi,phi";
+    for (const SpeciesPhiProfile& s : m.phi_profile_by_species) {
+        out << ",phi_" << s.species;
+    }
+    out << '\n';
     write_comment_header(out, prov);
     for (std::size_t k = 0; k < p.phi.size(); ++k) {
         out << csv_number(0.5 * (p.y_lo[k] + p.y_hi[k])) << ',' << csv_number(p.y_lo[k]) << ','
-            << csv_number(p.y_hi[k]) << ',' << csv_number(p.phi[k]) << '\n';
+            << csv_number(p.y_hi[k]) << ',' << csv_number(p.phi[k]);
+        for (const SpeciesPhiProfile& s : m.phi_profile_by_species) {
+            out << ',' << csv_number(s.phi[k]);
+        }
+        out << '\n';
     }
 }
 

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <numeric>
 #include <sstream>
@@ -301,6 +302,44 @@ void tessellate(const std::vector<Particle>& particles, const std::vector<int>& 
     } while (loop.inc());
 }
 
+/// The cells' statistics per species (sums in slot order: fixed by the input).
+std::vector<VoronoiSpecies> by_species(const std::vector<Particle>& particles,
+                                       const std::vector<int>& sorted, const std::vector<int>& slot,
+                                       const std::vector<Cell>& cells) {
+    std::map<int, std::vector<std::size_t>> slots;  // species -> slots, increasing
+    for (std::size_t k = 0; k < sorted.size(); ++k) {
+        if (slot[k] >= 0) {
+            slots[particles[static_cast<std::size_t>(sorted[k])].species].push_back(
+                static_cast<std::size_t>(slot[k]));
+        }
+    }
+    std::vector<VoronoiSpecies> result;
+    for (auto& [species, list] : slots) {
+        std::sort(list.begin(), list.end());
+        VoronoiSpecies s;
+        s.species = species;
+        s.cells = static_cast<std::int64_t>(list.size());
+        double phi_sum = 0.0;
+        double sphere = 0.0;
+        double volume = 0.0;
+        for (const std::size_t sl : list) {
+            phi_sum += cells[sl].phi;
+            sphere += cells[sl].sphere_volume;
+            volume += cells[sl].volume;
+        }
+        const auto n = static_cast<double>(list.size());
+        s.mean = phi_sum / n;
+        double square_sum = 0.0;
+        for (const std::size_t sl : list) {
+            square_sum += (cells[sl].phi - s.mean) * (cells[sl].phi - s.mean);
+        }
+        s.sd = std::sqrt(square_sum / n);
+        s.global = sphere / volume;
+        result.push_back(s);
+    }
+    return result;
+}
+
 }  // namespace
 
 VoronoiPhi voronoi_local_phi(const std::vector<Particle>& particles, const Container& container,
@@ -378,6 +417,9 @@ VoronoiPhi voronoi_local_phi(const std::vector<Particle>& particles, const Conta
         square_sum += deviation * deviation;
     }
     result.sd = std::sqrt(square_sum / n);
+    if (has_species(particles)) {
+        result.by_species = by_species(particles, sorted, slot, cells);
+    }
     result.global = sphere_volume / result.cell_volume;
     for (double& h : result.histogram) {
         h *= bins / n;

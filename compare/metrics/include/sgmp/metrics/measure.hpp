@@ -37,6 +37,12 @@ struct MeasureOptions {
 /// Throws std::invalid_argument naming the option and the rule when an option is invalid.
 void validate(const MeasureOptions& options);
 
+/// φ(y) of one species of a blend: the volume of its spheres in each slab of the profile.
+struct SpeciesPhiProfile {
+    int species = 0;
+    std::vector<double> phi;  ///< per slab of Measurement::phi_profile; Σ over species = φ(y)
+};
+
 struct Measurement {
     std::size_t count = 0;
     double mean_diameter = 0.0;
@@ -55,6 +61,7 @@ struct Measurement {
     std::optional<ThesisRdf> thesis_rdf;
     std::optional<MixingProfile> mixing;      // a blend's (particles with species) only
     std::optional<SpeciesStructure> species;  // a blend's: partial g_IJ(r), Z_IJ(δ)
+    std::vector<SpeciesPhiProfile> phi_profile_by_species;  // a blend's, increasing species
 };
 
 /// The container of a pack: its `container` metadata key, else the thesis container.

@@ -36,6 +36,15 @@ struct VoronoiOptions {
     std::size_t cells_per_slab = 50000;
 };
 
+/// φ_i over the origins of one species of a blend.
+struct VoronoiSpecies {
+    int species = 0;
+    std::int64_t cells = 0;  ///< its origins
+    double mean = 0.0;       ///< (1/n_s) Σ φ_i over them
+    double sd = 0.0;         ///< population sd
+    double global = 0.0;     ///< Σ (4/3)π r_i³ / Σ V_i over them
+};
+
 /// The distribution of φ_i over the origins in the region.
 struct VoronoiPhi {
     std::int64_t cells = 0;      ///< origins measured (centres in the region)
@@ -47,6 +56,7 @@ struct VoronoiPhi {
     std::vector<double> histogram;  ///< density of φ_i over equal bins of [0, 1]; Σ h_k Δ = 1.
                                     ///< A φ_i ≥ 1 (spheres overlapping deeply) counts in the
                                     ///< last bin.
+    std::vector<VoronoiSpecies> by_species;  ///< a blend's, by increasing species (else empty)
 };
 
 /// Local packing fractions of the centres inside `region`, from the cells of all

@@ -117,7 +117,11 @@ void add_common(CLI::App& app, Options& o) {
             ->default_str(size_modes_to_string(q.size_modes));
     app.add_option("--size-distribution", o.size_distribution,
                    "size distribution as a CSV file: header diameter,fraction[,density], one "
-                   "row per species (diameters in any unit; species 1, 2, ... in file order)");
+                   "row per species (diameters in any unit; species 1, 2, ... in file order); "
+                   "or lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]]: ln D normal with that "
+                   "median and sd, cut at the quantiles QLO, QHI (default 0.01, 0.99) into "
+                   "CLASSES (default 10) species of equal fraction, each of its class's median "
+                   "diameter");
     add_choice(app, o, "--fraction-basis", q.fraction_basis, fraction_bases(),
                "what the fractions of --size-modes or --size-distribution are: number, volume "
                "or mass (mass needs densities)");
@@ -233,6 +237,11 @@ void read_size_distribution(const Options& o, PackRequest& request) {
     if (o.size_modes_option != nullptr && o.size_modes_option->count() > 0) {
         throw UsageError("--size-distribution " + path +
                          ": give either --size-modes or --size-distribution, not both");
+    }
+    if (is_lognormal(path)) {  // a continuous distribution, not a file
+        request.size_modes = lognormal_modes(path);
+        request.size_distribution = path;
+        return;
     }
     std::ifstream in(path, std::ios::binary);
     if (!std::filesystem::is_regular_file(path) || !in) {

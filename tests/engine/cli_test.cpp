@@ -110,6 +110,30 @@ BOOST_AUTO_TEST_CASE(size_distribution_files_are_read_and_checked) {
                    "--fraction-basis weight: must be one of number, volume, mass");
 }
 
+BOOST_AUTO_TEST_CASE(lognormal_distributions_pack_into_equal_classes) {
+    // Five classes of equal volume fraction from a lognormal volume distribution: 500
+    // spheres split by volume, the text recorded as the distribution's provenance.
+    const Scratch s;
+    const Run ok = s.run("pack --arrangement loose-random --count 500 --out '" + s.path("l.xyz") +
+                         "' --size-distribution lognormal:200:0.3:5 --fraction-basis volume");
+    BOOST_TEST(ok.status == 0, ok.err);
+    const std::string pack = sgmp::testing::read_bytes(s.path("l.xyz"));
+    BOOST_TEST(pack.find(" size_distribution=lognormal:200:0.3:5 ") != std::string::npos);
+    BOOST_TEST(pack.find(":species_id:I:1 ") != std::string::npos);
+    expect_refused(s, "--count 100 --size-distribution lognormal:200:-1",
+                   "--size-distribution lognormal:200:-1: SIGMA must lie in (0, 3]");
+    expect_refused(s, "--count 100 --size-distribution lognormal:200:0.3:0",
+                   "--size-distribution lognormal:200:0.3:0: CLASSES must be a whole number "
+                   "from 1 to 1000");
+    expect_refused(s, "--count 100 --size-distribution lognormal:200:0.3:5:0.5:0.2",
+                   "--size-distribution lognormal:200:0.3:5:0.5:0.2: the quantiles must satisfy "
+                   "0 < QLO < QHI < 1");
+    expect_refused(s, "--count 100 --size-distribution lognormal:200",
+                   "--size-distribution lognormal:200: must be "
+                   "lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]], e.g. "
+                   "lognormal:200:0.4:10:0.01:0.99");
+}
+
 BOOST_AUTO_TEST_CASE(bad_relaxation_values_are_refused_with_option_value_and_rule) {
     const Scratch s;
     expect_refused(s, "--count 100 --relax soft",

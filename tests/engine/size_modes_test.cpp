@@ -2,10 +2,12 @@
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "refusal.hpp"
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/engine/size_modes.hpp"
+#include "sgmp/pack/parameter_error.hpp"
 
 using namespace sgmp;
 using namespace sgmp::engine;
@@ -25,6 +27,43 @@ BOOST_AUTO_TEST_CASE(modes_parse_and_print) {
     for (const char* bad : {"", "1", "1:", ":1", "1:0", "-1:1", "1:1,", "1:1;2:1", "a:1"}) {
         BOOST_TEST_INFO(bad);
         BOOST_TEST(!parse_size_modes(bad).has_value());
+    }
+}
+
+BOOST_AUTO_TEST_CASE(lognormal_classes_sit_at_their_own_median_quantiles) {
+    // D_k = MEDIAN·exp(SIGMA·Φ⁻¹(p_k)), p_k = QLO + (k + ½)(QHI − QLO)/CLASSES, with Φ⁻¹ found
+    // here by bisection on Φ(x) = ½·erfc(−x/√2) (std::erfc, 200 halvings): relative
+    // diameters D_k / D_last agree to 1e-12, fractions are equal, species increase in size.
+    const auto modes = lognormal_modes("lognormal:200:0.45:7:0.02:0.97");
+    BOOST_TEST_REQUIRE(modes.size() == 7u);
+    const auto inverse_normal = [](double p) {
+        double lo = -40.0;
+        double hi = 40.0;
+        for (int i = 0; i < 200; ++i) {
+            const double mid = 0.5 * (lo + hi);
+            (0.5 * std::erfc(-mid / std::sqrt(2.0)) < p ? lo : hi) = mid;
+        }
+        return 0.5 * (lo + hi);
+    };
+    std::vector<double> expected;
+    for (int k = 0; k < 7; ++k) {
+        expected.push_back(200.0 *
+                           std::exp(0.45 * inverse_normal(0.02 + (k + 0.5) * (0.97 - 0.02) / 7)));
+    }
+    for (std::size_t k = 0; k < 7; ++k) {
+        BOOST_TEST(modes[k].relative_diameter == expected[k] / expected.back(),
+                   tt::tolerance(1e-12));
+        BOOST_TEST(modes[k].fraction == 1.0 / 7.0);
+        if (k > 0) {
+            BOOST_TEST(modes[k].relative_diameter > modes[k - 1].relative_diameter);
+        }
+    }
+    BOOST_TEST(lognormal_modes("lognormal:1:0.2").size() == 10u);  // the default classes
+    for (const char* bad :
+         {"lognormal:0:0.2", "lognormal:1:0", "lognormal:1:4", "lognormal:1:0.2:2.5",
+          "lognormal:1:0.2:3:0.9:0.1", "lognormal:1:0.2:3:0.1", "lognormal:x:1",
+          "lognormal:1:0.2:1001", "normal:1:1"}) {
+        BOOST_CHECK_THROW(lognormal_modes(bad), ParameterError);
     }
 }
 

@@ -1,5 +1,7 @@
 #include "sgmp/engine/size_modes.hpp"
 
+#include <boost/math/distributions/normal.hpp>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -82,6 +84,72 @@ std::string_view to_string(FractionBasis basis) {
 
 std::optional<FractionBasis> parse_fraction_basis(std::string_view text) {
     return fraction_bases().parse(text);
+}
+
+bool is_lognormal(std::string_view text) {
+    return text.starts_with("lognormal:");
+}
+
+std::vector<SizeMode> lognormal_modes(std::string_view text) {
+    const std::string shown(text);
+    const auto refuse = [&](const std::string& rule) -> void {
+        throw ParameterError("size_distribution", shown, rule);
+    };
+    const std::string form =
+        "must be lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]], e.g. lognormal:200:0.4:10:0.01:0.99";
+    if (!is_lognormal(text)) {
+        refuse(form);
+    }
+    std::vector<double> values;
+    std::string_view rest = text.substr(std::string_view("lognormal:").size());
+    while (true) {
+        const std::size_t colon = rest.find(':');
+        const std::string field(rest.substr(0, colon));
+        double value = 0.0;
+        const auto result = std::from_chars(field.data(), field.data() + field.size(), value);
+        if (field.empty() || result.ec != std::errc() ||
+            result.ptr != field.data() + field.size() || !std::isfinite(value)) {
+            refuse(form);
+        }
+        values.push_back(value);
+        if (colon == std::string_view::npos) {
+            break;
+        }
+        rest.remove_prefix(colon + 1);
+    }
+    if (values.size() != 2 && values.size() != 3 && values.size() != 5) {
+        refuse(form);
+    }
+    const double median = values[0];
+    const double sigma = values[1];
+    const double classes = values.size() >= 3 ? values[2] : 10.0;
+    const double q_lo = values.size() == 5 ? values[3] : 0.01;
+    const double q_hi = values.size() == 5 ? values[4] : 0.99;
+    if (!(median > 0.0)) {
+        refuse("MEDIAN must be positive");
+    }
+    if (!(sigma > 0.0) || sigma > 3.0) {
+        refuse("SIGMA must lie in (0, 3]");
+    }
+    if (classes != std::floor(classes) || classes < 1.0 || classes > 1000.0) {
+        refuse("CLASSES must be a whole number from 1 to 1000");
+    }
+    if (!(q_lo > 0.0) || !(q_hi < 1.0) || !(q_lo < q_hi)) {
+        refuse("the quantiles must satisfy 0 < QLO < QHI < 1");
+    }
+    const boost::math::normal_distribution<double> normal;
+    const auto n = static_cast<std::size_t>(classes);
+    std::vector<double> diameters;
+    for (std::size_t k = 0; k < n; ++k) {
+        const double p =
+            q_lo + (static_cast<double>(k) + 0.5) * (q_hi - q_lo) / static_cast<double>(n);
+        diameters.push_back(median * std::exp(sigma * boost::math::quantile(normal, p)));
+    }
+    std::vector<SizeMode> modes;
+    for (const double diameter : diameters) {
+        modes.emplace_back(diameter / diameters.back(), 1.0 / static_cast<double>(n));
+    }
+    return modes;
 }
 
 std::vector<SizeMode> parse_size_distribution_csv(std::string_view text,

@@ -52,6 +52,21 @@ std::string size_modes_to_string(const std::vector<SizeMode>& modes);
 /// zero, or no row; a species of fraction 0 is kept (it gets no particle).
 std::vector<SizeMode> parse_size_distribution_csv(std::string_view text, const std::string& source);
 
+/// A continuous size distribution, "lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]]": ln D normal
+/// with median MEDIAN (any unit) and standard deviation SIGMA, its fractions in the stated
+/// basis (a volume-weighted distribution with --fraction-basis volume). It is cut at the
+/// quantiles QLO < QHI (default 0.01 and 0.99) and split into CLASSES (default 10, at most
+/// 1000) classes of equal probability between them; class k = 0 … CLASSES − 1 is the species
+/// k + 1, of the class's own median diameter
+///
+///     D_k = MEDIAN · exp(SIGMA · Φ⁻¹(QLO + (k + ½)·(QHI − QLO)/CLASSES)),
+///
+/// fraction 1/CLASSES (Φ the standard normal distribution), so species number by
+/// increasing diameter; relative diameters are D_k / D_{CLASSES−1}. Throws ParameterError
+/// (`size_distribution`) for a malformed text or a value out of its range.
+bool is_lognormal(std::string_view text);
+std::vector<SizeMode> lognormal_modes(std::string_view text);
+
 /// The modes with number fractions (normalised to 1) from fractions in `basis`; densities
 /// are kept. Throws ParameterError (`fraction_basis`) for the mass basis when a mode has no
 /// density.

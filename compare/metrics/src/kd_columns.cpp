@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "point_of_index.hpp"
 #include "sgmp/metrics/parallel.hpp"
 
 namespace sgmp::metrics {
@@ -20,15 +21,7 @@ namespace {
 using Kernel = CGAL::Simple_cartesian<double>;
 using Point = Kernel::Point_2;
 
-/// Reads the (x, y) of a member position (the tree stores positions only).
-struct PointOfKey {
-    using key_type = Index;
-    using value_type = Point;
-    using reference = const Point&;
-    using category = boost::readable_property_map_tag;
-    const std::vector<Point>* points = nullptr;
-    friend reference get(const PointOfKey& map, Index i) { return (*map.points)[i]; }
-};
+using PointOfKey = detail::PointOfIndex<Point>;  // (x, y) of a member position
 
 using BaseTraits = CGAL::Search_traits_2<Kernel>;
 using Traits = CGAL::Search_traits_adapter<Index, PointOfKey, BaseTraits>;

@@ -11,6 +11,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "point_of_index.hpp"
 #include "sgmp/metrics/parallel.hpp"
 
 namespace sgmp::metrics {
@@ -19,15 +20,7 @@ namespace {
 using Kernel = CGAL::Simple_cartesian<double>;
 using Point = Kernel::Point_3;
 
-/// Reads the point of an index (the tree stores indices only).
-struct PointOfIndex {
-    using key_type = Index;
-    using value_type = Point;
-    using reference = const Point&;
-    using category = boost::readable_property_map_tag;
-    const std::vector<Point>* points = nullptr;
-    friend reference get(const PointOfIndex& map, Index i) { return (*map.points)[i]; }
-};
+using PointOfIndex = detail::PointOfIndex<Point>;
 
 using BaseTraits = CGAL::Search_traits_3<Kernel>;
 using Traits = CGAL::Search_traits_adapter<Index, PointOfIndex, BaseTraits>;

@@ -40,41 +40,22 @@ std::size_t count_unsupported(const std::vector<Particle>& particles, const Cell
     return unsupported;
 }
 
-/// Pairs overlapping by more than `tolerance` (depth r_i + r_j − |c_i − c_j|, as in
-/// pack_overlaps.hpp) and the most negative gap, on the grid of reach 2·r_max.
-void count_pair_overlaps(const std::vector<Particle>& particles, const CellGrid& grid,
-                         double tolerance, PackCheck& result) {
-    double deepest = 0.0;
-    grid.for_each_pair([&](std::size_t i, std::size_t j, double) {
-        const Particle& a = particles[i];
-        const Particle& b = particles[j];
-        const double depth = a.radius + b.radius - (a.center - b.center).norm();
-        if (depth > 0.0) {
-            result.overlaps += depth > tolerance ? 1 : 0;
-            deepest = std::max(deepest, depth);
-        }
-    });
-    result.worst_gap = deepest > 0.0 ? -deepest : 0.0;
-}
-
 }  // namespace
 
-// One cell grid of side 2·r_max serves the pair overlaps and the supports.
+// Overlaps from the pack library's one overlap search (pack_overlaps.hpp); supports on a
+// cell grid of side 2·r_max.
 PackCheck check_pack(const std::vector<Particle>& particles, const Container& container,
                      double overlap_tolerance, double support_tolerance) {
     PackCheck result;
     if (particles.empty()) {
         return result;
     }
+    const OverlapCount overlaps = count_overlaps(particles, container, overlap_tolerance);
+    result.overlaps = overlaps.pairs;
+    result.worst_gap = overlaps.max_pair > 0.0 ? -overlaps.max_pair : 0.0;
+    result.outside = overlaps.walls;
     const double r_max = max_radius(particles);
     const CellGrid grid(centers_of(particles), 2.0 * r_max);
-    if (particles.size() >= 2 && r_max > 0.0) {
-        count_pair_overlaps(particles, grid, overlap_tolerance, result);
-    }
-    for (const Particle& p : particles) {
-        const double depth = container.penetration(p.center, p.radius);
-        result.outside += depth > 0.0 && depth > overlap_tolerance ? 1 : 0;
-    }
     result.unsupported = count_unsupported(particles, grid, r_max, container, support_tolerance);
     return result;
 }

@@ -47,7 +47,7 @@ void write_pack(const py::object& pack, const std::filesystem::path& path, bool 
 
 }  // namespace
 
-PYBIND11_MODULE(sgmp, m) {
+PYBIND11_MODULE(_sgmp, m) {
     m.doc() =
         "SGMP sphere packs: make them (pack, arrange), read and write pack files (read, write) "
         "and measure them (measure). Axes: X left-right, Y up, Z front-back; lengths in units of "

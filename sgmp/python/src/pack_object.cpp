@@ -1,5 +1,5 @@
-// The Python `sgmp.Pack`: a pack's particles as numpy arrays (copies) and its header as a
-// dict of strings in header order.
+// The Python `sgmp.Pack`: a pack's particles as read-only numpy arrays (copies), its header
+// as a dict of strings in header order (typed by sgmp/__init__.py), and pickling.
 #include <pybind11/stl.h>
 
 #include <cmath>
@@ -12,6 +12,14 @@
 namespace sgmp::python {
 namespace {
 
+/// Marks an array read-only: an assignment into it raises ValueError instead of changing a
+/// copy that nothing reads (the pack itself is immutable from Python).
+template <class Array>
+Array frozen(Array array) {
+    array.attr("flags").attr("writeable") = false;
+    return array;
+}
+
 py::array_t<double> positions(const Pack& pack) {
     const auto n = static_cast<py::ssize_t>(pack.particles.size());
     py::array_t<double> out({n, py::ssize_t{3}});
@@ -22,7 +30,7 @@ py::array_t<double> positions(const Pack& pack) {
             view(i, k) = c[k];
         }
     }
-    return out;
+    return frozen(out);
 }
 
 template <class T, class Get>
@@ -32,7 +40,7 @@ py::array_t<T> column(const Pack& pack, Get get) {
     for (std::size_t i = 0; i < pack.particles.size(); ++i) {
         view(static_cast<py::ssize_t>(i)) = get(pack.particles[i]);
     }
-    return out;
+    return frozen(out);
 }
 
 py::dict header(const Pack& pack) {
@@ -62,7 +70,8 @@ Doubles real_array(const py::object& object, const char* name) {
 }
 
 Pack make(const py::object& xyz_in, const py::object& radii_in, const std::optional<Longs>& bins,
-          const std::optional<Longs>& ids, const std::optional<py::dict>& head) {
+          const std::optional<Longs>& ids, const std::optional<py::dict>& head,
+          const std::optional<Longs>& species) {
     const Doubles xyz = real_array(xyz_in, "positions");
     const Doubles radii = real_array(radii_in, "radii");
     if (xyz.ndim() != 2 || xyz.shape(1) != 3) {
@@ -82,6 +91,9 @@ Pack make(const py::object& xyz_in, const py::object& radii_in, const std::optio
     }
     if (ids) {
         same_length(*ids, "ids");
+    }
+    if (species) {
+        same_length(*species, "species");
     }
     Pack pack;
     const auto p = xyz.unchecked<2>();
@@ -109,6 +121,15 @@ Pack make(const py::object& xyz_in, const py::object& radii_in, const std::optio
             }
             particle.color = static_cast<int>(bin);
         }
+        if (species) {
+            const std::int64_t s = species->at(i);
+            if (s < 0 || s > kMaxSpecies) {
+                throw std::invalid_argument("species: entry " + std::to_string(i) + " = " +
+                                            std::to_string(s) + " must be from 0 to " +
+                                            std::to_string(kMaxSpecies));
+            }
+            particle.species = static_cast<int>(s);
+        }
         pack.particles.push_back(particle);
     }
     if (head) {
@@ -117,6 +138,32 @@ Pack make(const py::object& xyz_in, const py::object& radii_in, const std::optio
         }
     }
     return pack;
+}
+
+/// The state pickle keeps: the arrays and the header's (key, value) pairs in order.
+py::tuple state_of(const Pack& p) {
+    py::list header_items;
+    for (const auto& [key, value] : p.metadata.entries()) {
+        header_items.append(py::make_tuple(key, value));
+    }
+    return py::make_tuple(
+        positions(p), column<double>(p, [](auto& q) { return q.radius; }),
+        column<std::int64_t>(p, [](auto& q) { return q.color; }),
+        column<std::int64_t>(p, [](auto& q) { return q.id; }), header_items,
+        column<std::int64_t>(p, [](auto& q) { return static_cast<std::int64_t>(q.species); }));
+}
+
+Pack from_state(const py::tuple& state) {
+    if (state.size() != 6) {
+        throw std::invalid_argument("an sgmp.Pack state has 6 fields");
+    }
+    py::dict header;
+    for (const auto& item : state[4].cast<py::list>()) {
+        const auto pair = item.cast<py::tuple>();
+        header[pair[0]] = pair[1];
+    }
+    return make(state[0], state[1], state[2].cast<Longs>(), state[3].cast<Longs>(), header,
+                state[5].cast<Longs>());
 }
 
 }  // namespace
@@ -134,31 +181,44 @@ const Pack& pack_of(const py::handle& object) {
 void bind_pack(py::module_& m) {
     py::class_<Pack>(m, "Pack",
                      "A pack: positions (N, 3), radii (N,), bins (N,) colour labels 0-9, ids "
-                     "(N,) and the header (provenance) as a dict of strings. The arrays are "
-                     "copies.")
+                     "(N,), species (N,) (0 for a pack of one species) and its header. The "
+                     "arrays are read-only copies; header_text holds the header's key=value "
+                     "pairs as strings, header (sgmp/__init__.py) the same typed.")
         .def(py::init(&make), py::arg("positions"), py::arg("radii"), py::arg("bins") = py::none(),
              py::arg("ids") = py::none(), py::arg("header") = py::none(),
-             "A pack from arrays; ids default to 1..N, bins to 0, the header to empty.")
-        .def_property_readonly("positions", &positions, "centres, shape (N, 3)")
+             py::arg("species") = py::none(),
+             "A pack from arrays; ids default to 1..N, bins and species to 0, the header to "
+             "empty.")
+        .def_property_readonly("positions", &positions, "centres, shape (N, 3), read-only")
         .def_property_readonly(
             "radii",
             [](const Pack& p) { return column<double>(p, [](auto& q) { return q.radius; }); },
-            "radii, shape (N,)")
+            "radii, shape (N,), read-only")
         .def_property_readonly(
             "bins",
             [](const Pack& p) { return column<std::int64_t>(p, [](auto& q) { return q.color; }); },
-            "colour bins, shape (N,)")
+            "colour bins, shape (N,), read-only")
         .def_property_readonly(
             "ids",
             [](const Pack& p) { return column<std::int64_t>(p, [](auto& q) { return q.id; }); },
-            "particle ids, shape (N,)")
-        .def_property_readonly("header", &header, "the header's key=value pairs, in order")
+            "particle ids, shape (N,), read-only")
+        .def_property_readonly(
+            "species",
+            [](const Pack& p) {
+                return column<std::int64_t>(
+                    p, [](auto& q) { return static_cast<std::int64_t>(q.species); });
+            },
+            "species 1... of a blend (0 for a pack of one species), shape (N,), read-only")
+        .def_property_readonly("header_text", &header,
+                               "the header's key=value pairs as strings, in order")
         .def("__len__", [](const Pack& p) { return p.particles.size(); })
-        .def("__repr__", [](const Pack& p) {
-            const auto generator = p.metadata.get("generator");
-            return "<sgmp.Pack of " + std::to_string(p.particles.size()) + " particles" +
-                   (generator ? ", generator=" + *generator : std::string()) + ">";
-        });
+        .def("__repr__",
+             [](const Pack& p) {
+                 const auto generator = p.metadata.get("generator");
+                 return "<sgmp.Pack of " + std::to_string(p.particles.size()) + " particles" +
+                        (generator ? ", generator=" + *generator : std::string()) + ">";
+             })
+        .def(py::pickle(&state_of, &from_state));
 }
 
 }  // namespace sgmp::python

@@ -228,23 +228,40 @@ void bind_making(py::module_& m) {
     m.def(
         "pack",
         [](const py::object& count, const py::object& arrangement, const py::object& seed,
-           const py::kwargs& options) {
+           const py::object& progress, const py::kwargs& options) {
             const PackRequest request = request_of(count, arrangement, seed, options);
+            if (!progress.is_none() && !PyCallable_Check(progress.ptr())) {
+                throw bad("progress", progress, "must be a callable or None");
+            }
             // Ctrl-C stops the engine at its next progress call (a KeyboardInterrupt now,
-            // not when the call ends): the callbacks take the interpreter's lock only to
-            // look at its signals.
-            const auto check_signals = [] {
+            // not when the call ends): the callbacks take the interpreter's lock to look at
+            // its signals and to call `progress(phase, done, total)`.
+            const auto report = [&](const char* phase, std::size_t done, std::size_t total) {
                 py::gil_scoped_acquire locked;
                 if (PyErr_CheckSignals() != 0) {
                     throw py::error_already_set();
                 }
+                if (!progress.is_none()) {
+                    progress(phase, done, total);
+                }
             };
             py::gil_scoped_release unlocked;
             return engine::make_pack(
-                request, [&](std::size_t, std::size_t) { check_signals(); }, nullptr,
-                [&](const engine::RelaxProgress&) { check_signals(); });
+                request,
+                [&](std::size_t placed, std::size_t total) { report("deposition", placed, total); },
+                nullptr,
+                [&](const engine::RelaxProgress& r) {
+                    using Phase = engine::RelaxProgress::Phase;
+                    if (r.phase == Phase::Settling) {
+                        report("settling", static_cast<std::size_t>(r.settle_iteration), 0);
+                    } else {
+                        report(r.phase == Phase::Soft ? "relaxation" : "clearing",
+                               static_cast<std::size_t>(r.steps), 0);
+                    }
+                });
         },
         py::arg("count"), py::arg("arrangement"), py::arg("seed") = py::none(),
+        py::arg("progress") = py::none(),
         "Packs `count` spheres from `arrangement` (single-column, small-dense, large-dense, "
         "loose-random) with the protocol. Every option of `sgmp pack` is a keyword, dashes as "
         "underscores (circle_factor=50, gap='random', sweep_stages='8,120,720', "

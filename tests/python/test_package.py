@@ -1,0 +1,71 @@
+"""The Python package behaves like one: pack()'s signature names every option the extension
+takes, headers are typed, arrays refuse writes, packs pickle, and a progress callback is
+called (and checked)."""
+import inspect
+import math
+import pickle
+
+import numpy as np
+import pytest
+
+import sgmp
+
+
+def test_pack_signature_names_every_option_of_the_extension():
+    extension = sgmp._options_of_the_extension()
+    assert extension, "the extension no longer lists its options"
+    parameters = inspect.signature(sgmp.pack).parameters
+    assert set(extension) <= set(parameters), set(extension) - set(parameters)
+    assert set(parameters) - set(extension) == {"progress"}
+    assert "relax_friction" in sgmp.pack.__doc__ and "progress" in sgmp.pack.__doc__
+
+
+def test_header_values_are_typed():
+    p = sgmp.pack(150, "loose-random", seed=7, size_modes="1:0.5,0.5:0.5")
+    h = p.header
+    assert h["count"] == 150 and isinstance(h["count"], int)
+    assert isinstance(h["diameter"], float) and h["diameter"] > 0.0
+    assert h["generator"] == "sgmp" and h["arrangement"] == "loose-random"
+    assert h["species_counts"] == (75, 75)
+    box = h["container"]
+    assert isinstance(box, sgmp.Container)
+    assert box.origin == (-0.625, -0.625, -0.625)
+    assert box.lengths[0] == 1.25 and box.lengths[2] == 1.25 and math.isinf(box.lengths[1])
+    assert p.header_text["count"] == "150"  # the strings as written
+    assert list(h) == list(p.header_text)  # header order kept
+
+
+def test_arrays_refuse_writes_instead_of_losing_them():
+    p = sgmp.pack(50, "small-dense", seed=1)
+    for name in ("positions", "radii", "bins", "ids", "species"):
+        array = getattr(p, name)
+        with pytest.raises(ValueError):
+            array[0] = array[0]
+    copy = p.positions.copy()  # a copy is the user's to change
+    copy[0, 0] = 99.0
+    assert p.positions[0, 0] != 99.0
+
+
+def test_packs_pickle_with_species_and_header():
+    p = sgmp.pack(120, "loose-random", seed=5, size_modes="1:0.5,0.6:0.5")
+    q = pickle.loads(pickle.dumps(p))
+    for name in ("positions", "radii", "bins", "ids", "species"):
+        assert np.array_equal(getattr(q, name), getattr(p, name)), name
+    assert q.header_text == p.header_text
+
+
+def test_progress_is_called_and_checked():
+    calls = []
+    sgmp.pack(2500, "loose-random", seed=1, progress=lambda *a: calls.append(a))
+    assert calls[0] == ("deposition", 1000, 2500) and calls[-1] == ("deposition", 2500, 2500)
+    with pytest.raises(ValueError, match="progress"):
+        sgmp.pack(10, "loose-random", progress=3)
+
+
+def test_unknown_and_bad_options_raise_one_line_value_errors():
+    with pytest.raises(TypeError):
+        sgmp.pack(10, "loose-random", no_such_option=1)
+    with pytest.raises(ValueError, match=r"^relax_friction = -1: "):
+        sgmp.pack(10, "loose-random", relax="frictional", relax_friction=-1)
+    with pytest.raises(ValueError, match="species"):
+        sgmp.Pack(np.zeros((2, 3)), np.ones(2), species=np.array([1, -2]))

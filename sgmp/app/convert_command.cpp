@@ -72,6 +72,24 @@ void warn_on_precision(const PackRead& read) {
                  found.within_precision, found.max_overlap / d, *read.decimals);
 }
 
+/// The one-line warning when an SGMP pack that was not relaxed becomes a DEM start (a
+/// LAMMPS data file): the deposition is no mechanical equilibrium, so DEM rearranges it.
+void warn_on_dem_start(const Pack& pack, PackFormat format) {
+    if (format != PackFormat::lammps_data) {
+        return;
+    }
+    const auto generator = pack.metadata.get("generator");
+    const auto relax = pack.metadata.get("relax");
+    if (!generator || *generator != "sgmp" || (relax && *relax != "none")) {
+        return;
+    }
+    std::fprintf(stderr,
+                 "sgmp convert: warning: this SGMP pack was not relaxed: as a DEM start it "
+                 "rearranges (LAMMPS gran/hertz/history, mu 0.5, gravity: 4.8 %% of the "
+                 "spheres of a deposited pack moved more than d/2); pack it with --relax "
+                 "frictional for a certified equilibrium\n");
+}
+
 void record_provenance(Pack& pack, const ConvertOptions& o) {
     pack.metadata.set("converted_by", "sgmp convert");
     pack.metadata.set("converted_version", std::string(version()));
@@ -104,6 +122,7 @@ int convert(const ConvertOptions& o) {
     }
     PackRead read = read_pack_file(o.in, read_options);
     warn_on_precision(read);
+    warn_on_dem_start(read.pack, format);
     record_provenance(read.pack, o);
     write_pack_as(o.out, read.pack, format, WriteOptions{o.force});
     std::printf("sgmp convert: %zu particles (frame %zu of %zu) from %s -> %s (%s)\n",

@@ -21,7 +21,17 @@ for task in 1 2 3; do
     SLURM_ARRAY_TASK_ID=$task SGMP_SHARDS=3 SGMP_SWEEP="$scratch/sweep.toml" SGMP="$sgmp" \
         "$source_dir/scripts/slurm/sweep.sbatch" >/dev/null
 done
-SGMP="$sgmp" "$source_dir/scripts/slurm/merge.sbatch" >/dev/null
+# A missing shard summary fails the merge in one line naming the task.
+mv summaries/shard-2.csv "$scratch/shard-2.csv"
+if SGMP_SHARDS=3 SGMP="$sgmp" "$source_dir/scripts/slurm/merge.sbatch" >/dev/null 2>"$scratch/err"; then
+    echo "slurm example: the merge ran without shard 2" >&2
+    exit 1
+fi
+grep -q "^merge.sbatch: 1 of 3 shard summaries missing (tasks 2): resubmit" "$scratch/err" ||
+    { cat "$scratch/err" >&2; exit 1; }
+[ "$(wc -l <"$scratch/err")" -eq 1 ] || { echo "more than one line" >&2; exit 1; }
+mv "$scratch/shard-2.csv" summaries/shard-2.csv
+SGMP_SHARDS=3 SGMP="$sgmp" "$source_dir/scripts/slurm/merge.sbatch" >/dev/null
 cd "$scratch/serial"
 "$sgmp" batch --config "$scratch/sweep.toml" >/dev/null
 # Every column but the timings (seconds, measure_seconds), found by name in the header.

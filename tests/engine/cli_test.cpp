@@ -190,6 +190,19 @@ BOOST_AUTO_TEST_CASE(relax_none_writes_the_bytes_of_no_relaxation_and_relaxed_pa
     BOOST_TEST(pack.metadata.get("relax").value_or("") == "frictionless");
     BOOST_TEST(pack.metadata.get("certified").value_or("") == "true");
     BOOST_TEST(!sgmp::read_pack_file(s.path("plain.xyz")).metadata.contains("relax"));
+    // As a DEM start (a LAMMPS data file), the deposited pack gets one warning line; the
+    // relaxed one and other formats none.
+    const std::string warning = "sgmp convert: warning: this SGMP pack was not relaxed";
+    const Run plain_data =
+        s.run("convert '" + s.path("plain.xyz") + "' '" + s.path("plain.data") + "'");
+    BOOST_TEST(plain_data.status == 0, plain_data.err);
+    BOOST_TEST(plain_data.err.rfind(warning, 0) == 0u, plain_data.err);
+    BOOST_TEST(std::count(plain_data.err.begin(), plain_data.err.end(), '\n') == 1);
+    const Run relaxed_data = s.run("convert '" + s.path("a.xyz") + "' '" + s.path("a.data") + "'");
+    BOOST_TEST(relaxed_data.err.find(warning) == std::string::npos, relaxed_data.err);
+    const Run plain_dump =
+        s.run("convert '" + s.path("plain.xyz") + "' '" + s.path("plain.dump") + "'");
+    BOOST_TEST(plain_dump.err.find(warning) == std::string::npos, plain_dump.err);
 }
 
 BOOST_AUTO_TEST_CASE(an_unwritable_output_is_refused_before_packing) {

@@ -243,6 +243,20 @@ BOOST_AUTO_TEST_CASE(unreadable_and_corrupt_files) {
                }).find("corrupt or truncated gzip data") != std::string::npos);
 }
 
+BOOST_AUTO_TEST_CASE(a_vtk_file_is_refused_as_output_only) {
+    // VTK is written for ParaView, never read: a pack written as .vtk is refused in one
+    // line that says so (was: "expected the particle count").
+    TestDirectory scratch("pack_file_vtk_in");
+    Pack pack;
+    pack.particles.push_back(Particle{1, Vec3(0.0, 0.0, 0.0), 0.1, 0});
+    const fs::path vtk = scratch.path() / "p.vtk";
+    write_pack_as(vtk, pack, PackFormat::vtk, WriteOptions{});
+    BOOST_TEST(input_error_of([&] { read_pack_file(vtk); }) ==
+               vtk.string() +
+                   ":1: a VTK file: VTK is an output format only (for ParaView); read the "
+                   "extended XYZ, dump or data file it was converted from");
+}
+
 BOOST_AUTO_TEST_CASE(existing_files_are_kept_without_overwrite) {
     TestDirectory scratch("pack_file_keep");
     const fs::path target = scratch.path() / "keep.xyz";

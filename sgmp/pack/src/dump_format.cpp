@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "sgmp/pack/geometry.hpp"
 #include "text_fields.hpp"
 
 namespace sgmp {
@@ -126,6 +127,7 @@ Pack read_snapshot(LineReader& reader) {
     const std::int64_t count = expect_integer(reader, "the number of atoms");
     expect_item(reader, "BOX BOUNDS");
     std::string box;
+    std::array<std::pair<double, double>, 3> bounds{};
     for (int axis = 0; axis < 3; ++axis) {
         const std::string line = expect_line(reader, "a box bounds line");
         const auto fields = detail::split_fields(line);
@@ -142,12 +144,18 @@ Pack read_snapshot(LineReader& reader) {
             box += ' ';
         }
         box.append(fields[0]).append(" ").append(fields[1]);
+        bounds[static_cast<std::size_t>(axis)] = {*lo, *hi};
     }
     const std::string labels_text = expect_item(reader, "ATOMS");
     const auto labels = detail::split_fields(labels_text);
     const DumpColumns columns = parse_atom_labels(labels, reader);
     pack.metadata.set_integer("timestep", step);
     pack.metadata.set("dump_box", box);
+    // The file's own box is its container (walls at its x and z bounds, the floor at its
+    // lowest y; no lid), as for a LAMMPS data file: never the thesis default in silence.
+    pack.metadata.set("container", Container{bounds[0].first, bounds[0].second, bounds[2].first,
+                                             bounds[2].second, bounds[1].first}
+                                       .to_string());
     // The count is only a claim until the lines arrive (see read_xyz_lines).
     pack.particles.reserve(static_cast<std::size_t>(std::min<std::int64_t>(count, 1 << 16)));
     detail::ParticleValidator validator;

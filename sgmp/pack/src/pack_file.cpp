@@ -56,6 +56,11 @@ PackRead read_detected(std::istream& in, const std::string& source, bool data_na
     if (reader.line_number() == blanks && detail::is_blank(line)) {
         throw InputError(source, 0, "empty file");
     }
+    if (line.rfind("# vtk DataFile", 0) == 0) {  // a legacy VTK file, as `convert` writes
+        throw InputError(source, reader.line_number(),
+                         "a VTK file: VTK is an output format only (for ParaView); read the "
+                         "extended XYZ, dump or data file it was converted from");
+    }
     const bool is_dump = line.rfind("ITEM:", 0) == 0;
     const bool is_data = !is_dump && (data_name || line.rfind("LAMMPS data file", 0) == 0);
     reader.put_back(line);

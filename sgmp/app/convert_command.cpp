@@ -14,6 +14,7 @@
 #include "sgmp/pack/option_rules.hpp"
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/pack/pack_format.hpp"
+#include "sgmp/pack/pack_origin.hpp"
 #include "sgmp/pack/text_precision.hpp"
 #include "sgmp/pack/version.hpp"
 
@@ -24,8 +25,9 @@ struct ConvertOptions {
     std::string in;
     std::string out;
     std::string to;
-    std::size_t frame = 0;  // 0: the last
-    double radius = 0.0;    // 0: the file's
+    std::size_t frame = 0;        // 0: the last
+    double radius = 0.0;          // 0: the file's
+    std::string origin = "keep";  // keep | zero
     bool force = false;
 };
 
@@ -123,6 +125,9 @@ int convert(const ConvertOptions& o) {
     PackRead read = read_pack_file(o.in, read_options);
     warn_on_precision(read);
     warn_on_dem_start(read.pack, format);
+    if (o.origin == "zero") {
+        (void)move_corner_to_origin(read.pack);
+    }
     record_provenance(read.pack, o);
     write_pack_as(o.out, read.pack, format, WriteOptions{o.force});
     std::printf("sgmp convert: %zu particles (frame %zu of %zu) from %s -> %s (%s)\n",
@@ -163,6 +168,12 @@ CLI::App* register_convert(CLI::App& app) {
         ->check([](const std::string& text) {
             return finite_range_rule(text, 1e-300, 1e300, "(0, 1e300]");
         });
+    command
+        ->add_option("--origin", options.origin,
+                     "keep: positions and box as read; zero: move the pack so that its "
+                     "container's corner (x_min, floor, z_min) is at 0, for tools that ignore "
+                     "Origin (the shift is recorded as origin_shift)")
+        ->check(CLI::IsMember({"keep", "zero"}));
     command->add_flag("--force", options.force, "overwrite existing output files");
     return command;
 }

@@ -203,6 +203,22 @@ BOOST_AUTO_TEST_CASE(relax_none_writes_the_bytes_of_no_relaxation_and_relaxed_pa
     const Run plain_dump =
         s.run("convert '" + s.path("plain.xyz") + "' '" + s.path("plain.dump") + "'");
     BOOST_TEST(plain_dump.err.find(warning) == std::string::npos, plain_dump.err);
+    // --origin zero: the container's corner at 0, so Origin is 0 and centres move by 0.625.
+    const Run zero =
+        s.run("convert '" + s.path("plain.xyz") + "' '" + s.path("zero.xyz") + "' --origin zero");
+    BOOST_TEST(zero.status == 0, zero.err);
+    const std::string moved = sgmp::testing::read_bytes(s.path("zero.xyz"));
+    BOOST_TEST(moved.find(" Origin=\"0 0 0\" ") != std::string::npos);
+    BOOST_TEST(moved.find(" origin_shift=\"0.625 0.625 0.625\"") != std::string::npos);
+    const auto a0 = sgmp::read_pack_file(s.path("plain.xyz")).particles.at(0).center;
+    const auto b0 = sgmp::read_pack_file(s.path("zero.xyz")).particles.at(0).center;
+    BOOST_TEST((b0 - a0 - sgmp::Vec3::Constant(0.625)).norm() <= 1e-15);
+    const Run bad =
+        s.run("convert '" + s.path("plain.xyz") + "' '" + s.path("o.xyz") + "' --origin corner");
+    BOOST_TEST(bad.status == 2);
+    BOOST_TEST(bad.err.find("--origin") != std::string::npos, bad.err);
+    BOOST_TEST(std::count(bad.err.begin(), bad.err.end(), '\n') == 1);
+    BOOST_TEST(!fs::exists(s.path("o.xyz")));
 }
 
 BOOST_AUTO_TEST_CASE(an_unwritable_output_is_refused_before_packing) {

@@ -5,6 +5,7 @@
 
 #include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/pack.hpp"
+#include "sgmp/pack/pack_origin.hpp"
 
 using namespace sgmp;
 
@@ -59,6 +60,24 @@ BOOST_AUTO_TEST_CASE(mean_diameter_of_a_polydisperse_pack) {
     pack.particles = {Particle{1, Vec3::Zero(), 0.1, 0}, Particle{2, Vec3::Zero(), 0.3, 0}};
     BOOST_TEST(mean_diameter(pack) == 0.4, boost::test_tools::tolerance(1e-15));
     BOOST_TEST(mean_diameter(Pack{}) == 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(moving_the_corner_to_the_origin_keeps_every_distance) {
+    // The thesis container's corner (-0.625, -0.625, -0.625) goes to 0: centres move by
+    // +0.625 on every axis, distances stay bit for bit (a shift by a power-of-two multiple
+    // here), the container becomes [0, 1.25] x [0, ...) x [0, 1.25], the shift is recorded.
+    Pack pack;
+    pack.particles = {Particle{1, Vec3(0.1, -0.5, 0.2), 0.05, 0},
+                      Particle{2, Vec3(-0.3, -0.4, 0.0), 0.05, 0}};
+    pack.metadata.set("container", Container{}.to_string());
+    const double before = (pack.particles[0].center - pack.particles[1].center).norm();
+    const Vec3 shift = move_corner_to_origin(pack);
+    BOOST_TEST(shift == Vec3::Constant(0.625));
+    BOOST_TEST(pack.particles[0].center.y() == -0.5 + 0.625);
+    BOOST_TEST(std::abs((pack.particles[0].center - pack.particles[1].center).norm() - before) <=
+               1e-15);
+    BOOST_TEST(*pack.metadata.get("container") == "0 1.25 0 1.25 0");
+    BOOST_TEST(*pack.metadata.get("origin_shift") == "0.625 0.625 0.625");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -69,3 +69,23 @@ def test_unknown_and_bad_options_raise_one_line_value_errors():
         sgmp.pack(10, "loose-random", relax="frictional", relax_friction=-1)
     with pytest.raises(ValueError, match="species"):
         sgmp.Pack(np.zeros((2, 3)), np.ones(2), species=np.array([1, -2]))
+
+
+def test_size_distributions_from_a_file_or_lognormal(tmp_path):
+    table = tmp_path / "blend.csv"
+    table.write_text("diameter,fraction,density\n10,0.51,1.95\n5,0.17,1.95\n6,0.18,2.7\n")
+    p = sgmp.pack(2000, "loose-random", seed=1, size_distribution=str(table),
+                  fraction_basis="mass")
+    assert p.header["size_distribution"] == str(table)
+    assert len(p.header["species_counts"]) == 3 and set(np.unique(p.species)) == {1, 2, 3}
+    q = sgmp.pack(400, "loose-random", seed=1, size_distribution="lognormal:200:0.3:4",
+                  fraction_basis="volume")
+    counts = q.header["species_counts"]
+    assert len(counts) == 4 and sum(counts) == 400
+    assert counts[0] > counts[-1]  # equal volumes: more of the small spheres
+    with pytest.raises(ValueError, match="^size_distribution = lognormal:200:-1: SIGMA"):
+        sgmp.pack(10, "loose-random", size_distribution="lognormal:200:-1")
+    with pytest.raises(ValueError, match="not both"):
+        sgmp.pack(10, "loose-random", size_distribution="lognormal:200:0.3", size_modes="1:1")
+    with pytest.raises(ValueError, match="readable file"):
+        sgmp.pack(10, "loose-random", size_distribution=str(tmp_path / "missing.csv"))

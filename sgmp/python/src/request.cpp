@@ -7,13 +7,17 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <functional>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include "bindings.hpp"
 #include "sgmp/engine/make_pack.hpp"
+#include "sgmp/engine/size_modes.hpp"
 #include "sgmp/pack/option_rules.hpp"
 #include "sgmp/pack/parameter_error.hpp"
 
@@ -101,6 +105,25 @@ const std::map<std::string, Setter>& setters() {
                            "1:0.7,0.5:0.3");
              }
              r.size_modes = *modes;
+         }},
+        {"size_distribution",
+         [](PackRequest& r, auto v) {
+             // lognormal:MEDIAN:SIGMA[...] or a CSV file (header diameter,fraction[,density]),
+             // read here: the front end opens files, the engine parses their text.
+             const std::string spec = text(v, "size-distribution");
+             if (engine::is_lognormal(spec)) {
+                 r.size_modes = engine::lognormal_modes(spec);
+             } else {
+                 std::ifstream in(spec, std::ios::binary);
+                 if (!std::filesystem::is_regular_file(spec) || !in) {
+                     throw bad("size-distribution", v,
+                               "must name a readable file or be lognormal:MEDIAN:SIGMA[...]");
+                 }
+                 std::ostringstream content;
+                 content << in.rdbuf();
+                 r.size_modes = engine::parse_size_distribution_csv(content.str(), spec);
+             }
+             r.size_distribution = spec;
          }},
         {"fraction_basis",
          [](PackRequest& r, auto v) {
@@ -202,6 +225,10 @@ PackRequest request_of(const py::handle& count, const py::handle& arrangement,
             throw bad("seed", seed, rule);
         }
         request.seed = seed.cast<std::uint64_t>();
+    }
+    if (options.contains("size_modes") && options.contains("size_distribution")) {
+        throw bad("size-distribution", options["size_distribution"],
+                  "give either size_modes or size_distribution, not both");
     }
     for (const auto& [key, value] : options) {
         const std::string name = py::str(key).cast<std::string>();

@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <numbers>
+#include <utility>
 
 #include "sgmp/metrics/ball_box_volume.hpp"
 #include "sgmp/metrics/kd_columns.hpp"
@@ -192,6 +193,7 @@ std::optional<SpeciesStructure> measure_species_structure(const std::vector<Part
     SpeciesStructure result;
     const std::size_t n = members.size();
     std::vector<std::vector<std::vector<double>>> z(n, std::vector<std::vector<double>>(n));
+    std::vector<std::pair<std::size_t, std::size_t>> pair_of;  // (I, J) of result.pairs
     for (std::size_t a = 0; a < n; ++a) {
         for (std::size_t b = 0; b < n; ++b) {
             const Members& I = members[a];
@@ -215,36 +217,26 @@ std::optional<SpeciesStructure> measure_species_structure(const std::vector<Part
             pair.bin_offset_over_d = offset / d;
             pair.pairs.assign(counts.pairs.begin(), counts.pairs.end() - 1);  // not beyond
             pair.shell_volume = shell_volumes(particles, I.origins, bins, options.space);
-            double pair_sum = 0.0;
-            double volume_sum = 0.0;
-            for (std::size_t k = 0; k < bins.count; ++k) {
-                pair_sum += static_cast<double>(pair.pairs[k]);
-                volume_sum += pair.shell_volume[k];
-            }
-            const double space_density = static_cast<double>(J.all.size()) / space_volume;
-            pair.density =
-                options.density_rule == RdfDensity::Neighbours && pair_sum > 0.0 && volume_sum > 0.0
-                    ? pair_sum / volume_sum
-                    : space_density;
-            for (std::size_t k = 0; k < bins.count; ++k) {
-                const double expected = pair.density * pair.shell_volume[k];
-                pair.g.push_back(expected > 0.0 ? static_cast<double>(pair.pairs[k]) / expected
-                                                : 0.0);
-            }
+            // g and ρ_J as g(r) normalises them (rdf.hpp: one density rule, one g).
+            Rdf rdf;
+            rdf.bin_width_over_d = options.bin_width_over_d;
+            rdf.density_rule = options.density_rule;
+            rdf.pairs = pair.pairs;
+            rdf.shell_volume = pair.shell_volume;
+            rdf.space_density = static_cast<double>(J.all.size()) / space_volume;
+            normalise(rdf);
+            pair.density = rdf.density;
+            pair.g = std::move(rdf.g);
             result.pairs.push_back(std::move(pair));
+            pair_of.emplace_back(a, b);
         }
     }
+    for (std::size_t p = 0; p < result.pairs.size(); ++p) {
+        const auto [a, b] = pair_of[p];
+        result.pairs[p].z_ij = z[a][b];
+        result.pairs[p].z_ji = z[b][a];
+    }
     for (std::size_t a = 0; a < n; ++a) {
-        for (auto& pair : result.pairs) {
-            if (pair.i == members[a].species) {
-                const std::size_t b = static_cast<std::size_t>(
-                    std::find_if(members.begin(), members.end(),
-                                 [&](const Members& m) { return m.species == pair.j; }) -
-                    members.begin());
-                pair.z_ij = z[a][b];
-                pair.z_ji = z[b][a];
-            }
-        }
         SpeciesSummary s;
         s.species = members[a].species;
         s.origins = static_cast<std::int64_t>(members[a].origins.size());

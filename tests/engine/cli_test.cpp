@@ -309,9 +309,11 @@ BOOST_AUTO_TEST_CASE(arrange_writes_the_starting_positions) {
 BOOST_AUTO_TEST_CASE(values_once_accepted_silently_are_refused) {
     const Scratch s;
     const std::string seed_rule = "must be a whole number from 0 to 18446744073709551615";
-    expect_refused(s, "--count 100 --seed -1", "--seed: " + seed_rule);
-    expect_refused(s, "--count 100 --seed 18446744073709551616", "--seed: " + seed_rule);
-    expect_refused(s, "--count 100 --sweep-stages ''", "--sweep-stages: must list at least one");
+    expect_refused(s, "--count 100 --seed -1", "--seed -1: " + seed_rule);
+    expect_refused(s, "--count 100 --seed 18446744073709551616",
+                   "--seed 18446744073709551616: " + seed_rule);
+    expect_refused(s, "--count 100 --sweep-stages ''",
+                   "--sweep-stages \"\": must be comma-separated whole numbers");
     expect_refused(s, "--count 100 --phi-target 1e-300",
                    "--phi-target 1e-300: must be at least 0.001");
     expect_refused(s, "--config '" + s.dir.string() + "'",

@@ -10,6 +10,7 @@
 #include <malloc.h>
 #endif
 
+#include "sgmp/engine/pack_parameters.hpp"
 #include "sgmp/engine/protocol.hpp"
 #include "sgmp/pack/parameter_error.hpp"
 #include "sgmp/pack/version.hpp"
@@ -104,18 +105,9 @@ void record_species(const PackRequest& request, Metadata& m) {
 void record_request(const PackRequest& request, double diameter, Metadata& m) {
     m.set("generator", "sgmp");
     m.set("version", version());
-    m.set_integer("count", static_cast<long long>(request.count));
+    record_pack_parameters(request, "count", m);
     m.set_number("diameter", diameter);
-    m.set_number("phi_target", request.phi_target);
-    m.set("arrangement", std::string(to_string(request.arrangement)));
-    m.set("seed", std::to_string(request.seed));
-    m.set("size_modes", size_modes_to_string(request.size_modes));
-    if (!request.size_distribution.empty()) {
-        m.set("size_distribution", request.size_distribution);
-    }
-    if (request.fraction_basis != FractionBasis::Number || !request.size_distribution.empty()) {
-        m.set("fraction_basis", std::string(to_string(request.fraction_basis)));
-    }
+    record_pack_parameters(request, "request", m);
     record_species(request, m);
 }
 
@@ -162,11 +154,12 @@ void deposit(std::vector<Particle>& particles, const PackRequest& request,
     }
 }
 
-void record_relaxation(const RelaxParams& params, const RelaxStats& stats, Metadata& m) {
+void record_relaxation(const PackRequest& request, const RelaxStats& stats, Metadata& m) {
+    const RelaxParams& params = request.relax;
     if (params.mode == RelaxMode::None) {
         return;
     }
-    record(params, m);
+    record_pack_parameters(request, "relax", m);
     m.set_integer("relax_steps", stats.steps);
     m.set_integer("relax_stages_converged", stats.stages_converged);
     m.set_number("relax_force_max", stats.force_max);
@@ -215,46 +208,9 @@ void record_certificate(const std::optional<EquilibriumCertificate>& c, const Re
 }  // namespace
 
 void validate(const PackRequest& request) {
-    if (request.count < 1 || request.count > kMaxCount) {
-        throw ParameterError("count", std::to_string(request.count),
-                             "must be between 1 and " + std::to_string(kMaxCount));
-    }
-    const bool blend =
-        std::any_of(request.size_modes.begin(), request.size_modes.end(), [&](const SizeMode& m) {
-            return m.relative_diameter != request.size_modes.front().relative_diameter;
-        });
-    if (!blend && (!(request.phi_target > 0.0) || !(request.phi_target <= kMaxPhiTarget))) {
-        throw ParameterError("phi_target", format_number(request.phi_target),
-                             "must be in (0, 0.74048] (the densest packing of equal spheres)");
-    }
-    if (blend && (!(request.phi_target > 0.0) || !(request.phi_target < 1.0))) {
-        throw ParameterError("phi_target", format_number(request.phi_target),
-                             "must be in (0, 1) for a blend of several sizes");
-    }
-    if (request.phi_target < 1e-3) {
-        // Below this the sizing rule gives spheres smaller than the default fall step.
-        throw ParameterError("phi_target", format_number(request.phi_target),
-                             "must be at least 0.001 (smaller targets give vanishing diameters)");
-    }
-    if (request.size_modes.empty()) {
-        throw ParameterError("size_modes", "", "needs at least one mode");
-    }
-    double total = 0.0;
-    for (const SizeMode& m : request.size_modes) {
-        if (!(m.relative_diameter > 0.0) || !(m.fraction >= 0.0) ||
-            !std::isfinite(m.relative_diameter) || !std::isfinite(m.fraction) ||
-            (m.density && !(*m.density > 0.0 && std::isfinite(*m.density)))) {
-            throw ParameterError("size_modes", size_modes_to_string(request.size_modes),
-                                 "relative diameters and densities must be positive, "
-                                 "fractions not negative");
-        }
-        total += m.fraction;
-    }
-    if (!(total > 0.0)) {
-        throw ParameterError("size_modes", size_modes_to_string(request.size_modes),
-                             "every fraction is 0: at least one must be positive");
-    }
-    (void)modes_of(request);  // a mass basis needs every density
+    // The count's range, φ*, the sizes and their basis first: the diameters follow from them.
+    check_pack_parameters(request, "count", {});
+    check_pack_parameters(request, "request", {});
     const Sizes sizes = sizes_of(request);
     if (!(sizes.largest < kContainerSide)) {
         throw ParameterError("count", std::to_string(request.count),
@@ -262,8 +218,8 @@ void validate(const PackRequest& request) {
                                  " it gives at phi_target " + format_number(request.phi_target) +
                                  " does not fit the 1.25-wide container");
     }
-    validate(request.protocol, sizes.smallest);
-    validate(request.relax);
+    check_pack_parameters(request, "protocol", {sizes.smallest});
+    check_pack_parameters(request, "relax", {sizes.smallest});
 }
 
 Pack make_start_pack(const PackRequest& request) {
@@ -308,7 +264,7 @@ Pack make_pack(const PackRequest& request, const ProgressCallback& progress, Pac
     pack.particles = std::move(particles);
     Metadata& m = pack.metadata;
     record_request(request, d, m);
-    record(request.protocol, m);
+    record_pack_parameters(request, "protocol", m);
     m.set("container", container.to_string());
     m.set_number("start_height", local.start_height);
     m.set_integer("moves", local.moves);
@@ -317,7 +273,7 @@ Pack make_pack(const PackRequest& request, const ProgressCallback& progress, Pac
     m.set_integer("resting", static_cast<long long>(local.resting));
     m.set_integer("stalled", static_cast<long long>(local.stalled));
     m.set_integer("move_limit", static_cast<long long>(local.move_limit));
-    record_relaxation(request.relax, local.relax, m);
+    record_relaxation(request, local.relax, m);
     if (request.relax.mode != RelaxMode::None) {
         record_certificate(local.certificate, request.relax, pack.particles, m);
     }

@@ -17,6 +17,7 @@
 
 #include "bindings.hpp"
 #include "sgmp/engine/make_pack.hpp"
+#include "sgmp/engine/pack_parameters.hpp"
 #include "sgmp/engine/size_modes.hpp"
 #include "sgmp/pack/option_rules.hpp"
 #include "sgmp/pack/parameter_error.hpp"
@@ -36,214 +37,112 @@ ParameterError bad(std::string option, const py::handle& value, const std::strin
     return ParameterError(option, shown(value), rule);
 }
 
-double number(const py::handle& value, const std::string& option) {
-    if (py::isinstance<py::bool_>(value) ||
-        !(py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value))) {
-        throw bad(option, value, "must be a number");
+/// The text of a Python value for the row, after the checks of its kind: numbers must be
+/// int or float (not bool), whole numbers int, choices and text str, lists str or (for
+/// sweep_stages) a sequence of whole numbers.
+std::string text_of(const engine::PackParameter& row, const py::handle& value) {
+    const bool is_bool = py::isinstance<py::bool_>(value);
+    switch (row.kind) {
+        case ValueKind::Number:
+            if (is_bool ||
+                !(py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value))) {
+                throw bad(row.name, value, "must be a number");
+            }
+            return format_number(value.cast<double>());
+        case ValueKind::Integer:
+            if (is_bool || !py::isinstance<py::int_>(value)) {
+                throw bad(row.name, value, row.rule);
+            }
+            return shown(value);  // decimal digits; the row clamps what its type cannot hold
+        case ValueKind::List:
+            if (row.name == "sweep_stages" && !py::isinstance<py::str>(value) &&
+                py::isinstance<py::sequence>(value)) {
+                std::string joined;
+                for (const auto& item : value.cast<py::sequence>()) {
+                    if (py::isinstance<py::bool_>(item) || !py::isinstance<py::int_>(item)) {
+                        throw bad(row.name, value, row.rule);
+                    }
+                    joined += (joined.empty() ? "" : ",") + shown(item);
+                }
+                return joined;
+            }
+            [[fallthrough]];
+        case ValueKind::Choice:
+        case ValueKind::Text:
+            if (!py::isinstance<py::str>(value)) {
+                throw bad(row.name, value, "must be a string");
+            }
+            return value.cast<std::string>();
     }
-    return value.cast<double>();
+    return {};
 }
 
-long long integer(const py::handle& value, const std::string& option) {
-    if (py::isinstance<py::bool_>(value) || !py::isinstance<py::int_>(value)) {
-        throw bad(option, value, "must be a whole number");
+/// A size distribution given as a CSV file: the front end reads it, the engine parses it.
+void read_size_distribution(PackRequest& r, const py::handle& value) {
+    const std::string spec = value.cast<std::string>();
+    std::ifstream in(spec, std::ios::binary);
+    if (!std::filesystem::is_regular_file(spec) || !in) {
+        throw bad("size_distribution", value,
+                  "must name a readable file or be lognormal:MEDIAN:SIGMA[...]");
     }
-    try {
-        return value.cast<long long>();
-    } catch (const py::cast_error&) {
-        throw bad(option, value, "must be a whole number of at most 64 bits");
-    }
+    std::ostringstream content;
+    content << in.rdbuf();
+    r.size_modes = engine::parse_size_distribution_csv(content.str(), spec);
+    r.size_distribution = spec;
 }
 
-std::string text(const py::handle& value, const std::string& option) {
-    if (!py::isinstance<py::str>(value)) {
-        throw bad(option, value, "must be a string");
+/// Sets the row's value from a Python value; ValueError with the row's rule when refused.
+void set(PackRequest& r, const engine::PackParameter& row, const py::handle& value) {
+    const std::string typed = text_of(row, value);
+    if (row.parse(r, typed)) {
+        return;
     }
-    return value.cast<std::string>();
+    if (row.name == "size_distribution") {
+        read_size_distribution(r, value);
+        return;
+    }
+    throw bad(row.name, value, row.rule);
 }
 
-template <class T>
-T choice(std::optional<T> parsed, const std::string& option, const py::handle& value,
-         std::string_view choices) {
-    if (!parsed) {
-        throw bad(option, value, "must be one of " + std::string(choices));
-    }
-    return *parsed;
+const engine::PackParameter& row_named(std::string_view name) {
+    return *engine::find_pack_parameter(name);
 }
 
-/// "8,120,720" or a sequence of whole numbers.
-std::vector<int> stages(const py::handle& value) {
-    std::string typed;
-    if (py::isinstance<py::str>(value)) {
-        typed = value.cast<std::string>();
-    } else if (py::isinstance<py::sequence>(value)) {
-        for (const auto& item : value.cast<py::sequence>()) {
-            typed += (typed.empty() ? "" : ",") + std::to_string(integer(item, "sweep-stages"));
-        }
-    }
-    const auto parsed = engine::parse_stages(typed);
-    if (!parsed) {
-        throw bad("sweep-stages", value, "must be comma-separated whole numbers, e.g. 8,120,720");
-    }
-    return *parsed;
-}
-
-using Setter = std::function<void(PackRequest&, const py::handle&)>;
-
-/// Every option of `sgmp pack` but count, arrangement, seed (arguments of their own) and
-/// the file options, keyed by its keyword.
-const std::map<std::string, Setter>& setters() {
-    using engine::parse_contact_model;
-    static const std::map<std::string, Setter> table = {
-        {"phi_target", [](PackRequest& r, auto v) { r.phi_target = number(v, "phi-target"); }},
-        {"size_modes",
-         [](PackRequest& r, auto v) {
-             const auto modes = engine::parse_size_modes(text(v, "size-modes"));
-             if (!modes) {
-                 throw bad("size-modes", v,
-                           "must be positive diameter:fraction[:density] items, e.g. "
-                           "1:0.7,0.5:0.3");
-             }
-             r.size_modes = *modes;
-         }},
-        {"size_distribution",
-         [](PackRequest& r, auto v) {
-             // lognormal:MEDIAN:SIGMA[...] or a CSV file (header diameter,fraction[,density]),
-             // read here: the front end opens files, the engine parses their text.
-             const std::string spec = text(v, "size-distribution");
-             if (engine::is_lognormal(spec)) {
-                 r.size_modes = engine::lognormal_modes(spec);
-             } else {
-                 std::ifstream in(spec, std::ios::binary);
-                 if (!std::filesystem::is_regular_file(spec) || !in) {
-                     throw bad("size-distribution", v,
-                               "must name a readable file or be lognormal:MEDIAN:SIGMA[...]");
-                 }
-                 std::ostringstream content;
-                 content << in.rdbuf();
-                 r.size_modes = engine::parse_size_distribution_csv(content.str(), spec);
-             }
-             r.size_distribution = spec;
-         }},
-        {"fraction_basis",
-         [](PackRequest& r, auto v) {
-             r.fraction_basis = choice(engine::parse_fraction_basis(text(v, "fraction-basis")),
-                                       "fraction-basis", v, engine::fraction_bases().choices());
-         }},
-        {"circle_factor",
-         [](PackRequest& r, auto v) { r.protocol.circle_factor = number(v, "circle-factor"); }},
-        {"sweep_positions",
-         [](PackRequest& r, auto v) {
-             r.protocol.sweep_stages = {static_cast<int>(integer(v, "sweep-positions"))};
-         }},
-        {"sweep_stages", [](PackRequest& r, auto v) { r.protocol.sweep_stages = stages(v); }},
-        {"lower_neighbours",
-         [](PackRequest& r, auto v) {
-             r.protocol.lower_neighbours = static_cast<int>(integer(v, "lower-neighbours"));
-         }},
-        {"gap",
-         [](PackRequest& r, auto v) {
-             r.protocol.gap = choice(engine::parse_gap_rule(text(v, "gap")), "gap", v,
-                                     engine::gap_rules().choices());
-         }},
-        {"fall",
-         [](PackRequest& r, auto v) {
-             r.protocol.fall = choice(engine::parse_fall_mode(text(v, "fall")), "fall", v,
-                                      engine::fall_modes().choices());
-         }},
-        {"fall_step",
-         [](PackRequest& r, auto v) { r.protocol.fall_step = number(v, "fall-step"); }},
-        {"contact",
-         [](PackRequest& r, auto v) {
-             r.protocol.contact = choice(parse_contact_model(text(v, "contact")), "contact", v,
-                                         engine::contact_models().choices());
-         }},
-        {"momentum", [](PackRequest& r, auto v) { r.protocol.momentum = number(v, "momentum"); }},
-        {"walls",
-         [](PackRequest& r, auto v) {
-             r.protocol.walls = choice(engine::parse_wall_rule(text(v, "walls")), "walls", v,
-                                       engine::wall_rules().choices());
-         }},
-        {"stall_moves",
-         [](PackRequest& r, auto v) {
-             r.protocol.stall_moves = static_cast<long>(integer(v, "stall-moves"));
-         }},
-        {"max_moves",
-         [](PackRequest& r, auto v) {
-             r.protocol.max_moves = static_cast<long>(integer(v, "max-moves"));
-         }},
-        {"relax",
-         [](PackRequest& r, auto v) {
-             r.relax.mode = choice(engine::parse_relax_mode(text(v, "relax")), "relax", v,
-                                   engine::relax_modes().choices());
-         }},
-        {"relax_stiffness",
-         [](PackRequest& r, auto v) { r.relax.stiffness = number(v, "relax-stiffness"); }},
-        {"relax_stiffness_factor",
-         [](PackRequest& r, auto v) {
-             r.relax.stiffness_factor = number(v, "relax-stiffness-factor");
-         }},
-        {"relax_stages",
-         [](PackRequest& r, auto v) {
-             r.relax.stages = static_cast<int>(integer(v, "relax-stages"));
-         }},
-        {"relax_shell", [](PackRequest& r, auto v) { r.relax.shell = number(v, "relax-shell"); }},
-        {"relax_force_tolerance",
-         [](PackRequest& r, auto v) {
-             r.relax.force_tolerance = number(v, "relax-force-tolerance");
-         }},
-        {"relax_time", [](PackRequest& r, auto v) { r.relax.time = number(v, "relax-time"); }},
-        {"relax_crossings",
-         [](PackRequest& r, auto v) { r.relax.crossings = number(v, "relax-crossings"); }},
-        {"relax_friction",
-         [](PackRequest& r, auto v) { r.relax.friction = number(v, "relax-friction"); }},
-        {"relax_settle_limit",
-         [](PackRequest& r, auto v) {
-             const long long limit = integer(v, "relax-settle-limit");
-             // Out of int's range: a value validate() refuses, not one that wraps.
-             r.relax.settle_limit = static_cast<int>(std::clamp<long long>(limit, 0, 1000001));
-         }},
-    };
-    return table;
+/// Positional arguments of their own: not keywords.
+bool positional(const engine::PackParameter& row) {
+    return row.name == "count" || row.name == "arrangement" || row.name == "seed";
 }
 
 PackRequest request_of(const py::handle& count, const py::handle& arrangement,
                        const py::handle& seed, const py::kwargs& options) {
     PackRequest request;
-    const long long n = integer(count, "count");
-    if (n < 1 || n > static_cast<long long>(sgmp::kMaxCount)) {
-        throw bad("count", count, "must be between 1 and " + std::to_string(sgmp::kMaxCount));
-    }
-    request.count = static_cast<std::size_t>(n);
-    request.arrangement = choice(engine::parse_arrangement(text(arrangement, "arrangement")),
-                                 "arrangement", arrangement, engine::arrangement_names());
+    set(request, row_named("count"), count);
+    set(request, row_named("arrangement"), arrangement);
     if (!seed.is_none()) {
-        const std::string typed = py::isinstance<py::int_>(seed) && !py::isinstance<py::bool_>(seed)
-                                      ? shown(seed)
-                                      : std::string("?");
-        if (const std::string rule = seed_rule(typed); !rule.empty()) {
-            throw bad("seed", seed, rule);
-        }
-        request.seed = seed.cast<std::uint64_t>();
+        set(request, row_named("seed"), seed);
     }
     if (options.contains("size_modes") && options.contains("size_distribution")) {
-        throw bad("size-distribution", options["size_distribution"],
+        throw bad("size_distribution", options["size_distribution"],
                   "give either size_modes or size_distribution, not both");
     }
     for (const auto& [key, value] : options) {
         const std::string name = py::str(key).cast<std::string>();
-        const auto setter = setters().find(name);
-        if (setter == setters().end()) {
+        const engine::PackParameter* row = engine::find_pack_parameter(name);
+        if (row == nullptr || positional(*row) || name.find('-') != std::string::npos) {
             std::string known;
-            for (const auto& [option, unused] : setters()) {
-                known += (known.empty() ? "" : ", ") + option;
+            for (const engine::PackParameter& r : engine::pack_parameters()) {
+                known += (known.empty() ? "" : ", ") + r.name;
             }
-            throw std::invalid_argument(name +
-                                        ": not an option of sgmp.pack (options: count, "
-                                        "arrangement, seed, " +
-                                        known + ")");
+            throw std::invalid_argument(name + ": not an option of sgmp.pack (options: " + known +
+                                        ")");
         }
-        setter->second(request, value);
+    }
+    // In table order, whatever the order of the keywords: sweep_stages overrides
+    // sweep_positions as on the command line.
+    for (const engine::PackParameter& row : engine::pack_parameters()) {
+        if (!positional(row) && options.contains(row.name.c_str())) {
+            set(request, row, options[row.name.c_str()]);
+        }
     }
     engine::validate(request);  // ParameterError naming the keyword
     return request;

@@ -86,7 +86,8 @@ def pack(count, arrangement, seed=None, *, phi_target=None, size_modes=None,
          momentum=None, walls=None, stall_moves=None, max_moves=None, relax=None,
          relax_stiffness=None, relax_stiffness_factor=None, relax_stages=None,
          relax_shell=None, relax_force_tolerance=None, relax_time=None, relax_crossings=None,
-         relax_friction=None, relax_settle_limit=None, progress=None):
+         relax_friction=None, relax_settle_limit=None, relax_tangential_ratio=None,
+         progress=None):
     """Packs `count` spheres from `arrangement` (single-column, small-dense, large-dense,
     loose-random) with the Spin Gap Move Protocol and returns an sgmp.Pack.
 
@@ -106,7 +107,7 @@ def pack(count, arrangement, seed=None, *, phi_target=None, size_modes=None,
     - relax: 'none', 'frictionless' or 'frictional', and relax_stiffness,
       relax_stiffness_factor, relax_stages, relax_shell, relax_force_tolerance, relax_time,
       relax_crossings, relax_friction (mu of 'frictional', default 0.5),
-      relax_settle_limit: the relaxation (a relaxed pack is returned whether or not it is
+      relax_settle_limit, relax_tangential_ratio (k_t/k of 'frictional'): the relaxation (a relaxed pack is returned whether or not it is
       certified: read pack.header['certified'])
     - progress: called as progress(phase, done, total) with phase 'deposition' (spheres
       placed of total, every 1000), 'relaxation' or 'clearing' (minimiser steps) or
@@ -125,7 +126,7 @@ def pack(count, arrangement, seed=None, *, phi_target=None, size_modes=None,
         relax_stages=relax_stages, relax_shell=relax_shell,
         relax_force_tolerance=relax_force_tolerance, relax_time=relax_time,
         relax_crossings=relax_crossings, relax_friction=relax_friction,
-        relax_settle_limit=relax_settle_limit)))
+        relax_settle_limit=relax_settle_limit, relax_tangential_ratio=relax_tangential_ratio)))
 
 
 def arrange(count, arrangement, seed=None, *, phi_target=None, size_modes=None,

@@ -1,8 +1,8 @@
 #pragma once
 /// @file parameters.hpp
-/// The pack parameters a sweep can vary: every option of `sgmp pack` that shapes a pack
-/// (count, arrangement, φ*, size modes, the protocol and the relaxation), by the name pack
-/// headers record (`phi_target`; the command line spells it `--phi-target`).
+/// The pack parameters a sweep can vary: every row of the pack parameter table
+/// (sgmp/engine/pack_parameters.hpp) but the seed, by the name pack headers record
+/// (`phi_target`; the command line spells it `--phi-target`).
 
 #include <cstddef>
 #include <string>
@@ -19,7 +19,7 @@ struct Parameter {
     bool list_valued = false;   // its value holds commas (sweep_stages, size_modes)
 };
 
-/// Every sweepable parameter, in the fixed order of jobs, summary columns and patterns.
+/// Every sweepable parameter, in the table's fixed order of jobs, summary columns and patterns.
 const std::vector<Parameter>& parameters();
 
 /// The index of parameter `name` (snake_case or the option's kebab-case), or npos.
@@ -28,8 +28,9 @@ std::size_t parameter_index(std::string_view name);
 /// One value per parameter, in parameters() order.
 using ParameterValues = std::vector<std::string>;
 
-/// The pack request the values stand for (seed included). Throws std::invalid_argument
-/// with a one-line message naming the option, the value and the rule.
+/// The pack request the values stand for (seed included). Throws ParameterError (the
+/// parameter's name, the value, the rule) for a value its row refuses or a request that
+/// breaks a rule; std::invalid_argument when `values` does not hold one value per parameter.
 engine::PackRequest to_request(const ParameterValues& values, std::uint64_t seed);
 
 }  // namespace sgmp::batch

@@ -88,8 +88,9 @@ struct ProtocolParams {
 /// Largest number of sweep positions in one stage.
 inline constexpr int kMaxSweepPositions = 1000000;
 
-/// Checks the parameters for particles of diameter `diameter`; throws ParameterError
-/// (the parameter's header name, its value, the rule) for the first that breaks its rule.
+/// Checks the parameters for particles of diameter `diameter` with the rows of the pack
+/// parameter table (pack_parameters.hpp); throws ParameterError (the parameter's header
+/// name, its value, the rule) for the first that breaks its rule.
 void validate(const ProtocolParams& params, double diameter);
 
 /// The name tables of the protocol's choices (name_table.hpp).
@@ -109,8 +110,5 @@ std::optional<WallRule> parse_wall_rule(std::string_view text);
 /// "8,120,720" for the stages; parse returns nullopt for anything but positive integers.
 std::string stages_to_string(const std::vector<int>& stages);
 std::optional<std::vector<int>> parse_stages(std::string_view text);
-
-/// Records every parameter in `metadata` under its option name (snake_case).
-void record(const ProtocolParams& params, Metadata& metadata);
 
 }  // namespace sgmp::engine

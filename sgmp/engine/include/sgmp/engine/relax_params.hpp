@@ -24,6 +24,7 @@ enum class RelaxMode {
     Frictional,
 };
 
+/// Its rules, names and help are rows of the pack parameter table (pack_parameters.hpp).
 struct RelaxParams {
     RelaxMode mode = RelaxMode::None;
     /// Contact stiffness k of the first stage, in m·g/d: a contact pressed by one weight m·g
@@ -72,17 +73,9 @@ struct RelaxParams {
     int settle_limit = 5000;
 };
 
-/// Throws ParameterError (the parameter's header name, its value, the rule) for the
-/// first parameter that breaks its rule.
-void validate(const RelaxParams& params);
-
 /// The name table of the relaxation modes (name_table.hpp).
 const NameTable<RelaxMode, 3>& relax_modes();
 std::string_view to_string(RelaxMode mode);
 std::optional<RelaxMode> parse_relax_mode(std::string_view text);
-
-/// Records the parameters under their option names (snake_case) when a relaxation is asked
-/// for; records nothing for `RelaxMode::None`, so unrelaxed packs keep their bytes.
-void record(const RelaxParams& params, Metadata& metadata);
 
 }  // namespace sgmp::engine

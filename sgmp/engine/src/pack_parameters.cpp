@@ -1,0 +1,538 @@
+#include "sgmp/engine/pack_parameters.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "sgmp/pack/option_rules.hpp"
+#include "sgmp/pack/parameter_error.hpp"
+
+namespace sgmp::engine {
+namespace {
+
+using Row = PackParameter;
+using Check = std::function<void(const PackRequest&, const PackCheckContext&)>;
+
+[[noreturn]] void refuse(const char* name, std::string value, std::string rule) {
+    throw ParameterError(name, std::move(value), std::move(rule));
+}
+
+/// A real-valued member reached by `member(request)`.
+template <class Member>
+Row number(std::string name, std::string group, Member member, std::string help, Check check) {
+    Row row;
+    row.name = std::move(name);
+    row.group = std::move(group);
+    row.kind = ValueKind::Number;
+    row.help = std::move(help);
+    row.rule = "must be a number";
+    row.parse = [member](PackRequest& r, std::string_view text) {
+        const auto value = parse_real(text);
+        if (value) {
+            member(r) = *value;
+        }
+        return value.has_value();
+    };
+    row.format = [member](const PackRequest& r) { return format_number(member(r)); };
+    row.check = std::move(check);
+    return row;
+}
+
+/// A whole-number member (of its own integer type) reached by `member(request)`.
+template <class Member>
+Row whole(std::string name, std::string group, Member member, std::string help, Check check) {
+    Row row;
+    row.name = std::move(name);
+    row.group = std::move(group);
+    row.kind = ValueKind::Integer;
+    row.help = std::move(help);
+    row.rule = "must be a whole number";
+    row.parse = [member](PackRequest& r, std::string_view text) {
+        using T = std::remove_reference_t<decltype(member(r))>;
+        const auto value = parse_whole<T>(text);
+        if (value) {
+            member(r) = *value;
+        }
+        return value.has_value();
+    };
+    row.format = [member](const PackRequest& r) { return std::to_string(member(r)); };
+    row.check = std::move(check);
+    return row;
+}
+
+/// A member holding one name of a name table `table()`.
+template <class Member, class Table>
+Row choice(std::string name, std::string group, Member member, Table table, std::string help) {
+    Row row;
+    row.name = std::move(name);
+    row.group = std::move(group);
+    row.kind = ValueKind::Choice;
+    row.help = std::move(help);
+    row.rule = "must be one of " + table().choices();
+    row.parse = [member, table](PackRequest& r, std::string_view text) {
+        const auto value = table().parse(text);
+        if (value) {
+            member(r) = *value;
+        }
+        return value.has_value();
+    };
+    row.format = [member, table](const PackRequest& r) {
+        return std::string(table().name(member(r)));
+    };
+    return row;
+}
+
+bool relaxed(const PackRequest& r) {
+    return r.relax.mode != RelaxMode::None;
+}
+bool frictional(const PackRequest& r) {
+    return r.relax.mode == RelaxMode::Frictional;
+}
+
+/// Checks `low ≤ value ≤ high` (NaN fails).
+template <class Member>
+Check in_range(const char* name, Member member, double low, double high, std::string rule) {
+    return [=](const PackRequest& r, const PackCheckContext&) {
+        const double v = static_cast<double>(member(r));
+        if (!(v >= low) || !(v <= high)) {
+            refuse(name, format_number(v), rule);
+        }
+    };
+}
+
+template <class Member>
+Check at_least_one(const char* name, Member member) {
+    return [=](const PackRequest& r, const PackCheckContext&) {
+        if (member(r) < 1) {
+            refuse(name, std::to_string(member(r)), "must be at least 1");
+        }
+    };
+}
+
+bool is_blend(const PackRequest& r) {
+    return std::any_of(r.size_modes.begin(), r.size_modes.end(), [&](const SizeMode& m) {
+        return m.relative_diameter != r.size_modes.front().relative_diameter;
+    });
+}
+
+void check_phi_target(const PackRequest& r, const PackCheckContext&) {
+    const double phi = r.phi_target;
+    if (!is_blend(r) && (!(phi > 0.0) || !(phi <= kMaxPhiTarget))) {
+        refuse("phi_target", format_number(phi),
+               "must be in (0, 0.74048] (the densest packing of equal spheres)");
+    }
+    if (is_blend(r) && (!(phi > 0.0) || !(phi < 1.0))) {
+        refuse("phi_target", format_number(phi), "must be in (0, 1) for a blend of several sizes");
+    }
+    if (phi < 1e-3) {
+        // Below this the sizing rule gives spheres smaller than the default fall step.
+        refuse("phi_target", format_number(phi),
+               "must be at least 0.001 (smaller targets give vanishing diameters)");
+    }
+}
+
+void check_size_modes(const PackRequest& r, const PackCheckContext&) {
+    if (r.size_modes.empty()) {
+        refuse("size_modes", "", "needs at least one mode");
+    }
+    double total = 0.0;
+    for (const SizeMode& m : r.size_modes) {
+        if (!(m.relative_diameter > 0.0) || !(m.fraction >= 0.0) ||
+            !std::isfinite(m.relative_diameter) || !std::isfinite(m.fraction) ||
+            (m.density && !(*m.density > 0.0 && std::isfinite(*m.density)))) {
+            refuse("size_modes", size_modes_to_string(r.size_modes),
+                   "relative diameters and densities must be positive, fractions not negative");
+        }
+        total += m.fraction;
+    }
+    if (!(total > 0.0)) {
+        refuse("size_modes", size_modes_to_string(r.size_modes),
+               "every fraction is 0: at least one must be positive");
+    }
+}
+
+void check_sweep_stages(const PackRequest& r, const PackCheckContext&) {
+    const std::vector<int>& stages = r.protocol.sweep_stages;
+    if (stages.empty()) {
+        refuse("sweep_stages", "", "needs at least one stage");
+    }
+    for (std::size_t i = 0; i < stages.size(); ++i) {
+        if (stages[i] < 3 || stages[i] > kMaxSweepPositions) {
+            refuse(stages.size() == 1 ? "sweep_positions" : "sweep_stages",
+                   stages_to_string(stages), "every stage needs 3 to 1000000 sweep positions");
+        }
+        if (i > 0 && stages[i] <= stages[i - 1]) {
+            refuse("sweep_stages", stages_to_string(stages),
+                   "stages must have strictly increasing position counts");
+        }
+    }
+}
+
+void check_fall_step(const PackRequest& r, const PackCheckContext& context) {
+    // The step fall needs a step below the smallest diameter; the exact fall ignores it.
+    const ProtocolParams& p = r.protocol;
+    if (!(p.fall_step > 0.0) || !std::isfinite(p.fall_step) ||
+        (p.fall == FallMode::Step && !(p.fall_step < context.smallest_diameter))) {
+        refuse("fall_step", format_number(p.fall_step),
+               "must be greater than 0 and less than the diameter " +
+                   format_number(context.smallest_diameter));
+    }
+}
+
+void check_relax_stages(const PackRequest& r, const PackCheckContext&) {
+    const RelaxParams& x = r.relax;
+    if (x.stages < 1 || x.stages > 10) {
+        refuse("relax_stages", std::to_string(x.stages), "must be 1 to 10");
+    }
+    if (!(x.stiffness * std::pow(x.stiffness_factor, x.stages - 1) <= 1e12)) {
+        refuse("relax_stages", std::to_string(x.stages),
+               "the last stage's stiffness must not exceed 1e12 m*g/d");
+    }
+}
+
+std::vector<Row> count_and_request_rows() {
+    std::vector<Row> rows;
+    Row count = whole(
+        "count", "count", [](auto& r) -> auto& { return r.count; },
+        "number of particles N (1 to " + std::to_string(kMaxCount) + ")",
+        [](const PackRequest& r, const PackCheckContext&) {
+            if (r.count < 1 || r.count > kMaxCount) {
+                refuse("count", std::to_string(r.count),
+                       "must be between 1 and " + std::to_string(kMaxCount));
+            }
+        });
+    count.rule = "must be a whole number between 1 and " + std::to_string(kMaxCount);
+    count.required = true;
+    rows.push_back(std::move(count));
+    rows.push_back(number(
+        "phi_target", "request", [](auto& r) -> auto& { return r.phi_target; },
+        "target packing fraction phi* in (0, 0.74048] for equal spheres, (0, 1) for a blend of "
+        "several sizes; sets the diameter by (N/3)(pi/6)d^3 = phi*",
+        check_phi_target));
+    Row arrangement;
+    arrangement.name = "arrangement";
+    arrangement.group = "request";
+    arrangement.kind = ValueKind::Choice;
+    arrangement.help =
+        "starting arrangement: single-column, small-dense, large-dense, loose-random";
+    arrangement.rule = "must be one of " + std::string(arrangement_names());
+    arrangement.parse = [](PackRequest& r, std::string_view text) {
+        const auto parsed = parse_arrangement(text);
+        if (parsed) {
+            r.arrangement = *parsed;
+        }
+        return parsed.has_value();
+    };
+    arrangement.format = [](const PackRequest& r) { return std::string(to_string(r.arrangement)); };
+    arrangement.required = true;
+    rows.push_back(std::move(arrangement));
+    Row seed;
+    seed.name = "seed";
+    seed.group = "request";
+    seed.kind = ValueKind::Integer;
+    seed.help = "random seed (colours, loose-random positions, random choices)";
+    seed.rule = seed_rule("");
+    seed.parse = [](PackRequest& r, std::string_view text) {
+        if (!seed_rule(text).empty()) {
+            return false;
+        }
+        std::from_chars(text.data(), text.data() + text.size(), r.seed);
+        return true;
+    };
+    seed.format = [](const PackRequest& r) { return std::to_string(r.seed); };
+    rows.push_back(std::move(seed));
+    Row modes;
+    modes.name = "size_modes";
+    modes.group = "request";
+    modes.kind = ValueKind::List;
+    modes.help =
+        "particle sizes as relative-diameter:fraction[:density] items, e.g. 1:0.7,0.5:0.3 "
+        "(species 1, 2, ... in this order; fractions in --fraction-basis); the scale s solves "
+        "(N/3)(pi/6) sum n_i (a_i s)^3 = phi* with number fractions n_i";
+    modes.rule = "must be positive diameter:fraction[:density] items, e.g. 1:0.7,0.5:0.3";
+    modes.parse = [](PackRequest& r, std::string_view text) {
+        auto parsed = parse_size_modes(text);
+        if (parsed) {
+            r.size_modes = std::move(*parsed);
+        }
+        return parsed.has_value();
+    };
+    modes.format = [](const PackRequest& r) { return size_modes_to_string(r.size_modes); };
+    modes.check = check_size_modes;
+    rows.push_back(std::move(modes));
+    Row distribution;
+    distribution.name = "size_distribution";
+    distribution.group = "request";
+    distribution.kind = ValueKind::Text;
+    distribution.help =
+        "size distribution as a CSV file: header diameter,fraction[,density], one row per "
+        "species (diameters in any unit; species 1, 2, ... in file order); or "
+        "lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]]: ln D normal with that median and sd, cut "
+        "at the quantiles QLO, QHI (default 0.01, 0.99) into CLASSES (default 10) species of "
+        "equal fraction, each of its class's median diameter";
+    distribution.rule = "must be lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]]";
+    // The text form only: a file is opened by the front end, which gives its text to
+    // parse_size_distribution_csv (algorithm code opens no file).
+    distribution.parse = [](PackRequest& r, std::string_view text) {
+        if (!is_lognormal(text)) {
+            return false;
+        }
+        r.size_modes = lognormal_modes(text);
+        r.size_distribution = std::string(text);
+        return true;
+    };
+    distribution.format = [](const PackRequest& r) { return r.size_distribution; };
+    distribution.recorded = [](const PackRequest& r) { return !r.size_distribution.empty(); };
+    distribution.unset_by_default = true;
+    rows.push_back(std::move(distribution));
+    Row basis = choice(
+        "fraction_basis", "request", [](auto& r) -> auto& { return r.fraction_basis; },
+        [] { return fraction_bases(); },
+        "what the fractions of --size-modes or --size-distribution are: number, volume or mass "
+        "(mass needs densities)");
+    basis.recorded = [](const PackRequest& r) {
+        return r.fraction_basis != FractionBasis::Number || !r.size_distribution.empty();
+    };
+    basis.check = [](const PackRequest& r, const PackCheckContext&) {
+        (void)number_fractions(r.size_modes, r.fraction_basis);  // mass needs every density
+    };
+    rows.push_back(std::move(basis));
+    return rows;
+}
+
+void add_protocol_rows(std::vector<Row>& rows) {
+    const std::string g = "protocol";
+    rows.push_back(number(
+        "circle_factor", g, [](auto& r) -> auto& { return r.protocol.circle_factor; },
+        "circle factor F > 1: sweep radius = d/F (length units of the control volume)",
+        [](const PackRequest& r, const PackCheckContext&) {
+            const double f = r.protocol.circle_factor;
+            if (!(f > 1.0) || !std::isfinite(f)) {
+                refuse("circle_factor", format_number(f),
+                       "must be a number greater than 1 (sweep radius = d / factor)");
+            }
+        }));
+    Row positions = whole("sweep_positions", g,
+                          [](auto& r) -> auto& { return r.protocol.sweep_stages.front(); },
+                          "positions tested on the sweep circle (>= 3; 120 = every 3 degrees)", {});
+    positions.parse = [](PackRequest& r, std::string_view text) {
+        const auto n = parse_whole<int>(text);
+        if (n) {
+            r.protocol.sweep_stages = {*n};  // sweep_stages, later in the table, overrides it
+        }
+        return n.has_value();
+    };
+    positions.recorded = [](const PackRequest&) { return false; };  // as sweep_stages
+    rows.push_back(std::move(positions));
+    Row stages;
+    stages.name = "sweep_stages";
+    stages.group = g;
+    stages.kind = ValueKind::List;
+    stages.help =
+        "multi-stage sweep, increasing counts such as 8,120,720: a stage is tried only when the "
+        "previous one found no free position (overrides --sweep-positions)";
+    stages.rule = "must be comma-separated whole numbers, e.g. 8,120,720";
+    stages.parse = [](PackRequest& r, std::string_view text) {
+        auto parsed = parse_stages(text);
+        if (parsed) {
+            r.protocol.sweep_stages = std::move(*parsed);
+        }
+        return parsed.has_value();
+    };
+    stages.format = [](const PackRequest& r) { return stages_to_string(r.protocol.sweep_stages); };
+    stages.check = check_sweep_stages;
+    stages.unset_by_default = true;
+    rows.push_back(std::move(stages));
+    rows.push_back(whole(
+        "lower_neighbours", g, [](auto& r) -> auto& { return r.protocol.lower_neighbours; },
+        "size of the lower columnar neighbour list (>= 1; recorded, does not change results: "
+        "the fall scans the whole column below)",
+        at_least_one("lower_neighbours",
+                     [](const PackRequest& r) { return r.protocol.lower_neighbours; })));
+    rows.push_back(choice(
+        "gap", g, [](auto& r) -> auto& { return r.protocol.gap; }, [] { return gap_rules(); },
+        "free arc to move toward: largest | random"));
+    rows.push_back(choice(
+        "fall", g, [](auto& r) -> auto& { return r.protocol.fall; }, [] { return fall_modes(); },
+        "fall mode: exact (jump to the first contact; ends touching) | step (thesis steps of "
+        "--fall-step; ends less than one step above the contact)"));
+    rows.push_back(number(
+        "fall_step", g, [](auto& r) -> auto& { return r.protocol.fall_step; },
+        "downward increment of the step fall, 0 < step < d (control-volume units)",
+        check_fall_step));
+    rows.push_back(choice(
+        "contact", g, [](auto& r) -> auto& { return r.protocol.contact; },
+        [] { return contact_models(); },
+        "contact model for resting particles: none | settle (drop onto the support and roll "
+        "down over it to a second contact) | roll (roll on down to a stable rest on three "
+        "spheres, or the floor or a wall)"));
+    rows.push_back(number(
+        "momentum", g, [](auto& r) -> auto& { return r.protocol.momentum; },
+        "momentum weight m in [0, 1): move toward (1-m)*bisector + m*previous move",
+        [](const PackRequest& r, const PackCheckContext&) {
+            const double m = r.protocol.momentum;
+            if (!(m >= 0.0) || !(m < 1.0)) {
+                refuse("momentum", format_number(m), "must be in [0, 1)");
+            }
+        }));
+    rows.push_back(choice(
+        "walls", g, [](auto& r) -> auto& { return r.protocol.walls; }, [] { return wall_rules(); },
+        "side walls: fix (a particle a move brings to a wall stops there, thesis) | block (walls "
+        "are obstacles like particles)"));
+    rows.push_back(whole(
+        "stall_moves", g, [](auto& r) -> auto& { return r.protocol.stall_moves; },
+        "a particle making this many consecutive moves without falling rests (>= 1)",
+        at_least_one("stall_moves", [](const PackRequest& r) { return r.protocol.stall_moves; })));
+    rows.push_back(whole(
+        "max_moves", g, [](auto& r) -> auto& { return r.protocol.max_moves; },
+        "bound on sweep-and-move cycles per particle (>= 1); a particle reaching it rests where "
+        "its last fall left it",
+        at_least_one("max_moves", [](const PackRequest& r) { return r.protocol.max_moves; })));
+}
+
+void add_relax_rows(std::vector<Row>& rows) {
+    const std::string g = "relax";
+    const std::size_t first = rows.size();
+    rows.push_back(choice(
+        "relax", g, [](auto& r) -> auto& { return r.relax.mode; }, [] { return relax_modes(); },
+        "after deposition: none | frictionless (relax the whole pack under gravity to an "
+        "equilibrium of frictionless soft spheres by FIRE energy minimisation, then settle it as "
+        "hard spheres into a certified equilibrium by linear programming; slow: about 15 s at "
+        "N = 1002) | frictional (the same with Coulomb friction at --relax-friction: "
+        "tangential springs capped at mu*F_n, then a frictional hard-sphere settling into a "
+        "certified equilibrium; slower still)"));
+    rows.push_back(number(
+        "relax_stiffness", g, [](auto& r) -> auto& { return r.relax.stiffness; },
+        "contact stiffness k of the first relaxation stage in m*g/d (a contact carrying one "
+        "weight m*g overlaps by d/k)",
+        in_range(
+            "relax_stiffness", [](const PackRequest& r) { return r.relax.stiffness; }, 1e2, 1e12,
+            "must be in [100, 1e12] (m*g/d)")));
+    rows.push_back(number(
+        "relax_stiffness_factor", g, [](auto& r) -> auto& { return r.relax.stiffness_factor; },
+        "each later relaxation stage multiplies the stiffness by this factor",
+        in_range(
+            "relax_stiffness_factor", [](const PackRequest& r) { return r.relax.stiffness_factor; },
+            1.0, 1e6, "must be in [1, 1e6]")));
+    rows.push_back(whole(
+        "relax_stages", g, [](auto& r) -> auto& { return r.relax.stages; },
+        "number of stiffness stages (1 to 10)", check_relax_stages));
+    rows.push_back(number(
+        "relax_shell", g, [](auto& r) -> auto& { return r.relax.shell; },
+        "contact shell s in [0, 0.01]: the soft spheres are (1+s) times the real ones, so soft "
+        "contacts end as gaps of at most s*(ri+rj); 0: contacts end touching",
+        in_range(
+            "relax_shell", [](const PackRequest& r) { return r.relax.shell; }, 0.0, 0.01,
+            "must be in [0, 0.01]")));
+    rows.push_back(number(
+        "relax_force_tolerance", g, [](auto& r) -> auto& { return r.relax.force_tolerance; },
+        "a stage has converged when no sphere feels a net force above this, in m*g (m the mass "
+        "of a sphere of relative size 1)",
+        [](const PackRequest& r, const PackCheckContext&) {
+            const double t = r.relax.force_tolerance;
+            if (!(t > 0.0) || !(t <= 1.0)) {
+                refuse("relax_force_tolerance", format_number(t), "must be in (0, 1] (m*g)");
+            }
+        }));
+    rows.push_back(number(
+        "relax_time", g, [](auto& r) -> auto& { return r.relax.time; },
+        "bound on the first stage's simulated time, in units of sqrt(H/g) (H: the pack's height "
+        "above the floor)",
+        [](const PackRequest& r, const PackCheckContext&) {
+            if (!(r.relax.time > 0.0) || !(r.relax.time <= 1e4)) {
+                refuse("relax_time", format_number(r.relax.time), "must be in (0, 10000]");
+            }
+        }));
+    rows.push_back(number(
+        "relax_crossings", g, [](auto& r) -> auto& { return r.relax.crossings; },
+        "bound on each later stage's steps, in units of H/d (the elastic relaxation crosses the "
+        "pack's height); the pack records the force left (relax_force_max)",
+        [](const PackRequest& r, const PackCheckContext&) {
+            if (!(r.relax.crossings > 0.0) || !(r.relax.crossings <= 1e4)) {
+                refuse("relax_crossings", format_number(r.relax.crossings),
+                       "must be in (0, 10000]");
+            }
+        }));
+    rows.push_back(whole(
+        "relax_settle_limit", g, [](auto& r) -> auto& { return r.relax.settle_limit; },
+        "bound on the LP iterations of the hard-sphere settling that ends the relaxation (1 to "
+        "1000000); a pack that reaches it is usually not a certified equilibrium",
+        [](const PackRequest& r, const PackCheckContext&) {
+            if (r.relax.settle_limit < 1 || r.relax.settle_limit > 1000000) {
+                refuse("relax_settle_limit", std::to_string(r.relax.settle_limit),
+                       "must be between 1 and 1000000");
+            }
+        }));
+    for (std::size_t i = first; i < rows.size(); ++i) {
+        rows[i].recorded = relaxed;
+    }
+    Row friction = number(
+        "relax_friction", g, [](auto& r) -> auto& { return r.relax.friction; },
+        "sliding friction mu of --relax frictional (pairs and walls), in [0, 10]; the DEM "
+        "frictional class's own mu, untuned",
+        in_range(
+            "relax_friction", [](const PackRequest& r) { return r.relax.friction; }, 0.0, 10.0,
+            "must be in [0, 10]"));
+    friction.recorded = frictional;
+    rows.push_back(std::move(friction));
+    Row tangential = number(
+        "relax_tangential_ratio", g, [](auto& r) -> auto& { return r.relax.tangential_ratio; },
+        "tangential over normal contact stiffness of --relax frictional, in (0, 1]",
+        [](const PackRequest& r, const PackCheckContext&) {
+            const double t = r.relax.tangential_ratio;
+            if (!(t > 0.0) || !(t <= 1.0)) {
+                refuse("relax_tangential_ratio", format_number(t), "must be in (0, 1]");
+            }
+        });
+    tangential.recorded = frictional;
+    rows.push_back(std::move(tangential));
+}
+
+std::vector<Row> make_rows() {
+    std::vector<Row> rows = count_and_request_rows();
+    add_protocol_rows(rows);
+    add_relax_rows(rows);
+    return rows;
+}
+
+}  // namespace
+
+const std::vector<PackParameter>& pack_parameters() {
+    static const std::vector<PackParameter> rows = make_rows();
+    return rows;
+}
+
+const PackParameter* find_pack_parameter(std::string_view name) {
+    return find_row(pack_parameters(), name);
+}
+
+void set_pack_parameter(PackRequest& request, std::string_view name, std::string_view text) {
+    const PackParameter* row = find_pack_parameter(name);
+    if (row == nullptr) {
+        throw ParameterError(std::string(name), std::string(text), "is not a pack parameter");
+    }
+    if (!row->parse(request, text)) {
+        throw ParameterError(row->name, std::string(text), row->rule);
+    }
+}
+
+void record_pack_parameters(const PackRequest& request, std::string_view group,
+                            Metadata& metadata) {
+    for (const PackParameter& row : pack_parameters()) {
+        if (row.group == group && (!row.recorded || row.recorded(request))) {
+            metadata.set(row.name, row.format(request));
+        }
+    }
+}
+
+void check_pack_parameters(const PackRequest& request, std::string_view group,
+                           const PackCheckContext& context) {
+    for (const PackParameter& row : pack_parameters()) {
+        if (row.group == group && row.check) {
+            row.check(request, context);
+        }
+    }
+}
+
+}  // namespace sgmp::engine

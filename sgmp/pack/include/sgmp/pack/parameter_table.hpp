@@ -1,0 +1,115 @@
+#pragma once
+/// @file parameter_table.hpp
+/// A request struct's parameter table: one row per parameter, with its name, how its value
+/// is typed, parsed from text, formatted as text and checked, and its help. The command
+/// line, batch grids, Python keywords, config files, the pack header's record and the
+/// request's validation all iterate over the same rows, so each parameter is spelled once.
+///
+/// Names are snake_case, as pack headers, batch summaries, Python keywords and config files
+/// spell them; the command line spells `name` as `--name` with dashes (option_name).
+/// Formatting is exact: a number is written as the shortest text that reads back to the
+/// same double (format_number), so parse(format(r)) gives r's value again.
+#include <algorithm>
+#include <charconv>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+namespace sgmp {
+
+/// How a parameter's value is typed: it decides how a front end converts its own values
+/// (a Python float, a batch grid entry) to the row's text.
+enum class ValueKind {
+    Number,   ///< a real number ("must be a number" when the text is not one)
+    Integer,  ///< a whole number
+    Choice,   ///< one name of a name table
+    List,     ///< comma-separated items (its batch values are given one per option)
+    Text,     ///< any other text
+};
+
+/// One parameter of the struct `Request`; `Context` is what its check needs beyond the
+/// request (for example a diameter the request implies).
+template <class Request, class Context>
+struct ParameterRow {
+    std::string name;   ///< snake_case
+    std::string group;  ///< which part of the request it belongs to (rows are recorded by group)
+    ValueKind kind = ValueKind::Number;
+    std::string help;
+    /// What a value must look like, said when `parse` refuses it ("must be a number").
+    std::string rule;
+    /// Sets the value in the request; false when the text is not a value of this parameter.
+    std::function<bool(Request&, std::string_view)> parse;
+    /// The value as text, as the pack header records it.
+    std::function<std::string(const Request&)> format;
+    /// Throws ParameterError (name, value, rule) when the value breaks its rule; empty when
+    /// parsing is the only rule.
+    std::function<void(const Request&, const Context&)> check{};
+    /// Whether the header records the value (empty: always).
+    std::function<bool(const Request&)> recorded{};
+    /// A value must be given: there is no default (the command line requires it).
+    bool required = false;
+    /// Unset by default: an empty value leaves the request as it is.
+    bool unset_by_default = false;
+};
+
+/// The command line's spelling of a snake_case name: "--phi-target".
+inline std::string option_name(std::string_view name) {
+    std::string option = "--" + std::string(name);
+    std::replace(option.begin() + 2, option.end(), '_', '-');
+    return option;
+}
+
+/// The row named `name` (snake_case, or kebab-case with or without leading dashes), or
+/// nullptr.
+template <class Row>
+const Row* find_row(const std::vector<Row>& rows, std::string_view name) {
+    std::string key(name.substr(name.rfind("--") == 0 ? 2 : 0));
+    std::replace(key.begin(), key.end(), '-', '_');
+    const auto found =
+        std::find_if(rows.begin(), rows.end(), [&](const Row& row) { return row.name == key; });
+    return found == rows.end() ? nullptr : &*found;
+}
+
+/// The whole text as a double (std::from_chars: "1e3", "inf" and "nan" read; "1,5" does not).
+inline std::optional<double> parse_real(std::string_view text) {
+    double value = 0.0;
+    const char* end = text.data() + text.size();
+    const auto result = std::from_chars(text.data(), end, value);
+    if (text.empty() || result.ec != std::errc() || result.ptr != end) {
+        return std::nullopt;
+    }
+    return value;
+}
+
+/// The whole text as a whole number of type T. A number beyond T's range is clamped to it,
+/// so the row's check, not a wrap, refuses it.
+template <class T>
+std::optional<T> parse_whole(std::string_view text) {
+    static_assert(std::is_integral_v<T>);
+    long long value = 0;
+    const char* end = text.data() + text.size();
+    const auto result = std::from_chars(text.data(), end, value);
+    if (text.empty() || result.ptr != end) {
+        return std::nullopt;
+    }
+    if (result.ec == std::errc::result_out_of_range) {
+        return text.front() == '-' ? std::numeric_limits<T>::min() : std::numeric_limits<T>::max();
+    }
+    if (result.ec != std::errc()) {
+        return std::nullopt;
+    }
+    if (std::is_unsigned_v<T> && value < 0) {
+        return std::nullopt;
+    }
+    using Wide = std::conditional_t<std::is_unsigned_v<T>, unsigned long long, long long>;
+    const Wide wide = static_cast<Wide>(value);
+    return static_cast<T>(std::clamp<Wide>(wide, static_cast<Wide>(std::numeric_limits<T>::min()),
+                                           static_cast<Wide>(std::numeric_limits<T>::max())));
+}
+
+}  // namespace sgmp

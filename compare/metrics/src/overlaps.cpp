@@ -2,17 +2,10 @@
 
 #include <algorithm>
 
-#include "sgmp/metrics/kd_columns.hpp"
-#include "sgmp/metrics/pair_kernels.hpp"
-#include "sgmp/metrics/parallel.hpp"
 #include "sgmp/pack/pack_overlaps.hpp"
 
 namespace sgmp::metrics {
 namespace {
-
-// Grid columns per parallel work item: fixed, so the depth sums do not depend on the
-// thread count.
-constexpr std::size_t kColumnsPerChunk = 16;
 
 struct Tally {
     std::int64_t count = 0;
@@ -25,19 +18,6 @@ struct Tally {
     bool has_cutoff = false;
     OverlapRecord cutoff{};
 };
-
-void keep_worst(std::vector<OverlapRecord>& records, std::size_t limit);
-
-void merge(Tally& total, const Tally& part, std::size_t limit) {
-    total.count += part.count;
-    total.count_any += part.count_any;
-    total.sum += part.sum;
-    total.max = std::max(total.max, part.max);
-    total.worst.insert(total.worst.end(), part.worst.begin(), part.worst.end());
-    if (total.worst.size() > 4 * limit + 16) {
-        keep_worst(total.worst, limit);
-    }
-}
 
 bool deeper(const OverlapRecord& a, const OverlapRecord& b) {
     if (a.depth_over_d != b.depth_over_d) {
@@ -99,75 +79,28 @@ OverlapSummary summarise(Tally tally, std::size_t limit) {
     return summary;
 }
 
-/// Every pair once, from its earlier member in the kd-tree columns of side 2·r_max
-/// over all centres (KdColumns::for_each_column), searched within 2·r_max: an overlap
-/// needs |c_i − c_j| < r_i + r_j. The depth is computed as the pack library's overlap
-/// search does, so the same pairs count.
-Tally pair_overlaps(const std::vector<Particle>& particles, double mean_diameter, double floor,
-                    std::size_t limit) {
-    const double r_max = max_radius(particles);
-    if (particles.size() < 2 || !(r_max > 0.0)) {
-        return {};
-    }
-    const double reach = 2.0 * r_max;
-    const bool equal = std::all_of(particles.begin(), particles.end(),
-                                   [&](const Particle& p) { return p.radius == r_max; });
-    const KdColumns grid(particles, reach);
-    const double reach_squared = reach * reach * (1.0 + 1e-9);  // the exact test decides
-    return chunked_reduce(
-        grid.columns(), kColumnsPerChunk, Tally{},
-        [&](Tally& tally, std::size_t first, std::size_t last) {
-            for (std::size_t column = first; column < last; ++column) {
-                const std::size_t begin = grid.column_begin(column);
-                const std::size_t end = grid.column_begin(column + 1);
-                if (begin == end) {
-                    continue;
-                }
-                grid.for_each_column(
-                    grid.footprint(begin, end), reach, column,
-                    [&](std::size_t c, std::size_t from, std::size_t to, double half) {
-                        for_each_pair_within(
-                            grid.x.data(), grid.y.data(), grid.z.data(), begin, end, grid.x.data(),
-                            grid.y.data(), grid.z.data(), from, to, half, c == column,
-                            reach_squared, [&](std::size_t p, std::size_t m, double) {
-                                // The grid's copies of the centres (in cache) and, for equal
-                                // spheres, the one radius: the same doubles as the particles'.
-                                const Vec3 ca(grid.x[p], grid.y[p], grid.z[p]);
-                                const Vec3 cb(grid.x[m], grid.y[m], grid.z[m]);
-                                const double ra = equal ? r_max : particles[grid.index[p]].radius;
-                                const double rb = equal ? r_max : particles[grid.index[m]].radius;
-                                const double depth = ra + rb - (ca - cb).norm();
-                                if (depth > 0.0) {
-                                    add_depth(tally, depth / mean_diameter, floor, limit, [&] {
-                                        const std::int64_t ia = particles[grid.index[p]].id;
-                                        const std::int64_t ib = particles[grid.index[m]].id;
-                                        return OverlapRecord{std::min(ia, ib), std::max(ia, ib),
-                                                             depth / mean_diameter};
-                                    });
-                                }
-                            });
-                    });
-            }
-        },
-        [&](Tally& total, const Tally& part) { merge(total, part, limit); });
-}
-
 }  // namespace
 
 OverlapStats measure_overlaps(const std::vector<Particle>& particles, const Container& container,
                               double mean_diameter, double floor, std::size_t worst_count) {
+    Tally pairs;
     Tally walls;
-    for (std::size_t i = 0; i < particles.size(); ++i) {
-        const double depth = container.penetration(particles[i].center, particles[i].radius);
-        if (depth > 0.0) {
+    for_each_overlap(
+        particles, container,
+        [&](std::size_t i, std::size_t j, double depth) {
+            add_depth(pairs, depth / mean_diameter, floor, worst_count, [&] {
+                const std::int64_t a = particles[i].id;
+                const std::int64_t b = particles[j].id;
+                return OverlapRecord{std::min(a, b), std::max(a, b), depth / mean_diameter};
+            });
+        },
+        [&](std::size_t i, double depth) {
             add(walls, OverlapRecord{particles[i].id, -1, depth / mean_diameter}, floor,
                 worst_count);
-        }
-    }
+        });
     OverlapStats stats;
     stats.floor = floor;
-    stats.pairs =
-        summarise(pair_overlaps(particles, mean_diameter, floor, worst_count), worst_count);
+    stats.pairs = summarise(std::move(pairs), worst_count);
     stats.walls = summarise(std::move(walls), worst_count);
     return stats;
 }

@@ -1,8 +1,9 @@
 #pragma once
 /// @file kd_columns.hpp
-/// The comparison's neighbour search for its pair passes (overlaps, Z(δ), g(r), the split
-/// ratio, Q6): CGAL's kd-tree (Spatial_searching, Kd_tree with the Sliding_midpoint
-/// splitter) over the centres' (x, y), whose leaves are whole columns of centres.
+/// The comparison's neighbour search for its pair passes (Z(δ), g(r), the split ratio, Q6;
+/// overlaps are counted by the project's one overlap search, sgmp/pack/pack_overlaps.hpp):
+/// CGAL's kd-tree (Spatial_searching, Kd_tree with the Sliding_midpoint splitter) over the
+/// centres' (x, y), whose leaves are whole columns of centres.
 ///
 /// Each leaf of the tree is one column: its centres are stored contiguously, sorted by z
 /// (then index), as structure-of-arrays (x, y, z, index), columns in the tree's order

@@ -35,10 +35,9 @@ struct OverlapStats {
     OverlapSummary walls;
 };
 
-/// Overlaps between all particles and against the container: the pairs and depths of the
-/// pack library's overlap search (sgmp/pack/pack_overlaps.hpp), found on the kd-tree columns
-/// (kd_columns.hpp) in parallel work items of fixed size (so the depth sum is the same for any
-/// thread count).
+/// Overlaps between all particles and against the container, found by the project's one
+/// overlap search (sgmp/pack/pack_overlaps.hpp: every part counts the same pairs at the same
+/// depths), summed in its fixed order.
 OverlapStats measure_overlaps(const std::vector<Particle>& particles, const Container& container,
                               double mean_diameter, double floor, std::size_t worst_count);
 

@@ -9,9 +9,6 @@ void add_launcher_options(CLI::App& command, PourRequest& request) {
                     "MPI as root), srun (-n K), or a command line with {np}, e.g. 'mpiexec -n "
                     "{np}'")
         ->capture_default_str();
-    command.add_option("--processors", request.parameters.processors,
-                       "LIGGGHTS processor grid PX,PY,PZ (PX*PY*PZ = --ranks; default: chosen "
-                       "from the container, y never split)");
 }
 
 }  // namespace sgmp::reference

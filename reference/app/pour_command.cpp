@@ -1,11 +1,12 @@
 #include "pour_command.hpp"
 
 #include "launcher_options.hpp"
-#include "physics_options.hpp"
+#include "pour_parameter_options.hpp"
 
 #include <cstdio>
 #include <iostream>
 
+#include "sgmp/cli/parameter_options.hpp"
 #include "sgmp/cli/run_main.hpp"
 #include "sgmp/engine/arrangement.hpp"
 #include "sgmp/engine/make_pack.hpp"
@@ -42,24 +43,8 @@ CLI::App* add_pour_command(CLI::App& app, PourOptions& o) {
     CLI::App* cmd = app.add_subcommand(
         "pour", "Pour N equal spheres into the container and write the settled pack.");
     PourParams& p = o.request.parameters;
-    cmd->add_option("--count", p.count,
-                    "Number of spheres N; d follows the sizing rule "
-                    "(N/3)(pi/6)d^3 = phi_target")
-        ->required()
-        ->check([](const std::string& text) { return count_rule(text, kMaxCount); });
-    cmd->add_option("--seed", p.seed,
-                    "Seed of the LIGGGHTS insertion and the colour "
-                    "labels (integer)")
-        ->required()
-        ->check([](const std::string& text) { return sgmp::seed_rule(text); });
-    cmd->add_option("--friction", p.friction,
-                    "Sliding friction coefficient mu, particles and walls")
-        ->capture_default_str();
+    add_pour_parameter_options(*cmd, p, o.refused, {}, {"count", "seed"});
     cmd->add_option("--out", o.out, "Output pack file (extended XYZ; .gz compresses)")->required();
-    cmd->add_option("--ranks", p.ranks,
-                    "MPI ranks; above 1 runs LIGGGHTS under --launcher with a processor grid "
-                    "chosen from the container (PY = 1: x and z split, never the fall)")
-        ->capture_default_str();
     add_launcher_options(*cmd, o.request);
     cmd->add_option("--timeout", o.timeout, "Wall-clock limit in seconds; 0 means none")
         ->capture_default_str()
@@ -75,30 +60,10 @@ CLI::App* add_pour_command(CLI::App& app, PourOptions& o) {
                        ? std::string()
                        : "must be one of " + std::string(sgmp::engine::arrangement_names());
         });
-    cmd->add_option("--start-jitter", p.start_jitter,
-                    "With --from-arrangement: move each sphere horizontally by a random "
-                    "offset up to this fraction of d (no overlaps created), which breaks "
-                    "symmetries DEM keeps for ever (a single column lands as a tower)")
-        ->capture_default_str();
     cmd->add_flag("--force", o.force, "Overwrite an existing output file");
     cmd->add_option("--keep-work", o.keep_work,
                     "Run in this directory and keep it (input script, log, dump); "
                     "default: a temporary directory, removed afterwards");
-    cmd->add_option("--tangential-damping", o.tangential_damping,
-                    "Viscous damping of the tangential contact spring, on or off (off for "
-                    "exactly frictionless pours: at mu = 0 it still turns the spheres)")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"on", "off"}));
-    add_physics_options(*cmd, p);
-    cmd->add_option("--max-time", p.max_time,
-                    "Simulated seconds allowed before the pour counts as not settled "
-                    "(the step cap)")
-        ->capture_default_str();
-    cmd->add_option("--cloud-fraction", p.cloud_fraction,
-                    "Solid fraction of the starting cloud (sets its height)")
-        ->capture_default_str();
-    cmd->add_option("--phi-target", p.phi_target, "Target packing fraction phi* of the sizing rule")
-        ->capture_default_str();
     cmd->add_option("--liggghts", o.request.liggghts, "LIGGGHTS program (name on PATH or path)")
         ->capture_default_str();
     cmd->add_flag("--quiet", o.quiet, "No progress on stderr");
@@ -109,7 +74,7 @@ int run_pour(PourOptions& o, const PourObserver& observer, const std::function<b
              const std::function<void()>& finish) {
     PourRequest& request = o.request;
     PourParams& p = request.parameters;
-    p.tangential_damping = o.tangential_damping == "on";
+    cli::throw_refused(o.refused);
     p.validate();
     try {
         check_writable(o.out, o.force);

@@ -5,6 +5,7 @@
 /// an SGMP starting arrangement, written as a pack file.
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "sgmp/reference/pour.hpp"
@@ -16,10 +17,11 @@ struct PourOptions {
     std::string out;
     std::string keep_work;
     std::string arrangement;
-    std::string tangential_damping = "on";
     double timeout = 0.0;
     bool force = false;
     bool quiet = false;
+    /// The first parameter value refused while parsing (cli::throw_refused).
+    std::optional<std::string> refused;
 };
 
 /// Adds the `pour` subcommand with its options to `app`.

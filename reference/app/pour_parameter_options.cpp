@@ -1,34 +1,23 @@
-#include "physics_options.hpp"
+#include "pour_parameter_options.hpp"
+
+#include "sgmp/cli/parameter_options.hpp"
+#include "sgmp/reference/pour_parameters.hpp"
 
 namespace sgmp::reference {
 
-void add_physics_options(CLI::App& command, PourParams& p) {
-    command.add_option("--restitution", p.restitution, "Normal coefficient of restitution e")
-        ->capture_default_str();
-    command
-        .add_option("--rolling-friction", p.rolling_friction,
-                    "Rolling friction coefficient (constant directional torque)")
-        ->capture_default_str();
-    command
-        .add_option("--youngs-modulus", p.youngs_modulus,
-                    "Young's modulus E in Pa (must exceed 5e6)")
-        ->capture_default_str();
-    command.add_option("--poisson-ratio", p.poisson_ratio, "Poisson's ratio nu")
-        ->capture_default_str();
-    command.add_option("--density", p.density, "Particle density in kg/m^3")->capture_default_str();
-    command.add_option("--gravity", p.gravity, "Gravitational acceleration in m/s^2 (along -Y)")
-        ->capture_default_str();
-    command
-        .add_option("--timestep-fraction", p.timestep_fraction,
-                    "Time step as a fraction of the Rayleigh time")
-        ->capture_default_str();
-    command
-        .add_option("--settle-threshold", p.settle_threshold,
-                    "Settled when the translational kinetic energy per particle stays "
-                    "below this times m g d at two consecutive checks")
-        ->capture_default_str();
-    command.add_option("--check-time", p.check_time, "Simulated seconds between settling checks")
-        ->capture_default_str();
+void add_pour_parameter_options(CLI::App& command, PourParams& parameters,
+                                std::optional<std::string>& refused,
+                                const std::set<std::string>& names,
+                                const std::set<std::string>& required) {
+    for (const PourParameter& row : pour_parameters()) {
+        if (!names.empty() && names.count(row.name) == 0) {
+            continue;
+        }
+        CLI::Option* option = cli::add_parameter_option(command, row, parameters, refused);
+        if (required.count(row.name) != 0) {
+            option->required();
+        }
+    }
 }
 
 }  // namespace sgmp::reference

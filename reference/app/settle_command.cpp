@@ -1,8 +1,8 @@
 #include "settle_command.hpp"
 
 #include "launcher_options.hpp"
-#include "physics_options.hpp"
 #include "pour_command.hpp"
+#include "pour_parameter_options.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -11,6 +11,7 @@
 #include <new>
 #include <numbers>
 
+#include "sgmp/cli/parameter_options.hpp"
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/pack/parameter_error.hpp"
@@ -60,23 +61,18 @@ CLI::App* add_settle_command(CLI::App& app, SettleOptions& o) {
     cmd->add_option("pack", o.input, "Pack file to start from (extended XYZ or dump custom)")
         ->required()
         ->check(CLI::ExistingFile);
-    cmd->add_option("--friction", p.friction,
-                    "Sliding friction coefficient mu, particles and walls")
-        ->required();
+    // The pack gives the count, phi* and seed; the start is the pack itself.
+    add_pour_parameter_options(
+        *cmd, p, o.refused,
+        {"friction", "tangential_damping", "restitution", "rolling_friction", "youngs_modulus",
+         "poisson_ratio", "density", "gravity", "timestep_fraction", "settle_threshold",
+         "check_time", "max_time", "ranks", "processors"},
+        {"friction"});
     cmd->add_option("--out", o.out, "Output pack file (extended XYZ; .gz compresses)")->required();
-    cmd->add_option("--tangential-damping", o.tangential_damping,
-                    "Viscous damping of the tangential contact spring, on or off")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"on", "off"}));
-    cmd->add_option("--ranks", p.ranks, "MPI ranks (under --launcher)")->capture_default_str();
     add_launcher_options(*cmd, o.request);
     cmd->add_option("--timeout", o.timeout, "Wall-clock limit in seconds; 0 means none")
         ->capture_default_str()
         ->check(CLI::NonNegativeNumber);
-    cmd->add_option("--max-time", p.max_time,
-                    "Simulated seconds allowed before the run counts as not settled")
-        ->capture_default_str();
-    add_physics_options(*cmd, p);
     cmd->add_option("--keep-work", o.keep_work, "Run in this directory and keep it");
     cmd->add_option("--liggghts", o.request.liggghts, "LIGGGHTS program (name on PATH or path)")
         ->capture_default_str();
@@ -89,7 +85,7 @@ int run_settle(SettleOptions& o, const PourObserver& observer,
                const std::function<bool()>& should_stop, const std::function<void()>& finish) {
     PourRequest& request = o.request;
     PourParams& p = request.parameters;
-    p.tangential_damping = o.tangential_damping == "on";
+    cli::throw_refused(o.refused);
     Pack input;
     try {
         input = read_pack_file(o.input);

@@ -8,6 +8,7 @@
 /// `start=pack`, `start_pack` (the file name) and `start_generator`.
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "sgmp/reference/pour.hpp"
@@ -18,11 +19,12 @@ struct SettleOptions {
     std::string input;
     std::string out;
     std::string keep_work;
-    std::string tangential_damping = "on";
     double timeout = 0.0;
     bool force = false;
     bool quiet = false;
     PourRequest request;
+    /// The first parameter value refused while parsing (cli::throw_refused).
+    std::optional<std::string> refused;
 };
 
 /// Adds the `settle` subcommand with its options to `app`.

@@ -1,4 +1,5 @@
 #include "sgmp/reference/pour.hpp"
+#include "sgmp/reference/pour_parameters.hpp"
 
 #include <signal.h>
 #include <stdlib.h>
@@ -350,39 +351,28 @@ void record(Metadata& m, const PourRequest& request, const PourLog& log, const P
     m.set("generator", "liggghts");
     m.set("version", version());
     m.set("liggghts_version", log.liggghts_version.empty() ? "unknown" : log.liggghts_version);
-    m.set_integer("count", static_cast<long long>(p.count));
+    record_pour_parameters(p, "count", m);
     m.set_number("diameter", p.diameter());
-    m.set_number("phi_target", p.phi_target);
-    m.set_number("friction", p.friction);
-    m.set_integer("seed", static_cast<long long>(p.seed));
+    record_pour_parameters(p, "identity", m);
     m.set("start", request.start ? "arrangement" : "cloud");
     if (request.start) {
         m.set("arrangement", request.start->name);
-        m.set_number("start_jitter", p.start_jitter);
-    } else {
-        m.set_number("cloud_fraction", p.cloud_fraction);
     }
+    record_pour_parameters(p, "start", m);
     m.set("contact_model", std::string("hertz tangential_history rolling_friction_cdt") +
                                (p.tangential_damping ? "" : " no_tangential_damping"));
-    m.set_number("restitution", p.restitution);
-    m.set_number("rolling_friction", p.rolling_friction);
-    m.set_number("youngs_modulus_pa", p.youngs_modulus);
-    m.set_number("poisson_ratio", p.poisson_ratio);
-    m.set_number("density_kg_m3", p.density);
-    m.set_number("gravity_m_s2", p.gravity);
+    record_pour_parameters(p, "material", m);
     m.set_number("metres_per_unit", kMetresPerUnit);
     m.set_number("timestep_s", log.timestep.value_or(0.0));
     m.set_number("rayleigh_time_s", log.rayleigh_time.value_or(0.0));
-    m.set_number("timestep_fraction", p.timestep_fraction);
-    m.set_number("settle_threshold", p.settle_threshold);
-    m.set_number("check_time_s", p.check_time);
+    record_pour_parameters(p, "numerics", m);
     m.set_integer("step_cap", log.step_cap.value_or(0));
     m.set_integer("steps", log.steps);
     m.set_number("settling_measure", log.ke_ratio);
     m.set_number("max_overlap_over_d", r.max_overlap_over_d);
     m.set_number("max_wall_penetration_over_d", r.max_wall_penetration_over_d);
     m.set_number("phi_control_volume", r.phi_control_volume);
-    m.set_integer("ranks", p.ranks);
+    record_pour_parameters(p, "parallel", m);
     m.set("processor_grid", processor_grid(p));
     m.set("liggghts_seeds", std::to_string(seeds.particle_template) + " " +
                                 std::to_string(seeds.distribution) + " " +

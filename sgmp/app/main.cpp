@@ -19,6 +19,7 @@
 #include "config_file.hpp"
 #include "convert_command.hpp"
 #include "render_command.hpp"
+#include "sgmp/cli/parameter_options.hpp"
 #include "sgmp/cli/progress_line.hpp"
 #include "sgmp/cli/run_main.hpp"
 #include "sgmp/engine/make_pack.hpp"
@@ -56,36 +57,13 @@ struct Options {
 
 using cli::UsageError;
 
-/// The option of one row of the pack parameter table: its value is parsed into the request
-/// by the row, and a value the row refuses is kept in `refused` as "--NAME VALUE: RULE".
+/// The option of one row of the pack parameter table (cli::add_parameter_option);
 /// --size-distribution is kept as typed: a file is read by to_request.
 CLI::Option* add_row(CLI::App& app, Options& o, const PackParameter& row) {
-    const std::string option = option_name(row.name);
-    CLI::Option* added = nullptr;
     if (row.name == "size_distribution") {
-        added = app.add_option(option, o.size_distribution, row.help);
-    } else {
-        added = app.add_option_function<std::string>(
-            option,
-            [&o, &row, option](const std::string& text) {
-                if (!row.parse(o.request, text) && !o.refused) {
-                    o.refused = option + " " + (text.empty() ? "\"\"" : text) + ": " + row.rule;
-                }
-            },
-            row.help);
+        return app.add_option(option_name(row.name), o.size_distribution, row.help);
     }
-    if (row.kind == ValueKind::Number) {
-        added->type_name("FLOAT");
-    } else if (row.kind == ValueKind::Integer) {
-        added->type_name(row.name == "seed" ? "UINT" : "INT");
-    }
-    if (row.required) {
-        added->required();
-    } else if (!row.unset_by_default) {
-        static const PackRequest defaults;
-        added->default_str(row.format(defaults));
-    }
-    return added;
+    return cli::add_parameter_option(app, row, o.request, o.refused);
 }
 
 /// Every row of the table's `group`, in table order.
@@ -158,9 +136,7 @@ void warn_unnormalised(const PackRequest& request) {
 }
 
 PackRequest to_request(const Options& o) {
-    if (o.refused) {
-        throw UsageError(*o.refused);
-    }
+    cli::throw_refused(o.refused);
     PackRequest request = o.request;
     if (!o.size_distribution.empty()) {
         read_size_distribution(o, request);

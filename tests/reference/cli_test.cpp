@@ -225,10 +225,10 @@ BOOST_AUTO_TEST_CASE(values_once_accepted_silently_are_refused_with_the_prefix) 
         std::string option, value, message;
     };
     const std::vector<Case> cases{
-        {"--seed", "-1", "--seed: must be a whole number from 0 to 18446744073709551615"},
+        {"--seed", "-1", "--seed -1: must be a whole number from 0 to 18446744073709551615"},
         {"--timeout", "nan", "--timeout: must be a number in [0, 2592000] s (30 days)"},
         {"--timeout", "-1", "--timeout: must be a number in [0, 2592000] s (30 days)"},
-        {"--friction", "x", "Could not convert: --friction = x"},
+        {"--friction", "x", "--friction x: must be a number"},
         {"--density", "inf", "--density inf: must be positive"},
         {"--check-time", "1e-300", "--max-time 30: must be at most 10^6 settling checks"},
     };

@@ -10,14 +10,13 @@ namespace {
 
 /// Every row of the pack parameter table but the seed (a sweep's seeds are its own axis).
 std::vector<Parameter> make_parameters() {
-    const engine::PackRequest defaults;
     std::vector<Parameter> table;
     for (const engine::PackParameter& row : engine::pack_parameters()) {
         if (row.name == "seed") {
             continue;
         }
         const bool blank = row.required || row.unset_by_default;
-        table.push_back({row.name, blank ? "" : row.format(defaults), row.kind == ValueKind::List});
+        table.push_back({row.name, blank ? "" : row.default_text, row.kind == ValueKind::List});
     }
     return table;
 }

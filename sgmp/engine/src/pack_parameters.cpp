@@ -18,47 +18,16 @@ using Check = std::function<void(const PackRequest&, const PackCheckContext&)>;
     throw ParameterError(name, std::move(value), std::move(rule));
 }
 
-/// A real-valued member reached by `member(request)`.
 template <class Member>
 Row number(std::string name, std::string group, Member member, std::string help, Check check) {
-    Row row;
-    row.name = std::move(name);
-    row.group = std::move(group);
-    row.kind = ValueKind::Number;
-    row.help = std::move(help);
-    row.rule = "must be a number";
-    row.parse = [member](PackRequest& r, std::string_view text) {
-        const auto value = parse_real(text);
-        if (value) {
-            member(r) = *value;
-        }
-        return value.has_value();
-    };
-    row.format = [member](const PackRequest& r) { return format_number(member(r)); };
-    row.check = std::move(check);
-    return row;
+    return number_row<PackRequest, PackCheckContext>(std::move(name), std::move(group), member,
+                                                     std::move(help), std::move(check));
 }
 
-/// A whole-number member (of its own integer type) reached by `member(request)`.
 template <class Member>
 Row whole(std::string name, std::string group, Member member, std::string help, Check check) {
-    Row row;
-    row.name = std::move(name);
-    row.group = std::move(group);
-    row.kind = ValueKind::Integer;
-    row.help = std::move(help);
-    row.rule = "must be a whole number";
-    row.parse = [member](PackRequest& r, std::string_view text) {
-        using T = std::remove_reference_t<decltype(member(r))>;
-        const auto value = parse_whole<T>(text);
-        if (value) {
-            member(r) = *value;
-        }
-        return value.has_value();
-    };
-    row.format = [member](const PackRequest& r) { return std::to_string(member(r)); };
-    row.check = std::move(check);
-    return row;
+    return whole_row<PackRequest, PackCheckContext>(std::move(name), std::move(group), member,
+                                                    std::move(help), std::move(check));
 }
 
 /// A member holding one name of a name table `table()`.
@@ -493,6 +462,7 @@ std::vector<Row> make_rows() {
     std::vector<Row> rows = count_and_request_rows();
     add_protocol_rows(rows);
     add_relax_rows(rows);
+    fill_defaults(rows);
     return rows;
 }
 

@@ -46,7 +46,8 @@ struct PourParams {
     /// (start_jitter.hpp); 0 keeps the arrangement exactly.
     double start_jitter = 0.0;
 
-    /// Throws ParameterError (the parameter's name, its value, the rule it breaks).
+    /// Throws ParameterError (the parameter's name, its value, the rule it breaks) for the
+    /// first row of the pour parameter table (pour_parameters.hpp) whose rule it breaks.
     void validate() const;
 
     [[nodiscard]] double diameter() const;

@@ -20,6 +20,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "sgmp/pack/metadata.hpp"
+
 namespace sgmp {
 
 /// How a parameter's value is typed: it decides how a front end converts its own values
@@ -38,6 +40,8 @@ template <class Request, class Context>
 struct ParameterRow {
     std::string name;   ///< snake_case
     std::string group;  ///< which part of the request it belongs to (rows are recorded by group)
+    /// The header's key when it is not `name` (a unit suffix: `youngs_modulus_pa`).
+    std::string header;
     ValueKind kind = ValueKind::Number;
     std::string help;
     /// What a value must look like, said when `parse` refuses it ("must be a number").
@@ -51,11 +55,29 @@ struct ParameterRow {
     std::function<void(const Request&, const Context&)> check{};
     /// Whether the header records the value (empty: always).
     std::function<bool(const Request&)> recorded{};
+    /// The default value as text (format of a default-constructed request); set by the
+    /// table with fill_defaults.
+    std::string default_text;
     /// A value must be given: there is no default (the command line requires it).
     bool required = false;
     /// Unset by default: an empty value leaves the request as it is.
     bool unset_by_default = false;
 };
+
+/// Sets every row's default_text from a default-constructed request.
+template <class Request, class Context>
+void fill_defaults(std::vector<ParameterRow<Request, Context>>& rows) {
+    static const Request defaults;
+    for (auto& row : rows) {
+        row.default_text = row.format(defaults);
+    }
+}
+
+/// The header key of a row.
+template <class Row>
+const std::string& header_key(const Row& row) {
+    return row.header.empty() ? row.name : row.header;
+}
 
 /// The command line's spelling of a snake_case name: "--phi-target".
 inline std::string option_name(std::string_view name) {
@@ -110,6 +132,54 @@ std::optional<T> parse_whole(std::string_view text) {
     const Wide wide = static_cast<Wide>(value);
     return static_cast<T>(std::clamp<Wide>(wide, static_cast<Wide>(std::numeric_limits<T>::min()),
                                            static_cast<Wide>(std::numeric_limits<T>::max())));
+}
+
+/// A row of a real-valued member reached by `member(request)` (a generic lambda returning a
+/// reference), refused unless the whole text is a number.
+template <class Request, class Context, class Member>
+ParameterRow<Request, Context> number_row(
+    std::string name, std::string group, Member member, std::string help,
+    std::function<void(const Request&, const Context&)> check = {}) {
+    ParameterRow<Request, Context> row;
+    row.name = std::move(name);
+    row.group = std::move(group);
+    row.kind = ValueKind::Number;
+    row.help = std::move(help);
+    row.rule = "must be a number";
+    row.parse = [member](Request& r, std::string_view text) {
+        const auto value = parse_real(text);
+        if (value) {
+            member(r) = *value;
+        }
+        return value.has_value();
+    };
+    row.format = [member](const Request& r) { return format_number(member(r)); };
+    row.check = std::move(check);
+    return row;
+}
+
+/// A row of a whole-number member (of its own integer type) reached by `member(request)`.
+template <class Request, class Context, class Member>
+ParameterRow<Request, Context> whole_row(
+    std::string name, std::string group, Member member, std::string help,
+    std::function<void(const Request&, const Context&)> check = {}) {
+    ParameterRow<Request, Context> row;
+    row.name = std::move(name);
+    row.group = std::move(group);
+    row.kind = ValueKind::Integer;
+    row.help = std::move(help);
+    row.rule = "must be a whole number";
+    row.parse = [member](Request& r, std::string_view text) {
+        using T = std::remove_reference_t<decltype(member(r))>;
+        const auto value = parse_whole<T>(text);
+        if (value) {
+            member(r) = *value;
+        }
+        return value.has_value();
+    };
+    row.format = [member](const Request& r) { return std::to_string(member(r)); };
+    row.check = std::move(check);
+    return row;
 }
 
 }  // namespace sgmp

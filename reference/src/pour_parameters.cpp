@@ -59,21 +59,8 @@ std::vector<Row> count_and_identity() {
         require(
             "friction", [](const PourParams& p) { return p.friction; },
             [](double v) { return v >= 0.0 && v <= 10.0; }, "in [0, 10]")));
-    Row seed;
-    seed.name = "seed";
-    seed.group = "identity";
-    seed.kind = ValueKind::Integer;
-    seed.help = "Seed of the LIGGGHTS insertion and the colour labels (integer)";
-    seed.rule = seed_rule("");
-    seed.parse = [](PourParams& p, std::string_view text) {
-        if (!seed_rule(text).empty()) {
-            return false;
-        }
-        std::from_chars(text.data(), text.data() + text.size(), p.seed);
-        return true;
-    };
-    seed.format = [](const PourParams& p) { return std::to_string(p.seed); };
-    rows.push_back(std::move(seed));
+    rows.push_back(seed_row<PourParams, PourCheckContext>(
+        "identity", "Seed of the LIGGGHTS insertion and the colour labels (integer)"));
     Row damping;
     damping.name = "tangential_damping";
     damping.group = "identity";
@@ -260,19 +247,11 @@ const std::vector<PourParameter>& pour_parameters() {
 }
 
 void record_pour_parameters(const PourParams& params, std::string_view group, Metadata& metadata) {
-    for (const PourParameter& row : pour_parameters()) {
-        if (row.group == group && (!row.recorded || row.recorded(params))) {
-            metadata.set(header_key(row), row.format(params));
-        }
-    }
+    record_rows(pour_parameters(), params, group, metadata);
 }
 
 void PourParams::validate() const {
-    for (const PourParameter& row : pour_parameters()) {
-        if (row.check) {
-            row.check(*this, {});
-        }
-    }
+    check_rows(pour_parameters(), *this, "", PourCheckContext{});
 }
 
 }  // namespace sgmp::reference

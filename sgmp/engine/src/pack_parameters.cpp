@@ -196,21 +196,8 @@ std::vector<Row> count_and_request_rows() {
     arrangement.format = [](const PackRequest& r) { return std::string(to_string(r.arrangement)); };
     arrangement.required = true;
     rows.push_back(std::move(arrangement));
-    Row seed;
-    seed.name = "seed";
-    seed.group = "request";
-    seed.kind = ValueKind::Integer;
-    seed.help = "random seed (colours, loose-random positions, random choices)";
-    seed.rule = seed_rule("");
-    seed.parse = [](PackRequest& r, std::string_view text) {
-        if (!seed_rule(text).empty()) {
-            return false;
-        }
-        std::from_chars(text.data(), text.data() + text.size(), r.seed);
-        return true;
-    };
-    seed.format = [](const PackRequest& r) { return std::to_string(r.seed); };
-    rows.push_back(std::move(seed));
+    rows.push_back(seed_row<PackRequest, PackCheckContext>(
+        "request", "random seed (colours, loose-random positions, random choices)"));
     Row modes;
     modes.name = "size_modes";
     modes.group = "request";
@@ -489,20 +476,12 @@ void set_pack_parameter(PackRequest& request, std::string_view name, std::string
 
 void record_pack_parameters(const PackRequest& request, std::string_view group,
                             Metadata& metadata) {
-    for (const PackParameter& row : pack_parameters()) {
-        if (row.group == group && (!row.recorded || row.recorded(request))) {
-            metadata.set(row.name, row.format(request));
-        }
-    }
+    record_rows(pack_parameters(), request, group, metadata);
 }
 
 void check_pack_parameters(const PackRequest& request, std::string_view group,
                            const PackCheckContext& context) {
-    for (const PackParameter& row : pack_parameters()) {
-        if (row.group == group && row.check) {
-            row.check(request, context);
-        }
-    }
+    check_rows(pack_parameters(), request, group, context);
 }
 
 }  // namespace sgmp::engine

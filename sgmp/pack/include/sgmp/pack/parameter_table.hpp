@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "sgmp/pack/metadata.hpp"
+#include "sgmp/pack/option_rules.hpp"
 
 namespace sgmp {
 
@@ -77,6 +78,29 @@ void fill_defaults(std::vector<ParameterRow<Request, Context>>& rows) {
 template <class Row>
 const std::string& header_key(const Row& row) {
     return row.header.empty() ? row.name : row.header;
+}
+
+/// Records the rows of `group` that `request` records, in table order, as
+/// header_key(row) = format(request).
+template <class Request, class Context>
+void record_rows(const std::vector<ParameterRow<Request, Context>>& rows, const Request& request,
+                 std::string_view group, Metadata& metadata) {
+    for (const auto& row : rows) {
+        if (row.group == group && (!row.recorded || row.recorded(request))) {
+            metadata.set(header_key(row), row.format(request));
+        }
+    }
+}
+
+/// Runs the checks of the rows of `group` (every row when `group` is empty), in table order.
+template <class Request, class Context>
+void check_rows(const std::vector<ParameterRow<Request, Context>>& rows, const Request& request,
+                std::string_view group, const Context& context) {
+    for (const auto& row : rows) {
+        if ((group.empty() || row.group == group) && row.check) {
+            row.check(request, context);
+        }
+    }
 }
 
 /// The command line's spelling of a snake_case name: "--phi-target".
@@ -179,6 +203,27 @@ ParameterRow<Request, Context> whole_row(
     };
     row.format = [member](const Request& r) { return std::to_string(member(r)); };
     row.check = std::move(check);
+    return row;
+}
+
+/// A row of a seed (`std::uint64_t seed` of the request): decimal digits from 0 to 2⁶⁴ − 1,
+/// refused rather than wrapped (seed_rule).
+template <class Request, class Context>
+ParameterRow<Request, Context> seed_row(std::string group, std::string help) {
+    ParameterRow<Request, Context> row;
+    row.name = "seed";
+    row.group = std::move(group);
+    row.kind = ValueKind::Integer;
+    row.help = std::move(help);
+    row.rule = seed_rule("");
+    row.parse = [](Request& r, std::string_view text) {
+        if (!seed_rule(text).empty()) {
+            return false;
+        }
+        std::from_chars(text.data(), text.data() + text.size(), r.seed);
+        return true;
+    };
+    row.format = [](const Request& r) { return std::to_string(r.seed); };
     return row;
 }
 

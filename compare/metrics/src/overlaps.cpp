@@ -2,10 +2,15 @@
 
 #include <algorithm>
 
+#include "sgmp/metrics/parallel.hpp"
 #include "sgmp/pack/pack_overlaps.hpp"
 
 namespace sgmp::metrics {
 namespace {
+
+/// Spheres per parallel work item of the pair search: fixed, so sums do not depend on the
+/// thread count.
+constexpr std::size_t kSpheresPerChunk = 8192;
 
 struct Tally {
     std::int64_t count = 0;
@@ -18,6 +23,19 @@ struct Tally {
     bool has_cutoff = false;
     OverlapRecord cutoff{};
 };
+
+void keep_worst(std::vector<OverlapRecord>& records, std::size_t limit);
+
+void merge(Tally& total, const Tally& part, std::size_t limit) {
+    total.count += part.count;
+    total.count_any += part.count_any;
+    total.sum += part.sum;
+    total.max = std::max(total.max, part.max);
+    total.worst.insert(total.worst.end(), part.worst.begin(), part.worst.end());
+    if (total.worst.size() > 4 * limit + 16) {
+        keep_worst(total.worst, limit);
+    }
+}
 
 bool deeper(const OverlapRecord& a, const OverlapRecord& b) {
     if (a.depth_over_d != b.depth_over_d) {
@@ -83,24 +101,32 @@ OverlapSummary summarise(Tally tally, std::size_t limit) {
 
 OverlapStats measure_overlaps(const std::vector<Particle>& particles, const Container& container,
                               double mean_diameter, double floor, std::size_t worst_count) {
-    Tally pairs;
-    Tally walls;
-    for_each_overlap(
-        particles, container,
-        [&](std::size_t i, std::size_t j, double depth) {
-            add_depth(pairs, depth / mean_diameter, floor, worst_count, [&] {
-                const std::int64_t a = particles[i].id;
-                const std::int64_t b = particles[j].id;
-                return OverlapRecord{std::min(a, b), std::max(a, b), depth / mean_diameter};
+    // The pairs in work items of fixed size, folded in order: the depth sum is the same
+    // for any thread count.
+    const OverlapSearch search(particles);
+    const Tally pairs = chunked_reduce(
+        particles.size(), kSpheresPerChunk, Tally{},
+        [&](Tally& tally, std::size_t first, std::size_t last) {
+            search.pairs_from(first, last, [&](std::size_t i, std::size_t j, double depth) {
+                add_depth(tally, depth / mean_diameter, floor, worst_count, [&] {
+                    const std::int64_t a = particles[i].id;
+                    const std::int64_t b = particles[j].id;
+                    return OverlapRecord{std::min(a, b), std::max(a, b), depth / mean_diameter};
+                });
             });
         },
-        [&](std::size_t i, double depth) {
+        [&](Tally& total, const Tally& part) { merge(total, part, worst_count); });
+    Tally walls;
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const double depth = container.penetration(particles[i].center, particles[i].radius);
+        if (depth > 0.0) {
             add(walls, OverlapRecord{particles[i].id, -1, depth / mean_diameter}, floor,
                 worst_count);
-        });
+        }
+    }
     OverlapStats stats;
     stats.floor = floor;
-    stats.pairs = summarise(std::move(pairs), worst_count);
+    stats.pairs = summarise(pairs, worst_count);
     stats.walls = summarise(std::move(walls), worst_count);
     return stats;
 }

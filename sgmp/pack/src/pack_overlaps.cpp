@@ -12,6 +12,13 @@ double max_radius(const std::vector<Particle>& particles) {
     return r_max;
 }
 
+OverlapSearch::OverlapSearch(const std::vector<Particle>& particles) : particles_(particles) {
+    const double r_max = max_radius(particles);
+    if (particles.size() >= 2 && r_max > 0.0) {
+        grid_.emplace(centers_of(particles), 2.0 * r_max);
+    }
+}
+
 OverlapCount count_overlaps(const std::vector<Particle>& particles, const Container& container,
                             double tolerance) {
     OverlapCount count;

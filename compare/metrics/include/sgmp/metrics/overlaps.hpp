@@ -37,7 +37,8 @@ struct OverlapStats {
 
 /// Overlaps between all particles and against the container, found by the project's one
 /// overlap search (sgmp/pack/pack_overlaps.hpp: every part counts the same pairs at the same
-/// depths), summed in its fixed order.
+/// depths), in parallel work items of fixed size folded in order (so the depth sum is the
+/// same for any thread count).
 OverlapStats measure_overlaps(const std::vector<Particle>& particles, const Container& container,
                               double mean_diameter, double floor, std::size_t worst_count);
 

@@ -33,8 +33,15 @@ class CellGrid {
     /// increasing i, then by cell, then by increasing j.
     template <class F>
     void for_each_pair(F&& f) const {
+        for_each_pair_from(0, centers_.size(), f);
+    }
+
+    /// The same for the pairs whose first member i lies in [first, last): the pairs of
+    /// for_each_pair cut by i, for work items of a parallel caller.
+    template <class F>
+    void for_each_pair_from(std::size_t first, std::size_t last, F&& f) const {
         const double reach2 = reach_ * reach_;
-        for (std::size_t i = 0; i < centers_.size(); ++i) {
+        for (std::size_t i = first; i < last; ++i) {
             const Vec3& c = centers_[i];
             visit_cells(c, reach_, [&](std::uint32_t j) {
                 if (j <= i) {

@@ -8,6 +8,7 @@
 /// wall or the floor). Pairs are found on a CellGrid of reach 2·r_max: overlapping
 /// centres are closer than r_i + r_j ≤ 2·r_max.
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "sgmp/pack/cell_grid.hpp"
@@ -18,24 +19,41 @@ namespace sgmp {
 /// Largest radius of `particles` (0 when empty).
 double max_radius(const std::vector<Particle>& particles);
 
-/// Calls on_pair(i, j, depth) for every overlapping pair i < j (indices into
-/// `particles`, in CellGrid::for_each_pair order), then on_wall(i, depth) for every sphere
-/// crossing the container, in index order. Depths are lengths, > 0.
-template <class OnPair, class OnWall>
-void for_each_overlap(const std::vector<Particle>& particles, const Container& container,
-                      OnPair&& on_pair, OnWall&& on_wall) {
-    const double r_max = max_radius(particles);
-    if (particles.size() >= 2 && r_max > 0.0) {
-        const CellGrid grid(centers_of(particles), 2.0 * r_max);
-        grid.for_each_pair([&](std::size_t i, std::size_t j, double) {
-            const Particle& a = particles[i];
-            const Particle& b = particles[j];
+/// The pair search: a CellGrid of reach 2·r_max over the centres (none when fewer than two
+/// spheres or r_max = 0). `particles` must outlive it.
+class OverlapSearch {
+  public:
+    explicit OverlapSearch(const std::vector<Particle>& particles);
+
+    /// Calls on_pair(i, j, depth) for every overlapping pair i < j with first ≤ i < last,
+    /// in CellGrid::for_each_pair order; the pairs of for_each_overlap, cut by i.
+    template <class OnPair>
+    void pairs_from(std::size_t first, std::size_t last, OnPair&& on_pair) const {
+        if (!grid_) {
+            return;
+        }
+        grid_->for_each_pair_from(first, last, [&](std::size_t i, std::size_t j, double) {
+            const Particle& a = particles_[i];
+            const Particle& b = particles_[j];
             const double depth = a.radius + b.radius - (a.center - b.center).norm();
             if (depth > 0.0) {
                 on_pair(i, j, depth);
             }
         });
     }
+
+  private:
+    const std::vector<Particle>& particles_;
+    std::optional<CellGrid> grid_;
+};
+
+/// Calls on_pair(i, j, depth) for every overlapping pair i < j (indices into
+/// `particles`, in CellGrid::for_each_pair order), then on_wall(i, depth) for every sphere
+/// crossing the container, in index order. Depths are lengths, > 0.
+template <class OnPair, class OnWall>
+void for_each_overlap(const std::vector<Particle>& particles, const Container& container,
+                      OnPair&& on_pair, OnWall&& on_wall) {
+    OverlapSearch(particles).pairs_from(0, particles.size(), on_pair);
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const double depth = container.penetration(particles[i].center, particles[i].radius);
         if (depth > 0.0) {

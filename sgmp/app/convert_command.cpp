@@ -51,7 +51,7 @@ PackFormat output_format(const ConvertOptions& o) {
                          "': the format cannot be told from the name; name it with --to (" +
                          pack_format_choices() +
                          ") or end the name in .xyz, .xyz.gz, .data, "
-                         ".dump or .vtk"};
+                         ".dump, .vtk or .vtp"};
     }
     return *format;
 }
@@ -108,7 +108,7 @@ int convert(const ConvertOptions& o) {
     const PackFormat format = output_format(o);
     try {
         check_writable(o.out, o.force);
-        if (format == PackFormat::vtk) {
+        if (has_container_file(format)) {
             check_writable(container_file_for(o.out), o.force);
         }
     } catch (const std::runtime_error& e) {
@@ -148,7 +148,8 @@ CLI::App* register_convert(CLI::App& app) {
     command
         ->add_option("OUT", options.out,
                      "output file: .xyz, .xyz.gz, .data (LAMMPS atom_style sphere), .dump "
-                     "(LAMMPS dump custom), .vtk (legacy VTK; the container goes beside it: "
+                     "(LAMMPS dump custom), .vtk (legacy VTK, ASCII), .vtp (VTK XML, binary; "
+                     "smaller and faster at large N); the container goes beside either: "
                      "pack.vtk -> pack.container.vtk)")
         ->required();
     command->add_option("--to", options.to, "output format, " + pack_format_choices());

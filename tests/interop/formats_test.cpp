@@ -45,9 +45,11 @@ BOOST_AUTO_TEST_CASE(one_name_table_gives_names_endings_and_the_rule) {
         BOOST_TEST(
             (format_from_extension("dir.d/pack" + std::string(extension_of(format))) == format));
     }
-    BOOST_TEST(all_pack_formats().size() == 5u);
-    BOOST_TEST(pack_format_choices() == "one of xyz, xyz.gz, data, dump, vtk");
-    BOOST_TEST(!parse_pack_format("vtp").has_value());
+    BOOST_TEST(all_pack_formats().size() == 6u);
+    BOOST_TEST(pack_format_choices() == "one of xyz, xyz.gz, data, dump, vtk, vtp");
+    BOOST_TEST(!parse_pack_format("vtu").has_value());
+    BOOST_TEST(has_container_file(PackFormat::vtp));
+    BOOST_TEST(!has_container_file(PackFormat::lammps_data));
     BOOST_TEST(!format_from_extension("pack.txt").has_value());
     BOOST_TEST(!format_from_extension(".xyz").has_value());  // a name that is only an ending
     BOOST_TEST((format_from_extension("a.xyz.gz") == PackFormat::xyz_gz));

@@ -100,38 +100,43 @@ write_dump all custom lammps.dump id type radius x y z modify sort id format flo
     return types, out
 
 
-def check_vtk(pack_rows):
+def check_vtk(pack_rows, ending):
+    """The legacy (.vtk, vtkPolyDataReader) or XML binary (.vtp, vtkXMLPolyDataReader)
+    file and its container file, read by VTK itself."""
     import vtk
-    reader = vtk.vtkPolyDataReader()
-    reader.SetFileName(os.path.join(SCRATCH, "pack.vtk"))
-    reader.ReadAllScalarsOn()
-    reader.ReadAllFieldsOn()
+    name = ending.upper()
+    reader = vtk.vtkPolyDataReader() if ending == "vtk" else vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(os.path.join(SCRATCH, "pack." + ending))
+    if ending == "vtk":
+        reader.ReadAllScalarsOn()
+        reader.ReadAllFieldsOn()
     reader.Update()
     data = reader.GetOutput()
     n = data.GetNumberOfPoints()
-    check(n == len(pack_rows), f"VTK vtkPolyDataReader: {n} points")
-    check(data.GetNumberOfVerts() == n, "VTK: one vertex per point")
+    check(n == len(pack_rows), f"{name} {type(reader).__name__}: {n} points")
+    check(data.GetNumberOfVerts() == n, f"{name}: one vertex per point")
     arrays = data.GetPointData()
-    radius, ids, bins = (arrays.GetArray(name) for name in ("radius", "id", "bin"))
-    check(all(a is not None for a in (radius, ids, bins)), "VTK: radius, id and bin arrays")
+    radius, ids, bins, species = (arrays.GetArray(a) for a in ("radius", "id", "bin", "species"))
+    check(all(a is not None for a in (radius, ids, bins, species)),
+          f"{name}: radius, id, bin and species arrays")
     check([radius.GetValue(i) for i in range(n)] == [r[4] for r in pack_rows],
-          "VTK: every radius equals the pack's")
+          f"{name}: every radius equals the pack's")
     check([ids.GetValue(i) for i in range(n)] == [r[0] for r in pack_rows]
           and [bins.GetValue(i) for i in range(n)] == [r[5] for r in pack_rows],
-          "VTK: ids and bins equal the pack's")
+          f"{name}: ids and bins equal the pack's")
     check(all(data.GetPoint(i) == tuple(pack_rows[i][1:4]) for i in range(n)),
-          "VTK: every point equals the pack's centre")
+          f"{name}: every point equals the pack's centre, bit for bit")
     provenance = data.GetFieldData().GetAbstractArray("provenance")
     entries = [provenance.GetValue(i) for i in range(provenance.GetNumberOfValues())]
     check("container=-0.625 0.625 -0.625 0.625 -0.625" in entries
           and "converted_by=sgmp convert" in entries,
-          "VTK: provenance strings (spaces encoded) read back")
-    box_reader = vtk.vtkPolyDataReader()
-    box_reader.SetFileName(os.path.join(SCRATCH, "pack.container.vtk"))
+          f"{name}: provenance strings read back")
+    box_reader = vtk.vtkPolyDataReader() if ending == "vtk" else vtk.vtkXMLPolyDataReader()
+    box_reader.SetFileName(os.path.join(SCRATCH, "pack.container." + ending))
     box_reader.Update()
     box = box_reader.GetOutput()
     check(box.GetNumberOfPoints() == 8 and box.GetNumberOfLines() == 12,
-          "VTK: the container file has 8 corners and 12 edges")
+          f"{name}: the container file has 8 corners and 12 edges")
 
 
 def check_ase(top):
@@ -195,8 +200,8 @@ def check_bad_input():
         (("zero.xyz", "zero.data"), 1,
          "sgmp convert: format data cannot carry id 0: LAMMPS atom ids must be positive",
          "zero.data"),
-        (("pack.xyz", "p.out", "--to", "vtp"), 2,
-         "sgmp convert: --to 'vtp': must be one of xyz, xyz.gz, data, dump, vtk", "p.out"),
+        (("pack.xyz", "p.out", "--to", "vtu"), 2,
+         "sgmp convert: --to 'vtu': must be one of xyz, xyz.gz, data, dump, vtk, vtp", "p.out"),
         (("species.xyz", "species.data"), 1,
          "sgmp convert: species.xyz:2: Properties lacks a 'radius' or 'diameter' column; give "
          "the radius (--radius R)", "species.data"),
@@ -233,18 +238,19 @@ def main():
     os.makedirs(SCRATCH)
     run(SGMP, "pack", "--count", "300", "--arrangement", "loose-random", "--seed", "2",
         "--size-modes", "1:0.7,0.5:0.3", "--out", "pack.xyz")
-    for out in ("pack.data", "pack.dump", "pack.vtk"):
+    for out in ("pack.data", "pack.dump", "pack.vtk", "pack.vtp"):
         run(SGMP, "convert", "pack.xyz", out)
     header, rows = read_xyz_pack(os.path.join(SCRATCH, "pack.xyz"))
     top = max(r[2] + r[4] for r in rows)
     types, _ = check_lammps(rows, top)
     check(types == {1, 2}, f"LAMMPS: atom types {sorted(types)} from the two size modes")
-    check_vtk(rows)
+    check_vtk(rows, "vtk")
+    check_vtk(rows, "vtp")
     check_ase(top)
     check_csv()
     check_bad_input()
     # The same input gives the same bytes.
-    for out in ("pack.data", "pack.dump", "pack.vtk"):
+    for out in ("pack.data", "pack.dump", "pack.vtk", "pack.vtp"):
         again = "again." + out.split(".")[1]
         run(SGMP, "convert", "pack.xyz", again)
         with open(os.path.join(SCRATCH, out), "rb") as a, open(os.path.join(SCRATCH, again), "rb") as b:

@@ -7,6 +7,8 @@
 
 #include <boost/test/unit_test.hpp>
 #include <csignal>
+#include <cstdint>
+#include <cstring>
 #include <functional>
 #include <stdexcept>
 
@@ -255,6 +257,47 @@ BOOST_AUTO_TEST_CASE(a_vtk_file_is_refused_as_output_only) {
                vtk.string() +
                    ":1: a VTK file: VTK is an output format only (for ParaView); read the "
                    "extended XYZ, dump or data file it was converted from");
+    const fs::path vtp = scratch.path() / "p.vtp";
+    write_pack_as(vtp, pack, PackFormat::vtp, WriteOptions{});
+    BOOST_TEST(input_error_of([&] { read_pack_file(vtp); }).find(":1: a VTK file") !=
+               std::string::npos);
+}
+
+// The binary XML file holds the doubles exactly: its appended blocks, read back by hand
+// (UInt64 byte count, then the values), give the pack's centres and radii bit for bit.
+BOOST_AUTO_TEST_CASE(a_vtp_file_holds_the_exact_doubles) {
+    TestDirectory scratch("pack_file_vtp");
+    Pack pack;
+    pack.particles.push_back(Particle{7, Vec3(0.1, -0.2, 1.0 / 3.0), 0.125, 4});
+    pack.particles.push_back(Particle{9, Vec3(-0.3, 0.45, 2.0 / 7.0), 0.0625, 2});
+    const fs::path vtp = scratch.path() / "p.vtp";
+    write_pack_as(vtp, pack, PackFormat::vtp, WriteOptions{});
+    const std::string bytes = read_bytes(vtp);
+    const std::size_t start = bytes.find("   _") + 4;
+    const auto block = [&](std::size_t offset, std::size_t n, auto* values) {
+        std::uint64_t count = 0;
+        std::memcpy(&count, bytes.data() + start + offset, sizeof count);
+        BOOST_TEST(count == n * sizeof(*values));
+        std::memcpy(values, bytes.data() + start + offset + sizeof count, count);
+        return offset + sizeof count + count;
+    };
+    double radius[2];
+    std::int64_t id[2];
+    std::int32_t bin[2];
+    double points[6];
+    std::size_t offset = block(0, 2, radius);
+    offset = block(offset, 2, id);
+    offset = block(offset, 2, bin);
+    offset = block(offset, 6, points);
+    BOOST_TEST(radius[0] == 0.125);
+    BOOST_TEST(radius[1] == 0.0625);
+    BOOST_TEST(id[0] == 7);
+    BOOST_TEST(id[1] == 9);
+    BOOST_TEST(bin[0] == 4);
+    BOOST_TEST(points[2] == 1.0 / 3.0);
+    BOOST_TEST(points[5] == 2.0 / 7.0);
+    BOOST_TEST(bytes.find("offset=\"" + std::to_string(offset) + "\"") != std::string::npos);
+    BOOST_TEST(fs::exists(scratch.path() / "p.container.vtp"));
 }
 
 BOOST_AUTO_TEST_CASE(existing_files_are_kept_without_overwrite) {

@@ -11,6 +11,7 @@
 #include "sgmp/pack/interrupt.hpp"
 #include "sgmp/pack/lammps_data_format.hpp"
 #include "sgmp/pack/vtk_format.hpp"
+#include "sgmp/pack/vtp_format.hpp"
 #include "sgmp/pack/xyz_format.hpp"
 #include "text_fields.hpp"
 
@@ -56,7 +57,8 @@ PackRead read_detected(std::istream& in, const std::string& source, bool data_na
     if (reader.line_number() == blanks && detail::is_blank(line)) {
         throw InputError(source, 0, "empty file");
     }
-    if (line.rfind("# vtk DataFile", 0) == 0) {  // a legacy VTK file, as `convert` writes
+    if (line.rfind("# vtk DataFile", 0) == 0 || line.rfind("<?xml", 0) == 0 ||
+        line.rfind("<VTKFile", 0) == 0) {  // a VTK file (legacy or XML), as `convert` writes
         throw InputError(source, reader.line_number(),
                          "a VTK file: VTK is an output format only (for ParaView); read the "
                          "extended XYZ, dump or data file it was converted from");
@@ -125,10 +127,11 @@ void write_pack_file(const std::filesystem::path& path, const Pack& pack, bool o
 
 std::filesystem::path container_file_for(const std::filesystem::path& path) {
     std::filesystem::path stem = path;
-    if (stem.extension() == ".vtk") {
+    const std::string ending = stem.extension() == ".vtp" ? ".vtp" : ".vtk";
+    if (stem.extension() == ending) {
         stem.replace_extension();
     }
-    stem += ".container.vtk";
+    stem += ".container" + ending;
     return stem;
 }
 
@@ -151,6 +154,9 @@ std::string format_text(const Pack& pack, PackFormat format) {
             break;
         case PackFormat::vtk:
             write_vtk_particles(out, pack);
+            break;
+        case PackFormat::vtp:
+            write_vtp_particles(out, pack);
             break;
     }
     return out.str();
@@ -179,14 +185,18 @@ void write_pack_as(const std::filesystem::path& path, const Pack& pack, PackForm
     check_name(path, format);
     check_writable(path, options.overwrite);
     const std::string text = format_text(pack, format);
-    if (format != PackFormat::vtk) {
+    if (!has_container_file(format)) {
         write_text(path, text, options.overwrite);
         return;
     }
     const std::filesystem::path container = container_file_for(path);
     check_writable(container, options.overwrite);
     std::ostringstream box;
-    write_vtk_container(box, pack);
+    if (format == PackFormat::vtp) {
+        write_vtp_container(box, pack);
+    } else {
+        write_vtk_container(box, pack);
+    }
     const std::string container_text = box.str();
     // The pair is published whole or not at all: a lone container makes a re-run refuse,
     // and particles beside another pack's container would be read in the wrong box.

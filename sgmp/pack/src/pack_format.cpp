@@ -12,17 +12,18 @@ struct FormatName {
 };
 
 // The one name table. Longer endings come before their suffixes (".xyz.gz" before ".xyz").
-constexpr std::array<FormatName, 5> kFormats{{
+constexpr std::array<FormatName, 6> kFormats{{
     {PackFormat::xyz, "xyz", ".xyz"},
     {PackFormat::xyz_gz, "xyz.gz", ".xyz.gz"},
     {PackFormat::lammps_data, "data", ".data"},
     {PackFormat::lammps_dump, "dump", ".dump"},
     {PackFormat::vtk, "vtk", ".vtk"},
+    {PackFormat::vtp, "vtp", ".vtp"},
 }};
 
-constexpr std::array<PackFormat, 5> kOrder{PackFormat::xyz, PackFormat::xyz_gz,
+constexpr std::array<PackFormat, 6> kOrder{PackFormat::xyz,         PackFormat::xyz_gz,
                                            PackFormat::lammps_data, PackFormat::lammps_dump,
-                                           PackFormat::vtk};
+                                           PackFormat::vtk,         PackFormat::vtp};
 
 const FormatName& entry(PackFormat format) {
     for (const auto& row : kFormats) {
@@ -34,6 +35,10 @@ const FormatName& entry(PackFormat format) {
 }
 
 }  // namespace
+
+bool has_container_file(PackFormat format) {
+    return format == PackFormat::vtk || format == PackFormat::vtp;
+}
 
 std::span<const PackFormat> all_pack_formats() {
     return kOrder;

@@ -35,7 +35,8 @@ struct WriteOptions {
     bool overwrite = false;
 };
 
-/// The second file of the vtk format: "pack.vtk" → "pack.container.vtk".
+/// The second file of the vtk and vtp formats: "pack.vtk" → "pack.container.vtk",
+/// "pack.vtp" → "pack.container.vtp".
 std::filesystem::path container_file_for(const std::filesystem::path& path);
 
 /// Writes `pack` in `format` (pack_format.hpp), all or nothing: every file of the format

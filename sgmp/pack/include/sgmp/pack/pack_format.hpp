@@ -10,6 +10,7 @@
 /// | data   | .data              | LAMMPS / LIGGGHTS data file, `atom_style sphere`       |
 /// | dump   | .dump              | LAMMPS `dump custom` (id type x y z radius bin)        |
 /// | vtk    | .vtk               | legacy VTK PolyData (ParaView), plus a container file  |
+/// | vtp    | .vtp               | VTK XML PolyData, binary arrays, plus a container file |
 
 #include <filesystem>
 #include <optional>
@@ -19,18 +20,21 @@
 
 namespace sgmp {
 
-enum class PackFormat { xyz, xyz_gz, lammps_data, lammps_dump, vtk };
+enum class PackFormat { xyz, xyz_gz, lammps_data, lammps_dump, vtk, vtp };
+
+/// Whether the format writes the container as a second file (vtk, vtp).
+bool has_container_file(PackFormat format);
 
 /// Every format, in the order of the name table.
 std::span<const PackFormat> all_pack_formats();
 
-/// The format's name as `--to` takes it ("xyz", "xyz.gz", "data", "dump", "vtk").
+/// The format's name as `--to` takes it ("xyz", "xyz.gz", "data", "dump", "vtk", "vtp").
 std::string_view to_string(PackFormat format);
 
 /// The format named `name`; nullopt for an unknown name.
 std::optional<PackFormat> parse_pack_format(std::string_view name);
 
-/// "one of xyz, xyz.gz, data, dump, vtk" — the rule quoted in error messages.
+/// "one of xyz, xyz.gz, data, dump, vtk, vtp" — the rule quoted in error messages.
 std::string pack_format_choices();
 
 /// The file name ending (with its dot) of each format: ".xyz", ".xyz.gz", ".data", ...

@@ -29,6 +29,7 @@
 #include "sgmp/batch/shard.hpp"
 #include "sgmp/batch/world.hpp"
 #include "sgmp/cli/run_main.hpp"
+#include "sgmp/engine/size_modes.hpp"
 #include "sgmp/metrics/parallel.hpp"
 #include "sgmp/metrics/summary_columns.hpp"
 #include "sgmp/pack/atomic_file.hpp"
@@ -112,10 +113,35 @@ int run_merge(const Settings& s) {
     return 0;
 }
 
+/// The text of every --size-distribution value that names a file (not a lognormal: spec).
+DistributionFiles read_distribution_files(const Settings& s) {
+    DistributionFiles files;
+    for (const std::string& value : s.values[parameter_index("size_distribution")]) {
+        if (value.empty() || engine::is_lognormal(value)) {
+            continue;
+        }
+        std::ifstream in(value, std::ios::binary);
+        if (!fs::is_regular_file(value) || !in) {
+            throw BadValue{"--size-distribution " + value +
+                           ": must name a readable file or be lognormal:MEDIAN:SIGMA[...]"};
+        }
+        std::ostringstream text;
+        text << in.rdbuf();
+        try {
+            (void)engine::parse_size_distribution_csv(text.str(), value);  // refused here, once
+        } catch (const InputError& e) {
+            throw BadValue{std::string("--size-distribution ") + e.what()};
+        }
+        files.emplace(value, text.str());
+    }
+    return files;
+}
+
 Plan plan_of(const Settings& s) {
     Grid grid;
     grid.values = s.values;
     grid.seeds = parse_seed_list(s.seeds);
+    grid.distribution_files = read_distribution_files(s);
     return make_plan(grid);
 }
 

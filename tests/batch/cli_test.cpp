@@ -176,6 +176,41 @@ BOOST_AUTO_TEST_CASE(batch_packs_equal_sgmp_pack_and_reruns_are_refused) {
     (void)before;
 }
 
+// A size-distribution file and a lognormal spec in one grid: each batch pack has the bytes
+// of `sgmp pack` with the same distribution; an unreadable or malformed file is refused in
+// one line before any pack is made.
+BOOST_AUTO_TEST_CASE(size_distributions_from_files_and_specs) {
+    Scratch s;
+    sgmp::testing::write_text(s.path("io/blend.csv"), "diameter,fraction\n1,0.5\n0.5,0.5\n");
+    sgmp::testing::write_text(s.path("io/bad.csv"), "diameter,fraction\n1,-1\n");
+    const std::string grid =
+        "--seeds 3 --count 400 --arrangement loose-random --fraction-basis volume "
+        "--out-pattern 'p/{size_distribution}.xyz' --progress-seconds 0 --size-distribution ";
+    BOOST_REQUIRE(s.batch(grid + "blend.csv,lognormal:2:0.4:3").status == 0);
+    for (const std::string distribution : {"blend.csv", "lognormal:2:0.4:3"}) {
+        const std::string pack =
+            std::string("cd '") + s.path("io").string() + "' && '" + SGMP_EXECUTABLE +
+            "' pack --count 400 --arrangement loose-random --fraction-basis volume --seed 3 "
+            "--size-distribution " +
+            distribution + " --out single.xyz --force >/dev/null";
+        BOOST_REQUIRE(std::system(pack.c_str()) == 0);
+        BOOST_TEST(sgmp::testing::read_bytes(s.path("io/single.xyz")) ==
+                       sgmp::testing::read_bytes(s.path("io/p/" + distribution + ".xyz")),
+                   distribution);
+    }
+    const Run missing = s.batch(grid + "nowhere.csv --summary m.csv");
+    BOOST_TEST(missing.status == 2);
+    BOOST_TEST(missing.err.rfind("sgmp: --size-distribution nowhere.csv: must name a readable "
+                                 "file",
+                                 0) == 0u);
+    const Run bad = s.batch(grid + "bad.csv --summary b.csv");
+    BOOST_TEST(bad.status == 2);
+    BOOST_TEST(bad.err.rfind("sgmp: --size-distribution bad.csv:2:", 0) == 0u, bad.err);
+    BOOST_TEST(std::count(bad.err.begin(), bad.err.end(), '\n') == 1);
+    BOOST_TEST(!fs::exists(s.path("io/m.csv")));
+    BOOST_TEST(!fs::exists(s.path("io/b.csv")));
+}
+
 BOOST_AUTO_TEST_CASE(config_file_lists_equal_the_command_line) {
     Scratch s;
     std::ofstream(s.path("io/sweep.toml"))

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "sgmp/engine/pack_parameters.hpp"
+#include "sgmp/engine/size_modes.hpp"
 #include "sgmp/pack/parameter_error.hpp"
 
 namespace sgmp::batch {
@@ -34,7 +35,8 @@ std::size_t parameter_index(std::string_view name) {
     return found == nullptr ? std::string::npos : static_cast<std::size_t>(found - table.data());
 }
 
-engine::PackRequest to_request(const ParameterValues& values, std::uint64_t seed) {
+engine::PackRequest to_request(const ParameterValues& values, std::uint64_t seed,
+                               const DistributionFiles& files) {
     const auto& table = parameters();
     if (values.size() != table.size()) {
         throw std::invalid_argument("a job needs one value per parameter");
@@ -43,9 +45,17 @@ engine::PackRequest to_request(const ParameterValues& values, std::uint64_t seed
     request.seed = seed;
     for (std::size_t i = 0; i < table.size(); ++i) {
         const engine::PackParameter& row = *engine::find_pack_parameter(table[i].name);
-        if (!(row.unset_by_default && values[i].empty())) {
-            engine::set_pack_parameter(request, row.name, values[i]);
+        if (row.unset_by_default && values[i].empty()) {
+            continue;
         }
+        const auto file = files.find(values[i]);
+        if (row.name == "size_distribution" && !engine::is_lognormal(values[i]) &&
+            file != files.end()) {
+            request.size_modes = engine::parse_size_distribution_csv(file->second, file->first);
+            request.size_distribution = values[i];
+            continue;
+        }
+        engine::set_pack_parameter(request, row.name, values[i]);
     }
     engine::validate(request);  // ParameterError, named as headers do: the front end spells it
     return request;

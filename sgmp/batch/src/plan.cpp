@@ -51,6 +51,7 @@ Plan make_plan(const Grid& grid) {
     }
     Plan plan;
     plan.seeds = grid.seeds;
+    plan.distribution_files = grid.distribution_files;
     for (const auto& list : lists) {
         plan.varies.push_back(list.size() > 1);
     }
@@ -62,7 +63,8 @@ Plan make_plan(const Grid& grid) {
         for (std::size_t i = 0; i < lists.size(); ++i) {
             values.push_back(lists[i][digit[i]]);
         }
-        (void)to_request(values, grid.seeds.front());  // throws for an invalid combination
+        // Throws for an invalid combination.
+        (void)to_request(values, grid.seeds.front(), grid.distribution_files);
         plan.combinations.push_back(std::move(values));
         std::size_t i = lists.size();
         while (i > 0 && ++digit[i - 1] == lists[i - 1].size()) {

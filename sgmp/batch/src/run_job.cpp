@@ -37,7 +37,8 @@ void add_metrics(SummaryRow& row, const Pack& pack, const JobOptions& options) {
 
 JobResult run_job(const Plan& plan, std::size_t job, const JobOptions& options,
                   const std::string& path) {
-    const engine::PackRequest request = to_request(plan.values(job), plan.seed(job));
+    const engine::PackRequest request =
+        to_request(plan.values(job), plan.seed(job), plan.distribution_files);
     JobResult result;
     const auto start = Clock::now();
     result.pack = engine::make_pack(request);

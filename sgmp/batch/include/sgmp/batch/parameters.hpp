@@ -5,6 +5,8 @@
 /// (`phi_target`; the command line spells it `--phi-target`).
 
 #include <cstddef>
+#include <functional>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,9 +30,16 @@ std::size_t parameter_index(std::string_view name);
 /// One value per parameter, in parameters() order.
 using ParameterValues = std::vector<std::string>;
 
-/// The pack request the values stand for (seed included). Throws ParameterError (the
+/// The text of the size-distribution files a grid names, by the name given: the front end
+/// reads them (the library opens no file).
+using DistributionFiles = std::map<std::string, std::string, std::less<>>;
+
+/// The pack request the values stand for (seed included). A size_distribution that is not a
+/// `lognormal:` spec is looked up in `files` and parsed as a CSV file
+/// (engine::parse_size_distribution_csv). Throws ParameterError (the
 /// parameter's name, the value, the rule) for a value its row refuses or a request that
 /// breaks a rule; std::invalid_argument when `values` does not hold one value per parameter.
-engine::PackRequest to_request(const ParameterValues& values, std::uint64_t seed);
+engine::PackRequest to_request(const ParameterValues& values, std::uint64_t seed,
+                               const DistributionFiles& files = {});
 
 }  // namespace sgmp::batch

@@ -28,12 +28,15 @@ struct Grid {
     std::vector<std::vector<std::string>> values =
         std::vector<std::vector<std::string>>(parameters().size());
     std::vector<std::uint64_t> seeds;
+    /// The size-distribution files the values name, read by the front end.
+    DistributionFiles distribution_files;
 };
 
 struct Plan {
     std::vector<ParameterValues> combinations;
     std::vector<std::uint64_t> seeds;
-    std::vector<bool> varies;  // per parameter: more than one value in the grid
+    std::vector<bool> varies;              // per parameter: more than one value in the grid
+    DistributionFiles distribution_files;  // the grid's
 
     [[nodiscard]] std::size_t job_count() const { return combinations.size() * seeds.size(); }
     [[nodiscard]] const ParameterValues& values(std::size_t job) const {

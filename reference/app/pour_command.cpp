@@ -15,6 +15,7 @@
 #include "sgmp/pack/interrupt.hpp"
 #include "sgmp/pack/option_rules.hpp"
 #include "sgmp/pack/pack_file.hpp"
+#include "sgmp/pack/parameter_error.hpp"
 
 namespace sgmp::reference {
 namespace {
@@ -120,6 +121,11 @@ void print_run_summary(const char* verb, const PourResult& result, std::size_t c
 }
 
 int report_run_failure(const std::exception& error, bool interrupted) {
+    if (const auto* bad = dynamic_cast<const ParameterError*>(&error); bad != nullptr) {
+        // A parameter found bad only when the run starts (the launcher): a usage error.
+        std::cerr << "sgmp-reference: " << printable(cli::usage_message(*bad)) << '\n';
+        return 2;
+    }
     std::cerr << "sgmp-reference: " << printable(cli::failure_message(error)) << '\n';
     if (const auto* pour_error = dynamic_cast<const PourError*>(&error);
         pour_error != nullptr && !pour_error->log_tail().empty()) {

@@ -1,5 +1,7 @@
 #include "sgmp/reference/launcher.hpp"
 
+#include "sgmp/pack/parameter_error.hpp"
+
 #include <unistd.h>
 
 #include <charconv>
@@ -30,9 +32,9 @@ std::vector<std::string> launch_words(const std::string& launcher, int ranks,
         words.push_back(word);
     }
     if (words.empty()) {
-        throw std::invalid_argument(
-            "--launcher '': must be mpirun, srun or a command line "
-            "holding {np}");
+        throw ParameterError("launcher", "''",
+                             "must be mpirun, srun or a command line "
+                             "holding {np}");
     }
     const std::string np = std::to_string(ranks);
     const std::string base = fs::path(words.front()).filename().string();
@@ -60,9 +62,9 @@ std::vector<std::string> launch_words(const std::string& launcher, int ranks,
         }
     }
     if (!placed) {
-        throw std::invalid_argument("--launcher '" + launcher +
-                                    "': a command line must hold {np} where the rank count "
-                                    "goes, e.g. 'mpiexec -n {np}'");
+        throw ParameterError("launcher", "'" + launcher + "'",
+                             "a command line must hold {np} where the rank count goes, e.g. "
+                             "'mpiexec -n {np}'");
     }
     words.front() = program->string();
     return words;

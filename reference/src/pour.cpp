@@ -1,6 +1,8 @@
 #include "sgmp/reference/pour.hpp"
 #include "sgmp/reference/pour_parameters.hpp"
 
+#include "sgmp/pack/parameter_error.hpp"
+
 #include <signal.h>
 #include <stdlib.h>
 #include <unistd.h>
@@ -169,6 +171,8 @@ std::vector<std::string> command_line(const PourRequest& request) {
         try {
             argv = launch_words(request.launcher, request.parameters.ranks,
                                 current_launch_environment());
+        } catch (const ParameterError&) {
+            throw;  // a bad --launcher: the front end names the option
         } catch (const std::invalid_argument& error) {
             throw PourError(
                 std::string(error.what()) +

@@ -30,8 +30,10 @@
 #include "sgmp/batch/world.hpp"
 #include "sgmp/cli/run_main.hpp"
 #include "sgmp/engine/size_modes.hpp"
+#if SGMP_WITH_METRICS
 #include "sgmp/metrics/parallel.hpp"
 #include "sgmp/metrics/summary_columns.hpp"
+#endif
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/cpu_budget.hpp"
 #include "sgmp/pack/input_error.hpp"
@@ -81,10 +83,27 @@ std::string read_text(const fs::path& path) {
     return text.str();
 }
 
-/// The summary's columns: the batch's own and sgmp-compare's metric columns.
+/// The summary's columns: the batch's own and sgmp-compare's metric columns (none in a
+/// build without the metrics, SGMP_BUILD_REPORT=OFF).
 const SummarySchema& schema() {
+#if SGMP_WITH_METRICS
     static const SummarySchema schema(metrics::summary_column_names());
+#else
+    static const SummarySchema schema(std::vector<std::string>{});
+#endif
     return schema;
+}
+
+/// The measure callback of --measure.
+MeasureFields measure_callback(const Settings& s) {
+#if SGMP_WITH_METRICS
+    metrics::set_thread_count(1);  // packs run side by side; each measurement is serial
+    return
+        [voronoi = s.voronoi](const Pack& pack) { return metrics::summary_fields(pack, voronoi); };
+#else
+    (void)s;
+    throw BadValue{"--measure: this sgmp was built without the metrics (SGMP_BUILD_REPORT=OFF)"};
+#endif
 }
 
 void write_summary(const Settings& s, const std::string& text) {
@@ -316,13 +335,10 @@ int run_sweep(const Settings& s, const World& world) {
     const std::vector<std::size_t> jobs =
         assigned_jobs(plan.job_count(), shard, world.rank(), world.size());
     const unsigned threads = s.threads > 0 ? s.threads : usable_threads();
-    metrics::set_thread_count(1);  // packs run side by side; each measurement is serial
     const auto seconds = earlier_seconds(s);
     JobOptions options;
     if (s.measure) {
-        options.measure = [voronoi = s.voronoi](const Pack& pack) {
-            return metrics::summary_fields(pack, voronoi);
-        };
+        options.measure = measure_callback(s);
     }
     std::atomic<std::size_t> reused{0};
     const auto work = [&](std::size_t position) {

@@ -8,18 +8,6 @@
 #include "sgmp/pack/interrupt.hpp"
 
 namespace sgmp::batch {
-namespace {
-
-bool launched_by_mpi() {
-    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"}) {
-        if (std::getenv(name) != nullptr) {
-            return true;
-        }
-    }
-    return false;
-}
-
-}  // namespace
 
 World::World() {
     if (!launched_by_mpi()) {

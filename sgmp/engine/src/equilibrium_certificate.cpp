@@ -1,7 +1,9 @@
 #include "sgmp/engine/equilibrium_certificate.hpp"
 
+#if SGMP_WITH_CLP
 #include <ClpSimplex.hpp>
 #include <CoinPackedMatrix.hpp>
+#endif
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -117,6 +119,11 @@ std::vector<double> per_sphere(const System& s, const std::vector<double>& r) {
 /// same forces). Its optimum is 0 exactly when some f ≥ 0 balances every sphere; any f ≥ 0
 /// it returns is a valid set of forces, so a small residual certifies.
 std::vector<double> solve_forces(const System& system) {
+#if !SGMP_WITH_CLP
+    (void)system;
+    throw std::runtime_error(
+        "the equilibrium certificate needs COIN-OR CLP; this build has none (SGMP_WITH_CLP=OFF)");
+#else
     const std::size_t m = system.b.size();
     const std::size_t k = system.columns();
     std::vector<CoinBigIndex> start(system.start.begin(), system.start.end());
@@ -158,6 +165,7 @@ std::vector<double> solve_forces(const System& system) {
         v = std::max(v, 0.0);  // within the LP's tolerance of its bound
     }
     return f;
+#endif
 }
 
 /// The witness's forces on `contacts` (0 where it names none); throws on a negative one.

@@ -345,6 +345,10 @@ std::vector<ContactForce> lp_forces(const ClpSimplex& model, const Step& st) {
 
 }  // namespace
 
+bool lp_solver_available() {
+    return true;
+}
+
 SettleStats settle_hard_spheres(std::vector<Particle>& particles, const Container& container,
                                 double diameter, const SettleOptions& options) {
     if (!(diameter > 0.0) || !(options.trust_min > 0.0) ||

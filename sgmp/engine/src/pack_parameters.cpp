@@ -1,5 +1,7 @@
 #include "sgmp/engine/pack_parameters.hpp"
 
+#include "sgmp/engine/hard_sphere_settle.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -350,14 +352,21 @@ void add_protocol_rows(std::vector<Row>& rows) {
 void add_relax_rows(std::vector<Row>& rows) {
     const std::string g = "relax";
     const std::size_t first = rows.size();
-    rows.push_back(choice(
+    Row relax = choice(
         "relax", g, [](auto& r) -> auto& { return r.relax.mode; }, [] { return relax_modes(); },
         "after deposition: none | frictionless (relax the whole pack under gravity to an "
         "equilibrium of frictionless soft spheres by FIRE energy minimisation, then settle it as "
         "hard spheres into a certified equilibrium by linear programming; slow: about 15 s at "
         "N = 1002) | frictional (the same with Coulomb friction at --relax-friction: "
         "tangential springs capped at mu*F_n, then a frictional hard-sphere settling into a "
-        "certified equilibrium; slower still)"));
+        "certified equilibrium; slower still)");
+    relax.check = [](const PackRequest& r, const PackCheckContext&) {
+        if (r.relax.mode != RelaxMode::None && !lp_solver_available()) {
+            refuse("relax", std::string(to_string(r.relax.mode)),
+                   "needs COIN-OR CLP, which this build lacks (SGMP_WITH_CLP=OFF)");
+        }
+    };
+    rows.push_back(std::move(relax));
     rows.push_back(number(
         "relax_stiffness", g, [](auto& r) -> auto& { return r.relax.stiffness; },
         "contact stiffness k of the first relaxation stage in m*g/d (a contact carrying one "

@@ -11,6 +11,13 @@
 
 namespace sgmp::batch {
 
+/// Whether an MPI launcher started this process (OMPI_COMM_WORLD_SIZE, PMI_SIZE or
+/// PMIX_RANK set).
+bool launched_by_mpi();
+
+/// Without MPI (SGMP_WITH_MPI=OFF) the world is this one process; constructing it in a
+/// process an MPI launcher started throws std::runtime_error (every rank would make every
+/// pack).
 class World {
   public:
     World();  // initialises MPI when launched by an MPI launcher

@@ -97,6 +97,11 @@ struct SettleStats {
     std::vector<ContactForce> forces;
 };
 
+/// Whether this build has the LP solver (COIN-OR CLP) the settling and the certificate
+/// need; without it (SGMP_WITH_CLP=OFF) both throw std::runtime_error, and `--relax` is
+/// refused as a parameter.
+bool lp_solver_available();
+
 /// Settles `particles` (scale diameter `diameter`, no overlaps deeper than rounding) in
 /// `container` as above. Particle order, ids, radii and colours are kept. Whether the
 /// result is an equilibrium is the certificate's to say (equilibrium_certificate.hpp).

@@ -1,5 +1,5 @@
 // sgmp render PACK --out pack.png [--size WxH] [--view AZ,EL|front|top|iso]
-//                  [--colour bin|height] [--cut none|half|slice|x>V...]
+//                  [--colour bin|height|species] [--cut none|half|slice|x>V...]
 //                  [--container outline|walls|none] [--force]
 // Reads a pack file, builds its POV-Ray scene (sgmp_render) and renders it to a PNG.
 #include "render_command.hpp"
@@ -74,8 +74,8 @@ render::SceneOptions scene_options(const RenderOptions& o) {
     s.height = h;
     s.view = require(render::parse_view(o.view), "view", o.view,
                      "must be AZ,EL in degrees (EL in [-90, 90]) or front, top, iso");
-    s.coloring =
-        require(render::parse_coloring(o.color), "colour", o.color, "must be one of bin, height");
+    s.coloring = require(render::parse_coloring(o.color), "colour", o.color,
+                         "must be one of bin, height, species");
     s.cut = require(render::parse_cut(o.cut), "cut", o.cut,
                     "must be none, half, slice or a plane such as z>0 (x|y|z, > or <, a number)");
     s.container = require(render::parse_container_style(o.container), "container", o.container,
@@ -155,8 +155,9 @@ RenderCommand register_render(CLI::App& app) {
                     "above the horizontal) or front (0,10), top (0,90), iso (35,30)")
         ->capture_default_str();
     cmd->add_option("--colour", o->color,
-                    "sphere colours: bin (the colour bins 0-9, Tableau 10) or height (viridis "
-                    "from the floor to the top)")
+                    "sphere colours: bin (the colour bins 0-9, Tableau 10), height (viridis "
+                    "from the floor to the top) or species (a blend's species 1, 2, ... in "
+                    "Tableau 10 order: blue, orange, green, ...)")
         ->capture_default_str();
     cmd->add_option("--cut", o->cut,
                     "cut-away: none, half (drop the half nearer the camera), slice (keep a slab "

@@ -46,6 +46,36 @@ BOOST_AUTO_TEST_CASE(scene_is_deterministic_and_holds_every_sphere) {
     BOOST_TEST(b.find("cylinder {") == std::string::npos);
 }
 
+// Colour by species: every sphere of species k (1, 2, …) wears palette colour k − 1; a
+// 2:1 blend gives as many spheres of each texture as the pack has of each species.
+BOOST_AUTO_TEST_CASE(species_colouring_follows_the_species) {
+    engine::PackRequest request;
+    request.count = 300;
+    request.arrangement = engine::Arrangement::LooseRandom;
+    request.size_modes = {{1.0, 2.0 / 3.0}, {0.6, 1.0 / 3.0}};
+    const Pack pack = engine::make_pack(request);
+    SceneOptions o;
+    o.coloring = Coloring::Species;
+    const std::string scene = povray_scene(pack, o);
+    std::size_t first = 0;
+    std::size_t second = 0;
+    for (const Particle& p : pack.particles) {
+        (p.species == 1 ? first : second) += 1;
+    }
+    const auto count = [&](const std::string& needle) {
+        std::size_t n = 0;
+        for (std::size_t at = scene.find(needle); at != std::string::npos;
+             at = scene.find(needle, at + 1)) {
+            ++n;
+        }
+        return n;
+    };
+    BOOST_TEST(first == 200u);
+    BOOST_TEST(count(" texture{Bin0}}") == first);
+    BOOST_TEST(count(" texture{Bin1}}") == second);
+    BOOST_TEST((parse_coloring("species") == std::optional<Coloring>(Coloring::Species)));
+}
+
 // Each cut keeps exactly the spheres a brute test of the rule in cut.hpp keeps, over
 // several seeds and views.
 BOOST_AUTO_TEST_CASE(cuts_drop_exactly_the_spheres_in_front_of_the_plane) {

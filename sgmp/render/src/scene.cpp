@@ -157,7 +157,7 @@ void write_spheres(std::ostream& out, const Pack& pack, const std::vector<std::s
                    const SceneOptions& o, double floor, double top) {
     out << "#declare Shade = finish { ambient 0.10 diffuse 0.75 specular 0.35 roughness 0.015 "
            "}\n";
-    if (o.coloring == Coloring::Bin) {
+    if (o.coloring != Coloring::Height) {  // bins and species: the qualitative palette
         for (int bin = 0; bin < kBinColors; ++bin) {
             out << "#declare Bin" << bin << " = texture { pigment { color " << rgb(bin_color(bin))
                 << " } finish { Shade } }\n";
@@ -169,6 +169,11 @@ void write_spheres(std::ostream& out, const Pack& pack, const std::vector<std::s
         out << "sphere{" << vec(p.center) << "," << num(p.radius) << " texture{";
         if (o.coloring == Coloring::Bin) {
             out << "Bin" << ((p.color % kBinColors) + kBinColors) % kBinColors;
+        } else if (o.coloring == Coloring::Species) {
+            // Species 1, 2, … take the palette's colours in order (a pack without species
+            // is all species 1).
+            const int species = std::max(p.species, 1) - 1;
+            out << "Bin" << species % kBinColors;
         } else {
             out << "pigment{color " << rgb(height_color((p.center.y() - floor) / span))
                 << "} finish{Shade}";
@@ -185,6 +190,9 @@ std::optional<Coloring> parse_coloring(std::string_view text) {
     }
     if (text == "height") {
         return Coloring::Height;
+    }
+    if (text == "species") {
+        return Coloring::Species;
     }
     return std::nullopt;
 }

@@ -1,6 +1,6 @@
 #pragma once
 /// @file scene.hpp
-/// A pack as a POV-Ray scene: shaded spheres coloured by colour bin or by height, the
+/// A pack as a POV-Ray scene: shaded spheres coloured by colour bin, height or species, the
 /// container as a thin outline or translucent walls, a camera from azimuth and elevation
 /// that fits the container up to the pack's top, and an optional cut-away (cut.hpp).
 /// Pure text: the same pack and options give the same bytes.
@@ -16,7 +16,9 @@
 
 namespace sgmp::render {
 
-enum class Coloring { Bin, Height };
+/// Sphere colours: the colour bin (Tableau 10), the height (viridis from the floor to the
+/// top), or the species of a blend (Tableau 10 in species order: 1 blue, 2 orange, 3 green…).
+enum class Coloring { Bin, Height, Species };
 enum class ContainerStyle { Outline, Walls, None };
 
 struct SceneOptions {
@@ -30,7 +32,7 @@ struct SceneOptions {
     std::string provenance;
 };
 
-/// Parses "bin" | "height", and "outline" | "walls" | "none".
+/// Parses "bin" | "height" | "species", and "outline" | "walls" | "none".
 std::optional<Coloring> parse_coloring(std::string_view text);
 std::optional<ContainerStyle> parse_container_style(std::string_view text);
 

@@ -1,4 +1,5 @@
 #include <boost/test/unit_test.hpp>
+#include <cctype>
 #include <sstream>
 
 #include "sgmp/metrics/metrics_output.hpp"
@@ -337,3 +338,24 @@ BOOST_AUTO_TEST_CASE(markdown_renders_through_md4c) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+// The terminal headline fits 120 columns (code points), with every row of the model, and
+// names each reference in its legend.
+BOOST_AUTO_TEST_CASE(the_terminal_headline_fits_120_columns) {
+    const CrossValidation cv = cross_validate(sample_report(), sample_manifest(), {});
+    const std::string text = render_headline_text(cv);
+    std::size_t rows = 0;
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) {
+        std::size_t columns = 0;
+        for (const unsigned char c : line) {
+            columns += (c & 0xC0) != 0x80 ? 1 : 0;  // UTF-8: count the first byte of each
+        }
+        BOOST_TEST(columns <= 120u, line);
+        rows += !line.empty() && std::isdigit(static_cast<unsigned char>(line.front())) ? 1 : 0;
+    }
+    BOOST_TEST(rows >= cv.rows.size());  // each row once per block of references
+    for (const auto& reference : cv.references) {
+        BOOST_TEST(text.find("] " + reference) != std::string::npos, reference);
+    }
+}

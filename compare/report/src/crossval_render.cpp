@@ -308,37 +308,56 @@ std::string_view verdict_mark(Verdict verdict) {
 }
 
 std::string render_headline_text(const CrossValidation& cv) {
+    // At most 120 columns: the mode's values, then each reference's six marks under a
+    // number; references beyond what one line holds go to a further block. The g(r) ratios
+    // and speed-ups are in headline.csv and the report.
+    constexpr std::size_t kReferencesPerBlock = 6;  // 63 + 6 · 9 = 117 columns
     std::ostringstream out;
     out << "marks: phi, Z(1e-3), Z(1e-2), split ratio, P(Z) at 1e-3, g(r); "
-           "✓ agree, ✗ differ, ◌ inconclusive\n";
-    out << "N      SGMP mode          seconds  phi     Z(1e-3) Z(1e-2) split";
-    for (const auto& ref : cv.references) {
-        out << " | " << ref << ": marks  g(r) ratio  speed-up";
+           "✓ agree, ✗ differ, ◌ inconclusive, · info\n";
+    std::string legend = "references:";
+    std::size_t width = legend.size();
+    for (std::size_t r = 0; r < cv.references.size(); ++r) {
+        const std::string item = " [" + std::to_string(r + 1) + "] " + cv.references[r];
+        if (width + item.size() > 120) {  // wrap the legend, indented
+            legend += "\n          ";
+            width = 10;
+        }
+        legend += item;
+        width += item.size();
     }
-    out << "\n";
-    for (const auto& row : cv.rows) {
-        char head[192];
-        std::snprintf(head, sizeof head, "%-6zu %-18s %7s  %.4f  %5.2f   %5.2f  %5.3f", row.count,
-                      row.group.c_str(), optional_fixed(row.seconds, 3).c_str(), row.value("phi"),
-                      row.value("z_mean_tol_1e-3"), row.value("z_mean_tol_1e-2"),
-                      row.value("split_ratio"));
-        out << head;
-        for (const auto& v : row.against) {
-            if (v.rows.empty()) {
-                out << " | -";
-                continue;
-            }
-            std::string text;
-            for (const auto& name : headline_metrics()) {
-                text += verdict_mark(v.row(name).verdict);
-            }
-            const auto& gr = v.row("g_r");
-            char cell[96];
-            std::snprintf(cell, sizeof cell, "  %8s  %8s", gr.ratio ? sig(*gr.ratio).c_str() : "-",
-                          speed(v.speedup).c_str());
-            out << " | " << text << cell;
+    out << legend << "\n";
+    for (std::size_t first = 0; first < cv.references.size() || first == 0;
+         first += kReferencesPerBlock) {
+        const std::size_t last = std::min(cv.references.size(), first + kReferencesPerBlock);
+        out << (first > 0 ? "\n" : "")
+            << "N      SGMP mode          seconds  phi     Z(1e-3) Z(1e-2) split";
+        for (std::size_t r = first; r < last; ++r) {
+            const std::string number = "[" + std::to_string(r + 1) + "]";
+            out << " | " << number << std::string(number.size() < 6 ? 6 - number.size() : 0, ' ');
         }
         out << "\n";
+        for (const auto& row : cv.rows) {
+            char head[192];
+            std::snprintf(head, sizeof head, "%-6zu %-18.18s %7s  %.4f  %5.2f   %5.2f  %5.3f",
+                          row.count, row.group.c_str(), optional_fixed(row.seconds, 3).c_str(),
+                          row.value("phi"), row.value("z_mean_tol_1e-3"),
+                          row.value("z_mean_tol_1e-2"), row.value("split_ratio"));
+            out << head;
+            for (std::size_t r = first; r < last && r < row.against.size(); ++r) {
+                const auto& v = row.against[r];
+                std::string text;
+                for (const auto& name : headline_metrics()) {
+                    text += v.rows.empty() ? std::string("-")
+                                           : std::string(verdict_mark(v.row(name).verdict));
+                }
+                out << " | " << text;
+            }
+            out << "\n";
+        }
+        if (cv.references.empty()) {
+            break;
+        }
     }
     return out.str();
 }

@@ -46,7 +46,7 @@ struct CrossvalOptions {
     std::string thesis_start;
     std::string tuning;
     bool pictures = false;
-    int picture_size = 360;
+    int picture_size = 600;
     CommonOptions common;
 };
 

@@ -120,6 +120,7 @@ PictureSet render_pictures(const std::vector<PictureChoice>& choices, int size) 
     options.height = size;
     options.view = render::View{35.0, 30.0};
     options.cut = *render::parse_cut("half");
+    options.coloring = render::Coloring::Height;  // layering shows; random bins showed nothing
     std::string scratch_name = (fs::temp_directory_path() / "sgmp-pictures-XXXXXX").string();
     if (::mkdtemp(scratch_name.data()) == nullptr) {
         set.note = "pictures skipped: cannot create a scratch directory";
@@ -136,9 +137,10 @@ PictureSet render_pictures(const std::vector<PictureChoice>& choices, int size) 
             job.height = size;
             job.out = scratch / "picture.png";
             job.overwrite = true;
-            job.texts = {{"Software", "sgmp-compare crossval " + std::string(sgmp::version())},
-                         {"Source", c.path},
-                         {"Comment", caption(c) + "; view 35,30; half cut away; colour bins"}};
+            job.texts = {
+                {"Software", "sgmp-compare crossval " + std::string(sgmp::version())},
+                {"Source", c.path},
+                {"Comment", caption(c) + "; view 35,30; half cut away; coloured by height"}};
             render::render_png(*povray, job);
             set.files.emplace_back(c.file, read_bytes(job.out));
         }
@@ -164,8 +166,9 @@ std::string pictures_markdown(const std::vector<PictureChoice>& choices, const P
        << choices.front().count
        << ", seen from azimuth 35°, elevation 30°, with the half nearer the camera cut away "
           "(spheres whose centre lies in front of the vertical plane through the container's "
-          "axis are not drawn), so the cut face shows the inside; spheres coloured by their "
-          "colour bin, the container outlined up to the pack's top. Rendered with POV-Ray.\n\n";
+          "axis are not drawn), so the cut face shows the inside; spheres coloured by height "
+          "(viridis: dark at the floor, yellow at the pack's top), the container outlined up "
+          "to the top. Rendered with POV-Ray; each picture opens at full size.\n\n";
     md << "|";
     for (const auto& c : choices) {
         md << " " << caption(c) << " |";

@@ -367,16 +367,28 @@ std::string plots_html(const ReportContext& context, const std::vector<std::stri
         html << "<p>Plots were skipped: " << html_escape(context.plots_note) << "</p>\n";
         return html.str();
     }
+    const auto stem_of = [&](std::size_t i) {
+        const std::string& file = context.plot_files[i];
+        const std::string name = file.substr(file.find('/') + 1);
+        return name.rfind("trend_", 0) == 0 ? std::string() : name.substr(0, name.rfind('_'));
+    };
+    // The last group of plots (the largest count) is shown open; the others collapsed.
+    std::string last_group;
+    for (std::size_t i = 0; i < svgs.size(); ++i) {
+        if (!stem_of(i).empty()) {
+            last_group = stem_of(i);
+        }
+    }
     std::string group;
     bool open = false;
     for (std::size_t i = 0; i < svgs.size(); ++i) {
         const std::string& file = context.plot_files[i];
-        const std::string name = file.substr(file.find('/') + 1);
-        const bool trend = name.rfind("trend_", 0) == 0;
-        const std::string stem = trend ? "" : name.substr(0, name.rfind('_'));
+        const std::string stem = stem_of(i);
+        const bool trend = stem.empty();
         if (!trend && stem != group) {
-            html << (open ? "</details>\n" : "") << "<details><summary>" << html_escape(stem)
-                 << ": g(r), P(Z), Z(δ), φ(y)</summary>\n";
+            html << (open ? "</details>\n" : "")
+                 << (stem == last_group ? "<details open><summary>" : "<details><summary>")
+                 << html_escape(stem) << ": g(r), P(Z), Z(δ), φ(y)</summary>\n";
             group = stem;
             open = true;
         }
@@ -414,11 +426,11 @@ const char* kStyle =
     "td,th{border:1px solid #bbb;padding:2px 4px}th{background:#f2f2f2}"
     "td:has(> .agree:only-child){background:#e6f0fa}"
     ".agree{color:#0072B2;font-weight:bold}.differ{color:#D55E00;font-weight:bold}"
-    ".inconclusive{color:#777}.info{color:#555;font-style:italic}"
+    ".inconclusive{color:#8E4585;font-weight:bold}.info{color:#555;font-style:italic}"
     "span.mark{font-family:monospace;font-size:15px}"
     "figure{display:inline-block;margin:4px}figcaption{font-size:12px;color:#555}"
     "figure svg{width:640px;height:auto}summary{cursor:pointer;margin:4px 0}"
-    "td img{width:128px;height:auto;display:block}"
+    "td img{width:180px;height:auto;display:block}"
     "nav{background:#f7f7f7;padding:4px 10px;border:1px solid #ddd}</style>";
 
 /// Verdict words and marks in table cells get their colour class.

@@ -11,7 +11,9 @@
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/cpu_budget.hpp"
 #include "sgmp/pack/input_error.hpp"
+#include "sgmp/pack/metadata.hpp"
 #include "sgmp/pack/option_rules.hpp"
+#include "sgmp/pack/output_frame.hpp"
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/pack/pack_format.hpp"
 #include "sgmp/pack/pack_origin.hpp"
@@ -28,6 +30,10 @@ struct ConvertOptions {
     std::size_t frame = 0;        // 0: the last
     double radius = 0.0;          // 0: the file's
     std::string origin = "keep";  // keep | zero
+    std::string up = "y";         // y | z
+    double length_scale = 0.0;    // 0: unscaled
+    std::string length_unit;
+    double density = 0.0;  // 0: the data format's 1
     bool force = false;
 };
 
@@ -104,8 +110,30 @@ void record_provenance(Pack& pack, const ConvertOptions& o) {
     }
 }
 
+/// The frame OUT is written in (output_frame.hpp), from --up, --length-scale/--length-unit
+/// and --density.
+OutputFrame output_frame(const ConvertOptions& o) {
+    if (o.length_scale > 0.0 && o.length_unit.empty()) {
+        throw UsageError{"--length-scale " + format_number(o.length_scale) +
+                         ": name the unit it is in with --length-unit (for example m or um)"};
+    }
+    if (!o.length_unit.empty() && o.length_scale == 0.0) {
+        throw UsageError{"--length-unit '" + o.length_unit +
+                         "': give --length-scale, the length of one control-volume side in it"};
+    }
+    OutputFrame frame;
+    frame.up = o.up == "z" ? UpAxis::Z : UpAxis::Y;
+    frame.length_scale = o.length_scale > 0.0 ? o.length_scale : 1.0;
+    frame.length_unit = o.length_unit;
+    if (o.density > 0.0) {
+        frame.density = o.density;
+    }
+    return frame;
+}
+
 int convert(const ConvertOptions& o) {
     const PackFormat format = output_format(o);
+    const OutputFrame frame = output_frame(o);
     try {
         check_writable(o.out, o.force);
         if (has_container_file(format)) {
@@ -129,7 +157,7 @@ int convert(const ConvertOptions& o) {
         (void)move_corner_to_origin(read.pack);
     }
     record_provenance(read.pack, o);
-    write_pack_as(o.out, read.pack, format, WriteOptions{o.force});
+    write_pack_as(o.out, in_output_frame(read.pack, frame), format, WriteOptions{o.force});
     std::printf("sgmp convert: %zu particles (frame %zu of %zu) from %s -> %s (%s)\n",
                 read.pack.particles.size(), read.frame, read.frames, o.in.c_str(), o.out.c_str(),
                 std::string(to_string(format)).c_str());
@@ -175,6 +203,36 @@ CLI::App* register_convert(CLI::App& app) {
                      "container's corner (x_min, floor, z_min) is at 0, for tools that ignore "
                      "Origin (the shift is recorded as origin_shift)")
         ->check(CLI::IsMember({"keep", "zero"}));
+    command
+        ->add_option("--up", options.up,
+                     "the axis that points up in OUT: y (the testbed's, default) or z "
+                     "(LAMMPS, LIGGGHTS, OVITO): each centre (x, y, z) is written as "
+                     "(x, -z, y), a right-handed turn; recorded as up_axis, and undone when "
+                     "the file is read back")
+        ->check(CLI::IsMember({"y", "z"}));
+    command
+        ->add_option("--length-scale", options.length_scale,
+                     "length of one control-volume side in --length-unit: every centre, "
+                     "radius and box is multiplied by it (0.01 with m: a side of 1 cm)")
+        ->check([](const std::string& text) {
+            return finite_range_rule(text, 1e-300, 1e300, "(0, 1e300]");
+        });
+    command
+        ->add_option("--length-unit", options.length_unit,
+                     "the unit of --length-scale, recorded as length_unit (m, mm, um, ...)")
+        ->check([](const std::string& text) {
+            const bool plain = !text.empty() && text.size() <= 32 &&
+                               text.find_first_of(" \t\r\n\"'=#") == std::string::npos;
+            return plain ? std::string()
+                         : std::string("must be 1 to 32 characters, no blank, quote, = or #");
+        });
+    command
+        ->add_option("--density", options.density,
+                     "particle density written to a LAMMPS data file (mass = density * "
+                     "(pi/6) * diameter^3 in the file's units, e.g. kg/m^3 with m; default 1)")
+        ->check([](const std::string& text) {
+            return finite_range_rule(text, 1e-300, 1e300, "(0, 1e300]");
+        });
     command->add_flag("--force", options.force, "overwrite existing output files");
     return command;
 }

@@ -10,11 +10,16 @@
 - ASE (python3-ase): ase.io.read(format='extxyz') gets the cell from Lattice, the origin,
   the `bin` and `radius` arrays; a file ASE writes (8 decimals) converts with a warning
   naming the overlaps that come from its text precision.
+- Frames: `--up z --length-scale 4e-4 --length-unit m --density 1700` to a data file that
+  LAMMPS (units si) reads with each centre at L·(x, −z, y), the floor at zlo = −0.625·L under
+  the lowest sphere, and masses ρ·(π/6)·d³; the same to extended XYZ, whose cell ASE reads
+  as L·diag(1.25, 1.25, height); and back through `convert`, the pack's centres times L.
 - ParaView-style CSV: vtkDelimitedTextReader on g_r.csv gives the header row's columns.
 
 Exit 0 when every check passes, 1 on a failed check, 77 (CTest's skip) when a tool is
 missing (scripts/setup installs them all).
 """
+import math
 import os
 import shutil
 import subprocess
@@ -159,6 +164,43 @@ def check_ase(top):
           "ASE round trip: one warning line: " + (warning[0] if warning else result.stderr))
 
 
+def check_frame(rows, top):
+    scale, density = 4e-4, 1700.0
+    run(SGMP, "convert", "pack.xyz", "z.data", "--up", "z", "--length-scale", str(scale),
+        "--length-unit", "m", "--density", str(density))
+    with open(os.path.join(SCRATCH, "in.frame"), "w") as f:
+        f.write("units si\natom_style sphere\nboundary f f f\nread_data z.data\n"
+                "write_dump all custom frame.dump id x y z radius mass modify sort id "
+                "format float %.17g\n")
+    run("lmp", "-in", "in.frame", "-log", "none", "-screen", "none")
+    with open(os.path.join(SCRATCH, "frame.dump")) as f:
+        lines = f.read().splitlines()
+    bounds = [tuple(map(float, lines[lines.index("ITEM: BOX BOUNDS ff ff ff") + k].split()))
+              for k in (1, 2, 3)]
+    start = next(i for i, l in enumerate(lines) if l.startswith("ITEM: ATOMS")) + 1
+    atoms = {int(l.split()[0]): list(map(float, l.split()[1:])) for l in lines[start:]}
+    worst = max(max(abs(a[0] - scale * r[1]), abs(a[1] + scale * r[3]), abs(a[2] - scale * r[2]),
+                    abs(a[3] - scale * r[4]))
+                for r in rows for a in [atoms[r[0]]])
+    check(worst <= 1e-15, f"LAMMPS units si, z up: every centre is L*(x, -z, y) (worst {worst:.2g} m)")
+    floor = min(a[2] - a[3] for a in atoms.values())
+    check(abs(bounds[2][0] + 0.625 * scale) <= 1e-18 and -1e-15 <= floor - bounds[2][0] <= 1e-3 * scale,
+          f"LAMMPS: zlo {bounds[2][0]} m is the floor, the lowest sphere {floor - bounds[2][0]:.2g} m above it")
+    mass_error = max(abs(a[4] - density * math.pi / 6 * (2 * a[3]) ** 3) / a[4] for a in atoms.values())
+    check(mass_error <= 1e-12, f"LAMMPS: mass = 1700 kg/m3 * (pi/6) d^3 (relative error {mass_error:.1g})")
+    run(SGMP, "convert", "pack.xyz", "z.xyz", "--up", "z", "--length-scale", str(scale),
+        "--length-unit", "m")
+    import ase.io
+    cell = ase.io.read(os.path.join(SCRATCH, "z.xyz"), format="extxyz").cell.array
+    expected = [1.25 * scale, 1.25 * scale, (top + 0.625) * scale]
+    check(max(abs(cell[k][k] - expected[k]) for k in range(3)) <= 1e-18,
+          f"ASE: the z-up cell is L*diag(1.25, 1.25, height) = {[float(cell[k][k]) for k in range(3)]}")
+    run(SGMP, "convert", "z.data", "back.xyz")
+    _, back = read_xyz_pack(os.path.join(SCRATCH, "back.xyz"))
+    worst = max(max(abs(b[k] - scale * r[k]) for k in (1, 2, 3, 4)) for r, b in zip(rows, back))
+    check(worst <= 1e-18, f"convert back: y up again, centres L times the pack's (worst {worst:.2g})")
+
+
 def check_csv():
     import vtk
     run(COMPARE, "measure", "pack.xyz", "--out", "metrics")
@@ -210,6 +252,12 @@ def check_bad_input():
          "from 1", "frames.dump"),
         (("pack.xyz", "pack.data"), 2,
          "sgmp convert: OUT pack.data: exists; pass --force to replace it", None),
+        (("pack.xyz", "m.data", "--length-scale", "0.01"), 2,
+         "sgmp convert: --length-scale 0.01: name the unit it is in with --length-unit (for "
+         "example m or um)", "m.data"),
+        (("pack.xyz", "m.data", "--length-unit", "m"), 2,
+         "sgmp convert: --length-unit 'm': give --length-scale, the length of one "
+         "control-volume side in it", "m.data"),
     ]
     for args, code, message, output in cases:
         rc, lines = convert(*args)
@@ -247,6 +295,7 @@ def main():
     check_vtk(rows, "vtk")
     check_vtk(rows, "vtp")
     check_ase(top)
+    check_frame(rows, top)
     check_csv()
     check_bad_input()
     # The same input gives the same bytes.

@@ -13,6 +13,9 @@
 #include <stdexcept>
 
 #include "sgmp/pack/interrupt.hpp"
+#include "sgmp/pack/output_frame.hpp"
+#include "sgmp/pack/pack_extent.hpp"
+#include "sgmp/pack/pack_format.hpp"
 #include "sgmp/pack/random.hpp"
 
 #include "sgmp/pack/atomic_file.hpp"
@@ -219,6 +222,41 @@ BOOST_AUTO_TEST_CASE(plain_and_gzip_files_read_back_the_same) {
     // Compression is deterministic: the same pack gives the same bytes.
     write_pack_file(scratch.path() / "b.xyz.gz", pack, false);
     BOOST_TEST(read_bytes(scratch.path() / "b.xyz.gz") == gz);
+}
+
+// A z-up file in metres: positions R·(L·c) with R(x, y, z) = (x, −z, y), the box turned
+// and scaled, and reading it back turns it back to y up (scale kept, exact: L is a power
+// of two so every product is exact).
+BOOST_AUTO_TEST_CASE(an_output_frame_turns_and_scales_and_reads_back_y_up) {
+    TestDirectory scratch("pack_file_frame");
+    const Pack pack = small_pack();
+    OutputFrame frame;
+    frame.up = UpAxis::Z;
+    frame.length_scale = 0.25;
+    frame.length_unit = "m";
+    frame.density = 2500.0;
+    const Pack written = in_output_frame(pack, frame);
+    for (std::size_t i = 0; i < pack.particles.size(); ++i) {
+        const Vec3 c = pack.particles[i].center;
+        BOOST_TEST(written.particles[i].center == Vec3(0.25 * c.x(), -0.25 * c.z(), 0.25 * c.y()));
+        BOOST_TEST(written.particles[i].radius == 0.25 * pack.particles[i].radius);
+    }
+    const Box box = container_box(written);
+    BOOST_TEST(box.lo.z() == 0.25 * -0.625);  // the floor
+    BOOST_TEST(box.lo.y() == -0.25 * 0.625);
+    BOOST_TEST(box.hi.y() == 0.25 * 0.625);
+    for (const char* name : {"f.xyz", "f.data"}) {
+        write_pack_as(scratch.path() / name, written, *format_from_extension(scratch.path() / name),
+                      WriteOptions{});
+        const Pack back = read_pack_file(scratch.path() / name);
+        for (std::size_t i = 0; i < pack.particles.size(); ++i) {
+            BOOST_TEST(back.particles[i].center == 0.25 * pack.particles[i].center);
+        }
+        BOOST_TEST(back.metadata.get("up_axis").value_or("") == "y");
+        BOOST_TEST(!back.metadata.contains("box"));
+        BOOST_TEST(back.metadata.get("length_unit").value_or("") == "m");
+    }
+    BOOST_TEST(read_bytes(scratch.path() / "f.data").find(" 2500 ") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(dump_files_are_detected) {

@@ -68,6 +68,17 @@ void check_region(const Box& region, const Container& container) {
     }
 }
 
+/// The control volume, in the file's unit when it was written with a length scale
+/// (output_frame.hpp: `length_scale` is one control-volume side).
+Box default_region(const Pack& pack) {
+    Box region = control_volume();
+    if (const auto scale = pack.metadata.get_number("length_scale"); scale && *scale > 0.0) {
+        region.lo *= *scale;
+        region.hi *= *scale;
+    }
+    return region;
+}
+
 }  // namespace
 
 /// Most phi(y) slabs one measurement makes.
@@ -179,7 +190,7 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     m.max_radius = hi->radius;
     m.polydisperse = m.min_radius != m.max_radius;
     m.container = container_of(pack, &m.container_source);
-    m.region = options.region.value_or(control_volume());
+    m.region = options.region.value_or(default_region(pack));
     check_region(m.region, m.container);
     m.top = -std::numeric_limits<double>::infinity();
     for (const Particle& p : input) {

@@ -32,8 +32,11 @@ void write_lammps_data(std::ostream& out, const Pack& pack) {
     for (const auto& [key, value] : pack.metadata.entries()) {
         out << "# " << key << '=' << value << '\n';
     }
-    out << "# density " << format_number(kLammpsDataDensity)
-        << ": mass = density * (pi/6) * diameter^3, lengths in control-volume sides\n\n";
+    const double density =
+        pack.metadata.get_number("particle_density").value_or(kLammpsDataDensity);
+    const std::string unit = pack.metadata.get("length_unit").value_or("control-volume sides");
+    out << "# density " << format_number(density)
+        << ": mass = density * (pi/6) * diameter^3, lengths in " << unit << "\n\n";
     out << pack.particles.size() << " atoms\n" << types.count << " atom types\n\n";
     const char* axes[3] = {"x", "y", "z"};
     for (int k = 0; k < 3; ++k) {
@@ -45,7 +48,7 @@ void write_lammps_data(std::ostream& out, const Pack& pack) {
     for (std::size_t i = 0; i < pack.particles.size(); ++i) {
         const Particle& p = pack.particles[i];
         out << p.id << ' ' << types.type[i] << ' ' << format_number(2.0 * p.radius) << ' '
-            << format_number(kLammpsDataDensity) << ' ' << format_number(p.center.x()) << ' '
+            << format_number(density) << ' ' << format_number(p.center.x()) << ' '
             << format_number(p.center.y()) << ' ' << format_number(p.center.z()) << " # bin "
             << p.color;
         if (species) {

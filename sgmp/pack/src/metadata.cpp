@@ -23,6 +23,10 @@ void Metadata::set(std::string_view key, std::string value) {
     }
 }
 
+void Metadata::erase(std::string_view key) {
+    std::erase_if(entries_, [&](const Entry& entry) { return entry.first == key; });
+}
+
 void Metadata::set_number(std::string_view key, double value) {
     set(key, format_number(value));
 }

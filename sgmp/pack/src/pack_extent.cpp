@@ -1,6 +1,9 @@
 #include "sgmp/pack/pack_extent.hpp"
 
 #include <algorithm>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace sgmp {
 
@@ -21,6 +24,20 @@ double top_of(const Pack& pack, const Container& container) {
 }
 
 Box container_box(const Pack& pack) {
+    if (const auto text = pack.metadata.get("box")) {
+        std::istringstream in(*text);
+        Box box;
+        for (int k = 0; k < 3; ++k) {
+            in >> box.lo[k] >> box.hi[k];
+        }
+        std::string rest;
+        if (in.fail() || (in >> rest) || !(box.lo.array() <= box.hi.array()).all() ||
+            !box.lo.allFinite() || !box.hi.allFinite()) {
+            throw std::invalid_argument("box '" + *text +
+                                        "': expected xlo xhi ylo yhi zlo zhi, finite, lo <= hi");
+        }
+        return box;
+    }
     const Container container = container_of(pack);
     Box box = container.box_up_to(top_of(pack, container));
     for (const auto& p : pack.particles) {

@@ -10,6 +10,7 @@
 #include "sgmp/pack/dump_format.hpp"
 #include "sgmp/pack/interrupt.hpp"
 #include "sgmp/pack/lammps_data_format.hpp"
+#include "sgmp/pack/output_frame.hpp"
 #include "sgmp/pack/vtk_format.hpp"
 #include "sgmp/pack/vtp_format.hpp"
 #include "sgmp/pack/xyz_format.hpp"
@@ -87,13 +88,8 @@ PackRead read_detected(std::istream& in, const std::string& source, bool data_na
     return detail::read_xyz_lines(reader, options);
 }
 
-}  // namespace
-
-Pack read_pack_file(const std::filesystem::path& path) {
-    return read_pack_file(path, ReadOptions{}).pack;
-}
-
-PackRead read_pack_file(const std::filesystem::path& path, const ReadOptions& options) {
+/// The pack as the file has it, in the file's frame (output_frame.hpp).
+PackRead read_pack_file_as_written(const std::filesystem::path& path, const ReadOptions& options) {
     const std::string source = path.string();
     const bool data_name = format_from_extension(path) == PackFormat::lammps_data;
     std::ifstream file(path, std::ios::binary);
@@ -119,6 +115,18 @@ PackRead read_pack_file(const std::filesystem::path& path, const ReadOptions& op
     } catch (const boost::iostreams::gzip_error& error) {
         throw InputError(source, 0, std::string("corrupt or truncated gzip data: ") + error.what());
     }
+}
+
+}  // namespace
+
+Pack read_pack_file(const std::filesystem::path& path) {
+    return read_pack_file(path, ReadOptions{}).pack;
+}
+
+PackRead read_pack_file(const std::filesystem::path& path, const ReadOptions& options) {
+    PackRead read = read_pack_file_as_written(path, options);
+    to_internal_frame(read.pack);
+    return read;
 }
 
 void write_pack_file(const std::filesystem::path& path, const Pack& pack, bool overwrite) {

@@ -409,9 +409,20 @@ void check_cell_key(const std::string& key, const std::string& value, const Line
     }
 }
 
-std::string lattice_text(const Container& c, double height) {
-    return format_number(c.x_max - c.x_min) + " 0 0 0 " + format_number(height) + " 0 0 0 " +
-           format_number(c.z_max - c.z_min);
+std::string lattice_text(const Box& box) {
+    const Vec3 side = box.hi - box.lo;
+    return format_number(side.x()) + " 0 0 0 " + format_number(side.y()) + " 0 0 0 " +
+           format_number(side.z());
+}
+
+/// The cell written as Lattice and Origin: the container from the floor to the top (not
+/// widened: a pack's own cell), or the output frame's box (output_frame.hpp).
+Box written_xyz_box(const Pack& pack) {
+    if (pack.metadata.contains("box")) {
+        return container_box(pack);
+    }
+    const Container c = container_of(pack);
+    return c.box_up_to(top_of(pack, c));
 }
 
 /// Reads one frame whose count line is `count_line`; the reader stands on that line.
@@ -493,14 +504,12 @@ void write_particle_lines(std::ostream& out, const std::vector<Particle>& partic
 }  // namespace
 
 void write_xyz(std::ostream& out, const Pack& pack) {
-    const Container container = container_of(pack);
-    const double height = top_of(pack, container) - container.floor;
+    const Box box = written_xyz_box(pack);
     out << pack.particles.size() << '\n';
     const bool species = has_species(pack.particles);
     out << "Properties=" << kProperties << (species ? kSpeciesProperty : "") << " Lattice=\""
-        << lattice_text(container, height) << "\" Origin=\"" << format_number(container.x_min)
-        << ' ' << format_number(container.floor) << ' ' << format_number(container.z_min)
-        << "\" pbc=\"F F F\"";
+        << lattice_text(box) << "\" Origin=\"" << format_number(box.lo.x()) << ' '
+        << format_number(box.lo.y()) << ' ' << format_number(box.lo.z()) << "\" pbc=\"F F F\"";
     for (const auto& [key, value] : pack.metadata.entries()) {
         if (is_derived_key(key)) {
             continue;

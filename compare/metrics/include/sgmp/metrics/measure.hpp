@@ -20,7 +20,7 @@
 namespace sgmp::metrics {
 
 struct MeasureOptions {
-    std::optional<Box> region;    // default: the control volume
+    std::optional<Box> region;    // default: the control volume (times length_scale)
     double slab_thickness = 1.0;  // φ(y) slabs, units of d
     double gr_bin_width = 0.02;   // units of d
     double gr_range = 5.0;        // units of d

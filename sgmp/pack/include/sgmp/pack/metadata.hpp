@@ -21,6 +21,8 @@ class Metadata {
     /// Numbers are written in the shortest form that reads back to the same double.
     void set_number(std::string_view key, double value);
     void set_integer(std::string_view key, long long value);
+    /// Removes `key` (nothing when absent).
+    void erase(std::string_view key);
 
     [[nodiscard]] std::optional<std::string> get(std::string_view key) const;
     /// The value parsed as a number; nullopt when absent. Throws std::invalid_argument

@@ -20,7 +20,9 @@ double top_of(const Pack& pack, const Container& container);
 /// The box other formats are given: the container from the floor up to `top_of`, widened
 /// where needed so that it holds every centre (a pack from elsewhere may not sit in the
 /// testbed's container; tools such as LAMMPS drop atoms whose centre is outside the box).
-/// For a testbed pack this is exactly the container up to the top.
+/// For a testbed pack this is exactly the container up to the top. A pack in an output
+/// frame (output_frame.hpp) has its written box in the `box` key; that box is returned.
+/// Throws std::invalid_argument for a malformed `box`.
 Box container_box(const Pack& pack);
 
 }  // namespace sgmp

@@ -1,5 +1,6 @@
 // sgmp render PACK --out pack.png [--size WxH] [--view AZ,EL|front|top|iso]
-//                  [--colour bin|height|species] [--cut none|half|slice|x>V...]
+//                  [--colour bin|height|species|z|local-phi] [--no-legend]
+//                  [--cut none|half|slice|x>V...]
 //                  [--container outline|walls|none] [--force]
 // Reads a pack file, builds its POV-Ray scene (sgmp_render) and renders it to a PNG.
 #include "render_command.hpp"
@@ -7,6 +8,7 @@
 #include <charconv>
 #include <cstdio>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "sgmp/cli/run_main.hpp"
@@ -17,6 +19,9 @@
 #include "sgmp/pack/version.hpp"
 #include "sgmp/render/povray.hpp"
 #include "sgmp/render/scene.hpp"
+#if SGMP_WITH_METRICS
+#include "sgmp/metrics/sphere_values.hpp"
+#endif
 
 namespace sgmp::app {
 namespace {
@@ -34,7 +39,40 @@ struct RenderOptions {
     std::string container = "outline";
     int threads = 0;
     bool force = false;
+    bool no_legend = false;
 };
+
+/// Gap tolerance of `--colour z`, over the mean diameter (the report's Z(10⁻³)).
+constexpr double kColourContactGap = 1e-3;
+
+/// The per-sphere values and caption of `--colour z` and `--colour local-phi`.
+void add_structure_values(const RenderOptions& o, const Pack& pack, render::SceneOptions& s) {
+    if (o.color != "z" && o.color != "local-phi") {
+        return;
+    }
+#if SGMP_WITH_METRICS
+    s.coloring = render::Coloring::Values;
+    if (o.color == "z") {
+        s.values = metrics::sphere_contact_numbers(pack.particles, kColourContactGap);
+        s.caption = {"Z", "gap <= 1e-3 d"};
+        return;
+    }
+    const auto text = pack.metadata.get("container");
+    try {
+        s.values =
+            metrics::sphere_local_phi(pack.particles, text ? Container::parse(*text) : Container{});
+    } catch (const std::invalid_argument& e) {
+        throw InputError(o.pack, 0, std::string("local phi: ") + e.what());
+    }
+    s.caption = {"local phi", "Voronoi, 1-99 %"};
+    s.clip_quantile = 0.01;  // the free surface's open cells would set the colour range
+#else
+    (void)pack;
+    (void)s;
+    throw std::runtime_error("--colour " + o.color +
+                             ": this sgmp was built without the metrics (SGMP_BUILD_REPORT=OFF)");
+#endif
+}
 
 using cli::UsageError;
 
@@ -74,8 +112,11 @@ render::SceneOptions scene_options(const RenderOptions& o) {
     s.height = h;
     s.view = require(render::parse_view(o.view), "view", o.view,
                      "must be AZ,EL in degrees (EL in [-90, 90]) or front, top, iso");
-    s.coloring = require(render::parse_coloring(o.color), "colour", o.color,
-                         "must be one of bin, height, species");
+    const bool structure = o.color == "z" || o.color == "local-phi";
+    s.coloring = structure ? render::Coloring::Values
+                           : require(render::parse_coloring(o.color), "colour", o.color,
+                                     "must be one of bin, height, species, z, local-phi");
+    s.legend = !o.no_legend;
     s.cut = require(render::parse_cut(o.cut), "cut", o.cut,
                     "must be none, half, slice or a plane such as z>0 (x|y|z, > or <, a number)");
     s.container = require(render::parse_container_style(o.container), "container", o.container,
@@ -116,9 +157,11 @@ int run(const RenderOptions& o) {
     if (pack.particles.empty()) {
         throw InputError(o.pack, 0, "the pack has no particles");
     }
+    render::SceneOptions scene_opts = s;
+    add_structure_values(o, pack, scene_opts);
     std::string scene;
     try {
-        scene = render::povray_scene(pack, s);
+        scene = render::povray_scene(pack, scene_opts);
     } catch (const std::invalid_argument& e) {
         throw InputError(o.pack, 2, e.what());  // the header line holds the container key
     }
@@ -156,8 +199,11 @@ RenderCommand register_render(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--colour", o->color,
                     "sphere colours: bin (the colour bins 0-9, Tableau 10), height (viridis "
-                    "from the floor to the top) or species (a blend's species 1, 2, ... in "
-                    "Tableau 10 order: blue, orange, green, ...)")
+                    "from the floor to the top), species (a blend's species 1, 2, ... in "
+                    "Tableau 10 order: blue, orange, green, ...), z (contacts at gaps <= "
+                    "1e-3 d, viridis) or local-phi (Voronoi local packing fraction, viridis "
+                    "over its 1-99 % range); "
+                    "a colour bar or swatches and a length scale go on the right")
         ->capture_default_str();
     cmd->add_option("--cut", o->cut,
                     "cut-away: none, half (drop the half nearer the camera), slice (keep a slab "
@@ -168,6 +214,8 @@ RenderCommand register_render(CLI::App& app) {
                     "container: outline (thin edges), walls (translucent floor and far walls), "
                     "none")
         ->capture_default_str();
+    cmd->add_flag("--no-legend", o->no_legend,
+                  "leave out the key (colour bar or swatches, length scale) and its strip");
     cmd->add_option("--threads", o->threads, "POV-Ray render threads (0: all cores)")
         ->check(CLI::Range(0, 256))
         ->capture_default_str();

@@ -13,6 +13,7 @@
 
 #include "sgmp/metrics/measure.hpp"
 #include "sgmp/metrics/parallel.hpp"
+#include "sgmp/metrics/sphere_values.hpp"
 #include "sgmp/metrics/voronoi.hpp"
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/pack/random.hpp"
@@ -389,6 +390,56 @@ BOOST_AUTO_TEST_CASE(dem_pours_in_the_control_volume) {
         BOOST_TEST(result.mean > 0.55);
         BOOST_TEST(result.mean < 0.66);
         BOOST_TEST(result.sd > 0.0);
+    }
+}
+
+// Per-sphere values of `sgmp render --colour z|local-phi` (sphere_values.hpp): Z_i(δ) on
+// the kd-tree against a brute count over all pairs, at δ = 0 and 10⁻³ (and a gap of
+// 0.02·d that takes in the near neighbours of random sequential addition); φ_i against the
+// tessellation's own statistics: their mean and sd over every centre are voronoi_phi_mean
+// and _sd of the same pack (to rounding of the two summation orders).
+BOOST_AUTO_TEST_CASE(sphere_values_match_a_brute_count_and_the_tessellation) {
+    for (const unsigned seed : {1U, 2U, 3U}) {
+        const auto particles = random_pack(400, seed == 2, seed);
+        double radius_sum = 0.0;
+        for (const Particle& p : particles) {
+            radius_sum += p.radius;
+        }
+        const double d = 2.0 * radius_sum / static_cast<double>(particles.size());
+        for (const double gap : {0.0, 1e-3, 0.02, 0.3}) {
+            const auto z = metrics::sphere_contact_numbers(particles, gap);
+            BOOST_TEST_REQUIRE(z.size() == particles.size());
+            std::size_t differ = 0;
+            double total = 0.0;
+            for (std::size_t i = 0; i < particles.size(); ++i) {
+                int brute = 0;
+                for (std::size_t j = 0; j < particles.size(); ++j) {
+                    const Particle &a = particles[i], &b = particles[j];
+                    brute +=
+                        j != i && (a.center - b.center).norm() - a.radius - b.radius <= gap * d;
+                }
+                differ += z[i] != brute;
+                total += z[i];
+            }
+            BOOST_TEST(differ == 0U);
+            if (gap == 0.3) {
+                BOOST_TEST(total > 0.0);  // the test compares non-trivial counts
+            }
+        }
+        const Container container;
+        const auto phi = metrics::sphere_local_phi(particles, container);
+        const auto all = metrics::voronoi_local_phi(particles, container, everything(container));
+        double sum = 0.0, square = 0.0;
+        for (const double v : phi) {
+            sum += v;
+        }
+        const double mean = sum / static_cast<double>(phi.size());
+        for (const double v : phi) {
+            square += (v - mean) * (v - mean);
+        }
+        BOOST_TEST(mean == all.mean, boost::test_tools::tolerance(1e-12));
+        BOOST_TEST(std::sqrt(square / static_cast<double>(phi.size())) == all.sd,
+                   boost::test_tools::tolerance(1e-9));
     }
 }
 

@@ -58,6 +58,12 @@ BOOST_AUTO_TEST_CASE(renders_a_png_of_the_requested_size) {
     BOOST_TEST(s.run("render '" + s.path("p.xyz") + "' --out '" + s.path("p.png") + "'").status ==
                2);
     BOOST_TEST(sgmp::testing::read_bytes(s.path("p.png")) == png);
+    // The structure colourings render (their values: sphere_values_match_a_brute_count…).
+    for (const char* colour : {"z", "local-phi"}) {
+        const Run c = s.run("render '" + s.path("p.xyz") + "' --out '" + s.path("c.png") +
+                            "' --size 96x64 --force --threads 1 --colour " + colour);
+        BOOST_TEST(c.status == 0, colour << ": " << c.err);
+    }
 }
 
 BOOST_AUTO_TEST_CASE(a_missing_renderer_is_exit_1_and_no_file) {
@@ -91,7 +97,8 @@ BOOST_AUTO_TEST_CASE(bad_options_are_usage_errors) {
     for (const auto& [args, expected] : std::vector<std::pair<std::string, std::string>>{
              {"--size 10x10", "sgmp: --size 10x10: must be WIDTHxHEIGHT"},
              {"--view 0,95", "sgmp: --view 0,95: must be AZ,EL"},
-             {"--colour pink", "sgmp: --colour pink: must be one of bin, height"},
+             {"--colour pink",
+              "sgmp: --colour pink: must be one of bin, height, species, z, local-phi"},
              {"--cut 'q>1'", "sgmp: --cut q>1: must be none, half, slice"},
              {"--container box", "sgmp: --container box: must be one of outline"}}) {
         const Run r = s.run(base + args);

@@ -421,6 +421,15 @@ VoronoiPhi voronoi_local_phi(const std::vector<Particle>& particles, const Conta
         result.by_species = by_species(particles, sorted, slot, cells);
     }
     result.global = sphere_volume / result.cell_volume;
+    if (options.keep_local) {
+        result.local.assign(particles.size(), std::numeric_limits<double>::quiet_NaN());
+        for (std::size_t k = 0; k < sorted.size(); ++k) {
+            if (slot[k] >= 0) {
+                result.local[static_cast<std::size_t>(sorted[k])] =
+                    cells[static_cast<std::size_t>(slot[k])].phi;
+            }
+        }
+    }
     for (double& h : result.histogram) {
         h *= bins / n;
     }

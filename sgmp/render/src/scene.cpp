@@ -8,8 +8,11 @@
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 #include "sgmp/pack/version.hpp"
+#include "sgmp/render/legend.hpp"
 #include "sgmp/render/palette.hpp"
 
 namespace sgmp::render {
@@ -57,7 +60,9 @@ struct Camera {
 };
 
 /// Fits the bounding sphere of `box` (radius R) into the frame: distance R / sin(a), a the
-/// smaller half angle of the frame.
+/// smaller half angle of the frame. With the key, the pack is fitted into the left
+/// 1 − f of the width (half angle atan((1 − f)·tan a_h)) and the camera and its target
+/// move by f·tan(a_h)·D along `right`, so the box's centre shows at u = −f.
 Camera fit_camera(const Box& box, const SceneOptions& o) {
     Camera c;
     c.target = 0.5 * (box.lo + box.hi);
@@ -65,15 +70,84 @@ Camera fit_camera(const Box& box, const SceneOptions& o) {
     const double aspect = static_cast<double>(o.width) / static_cast<double>(o.height);
     const double a_v = kHalfAngleDegrees * std::numbers::pi / 180.0;
     const double a_h = std::atan(std::tan(a_v) * aspect);
-    const double distance = radius / std::sin(std::min(a_v, a_h));
+    const double strip = o.legend ? kLegendStrip : 0.0;
+    const double a_fit = std::atan((1.0 - strip) * std::tan(a_h));
+    const double distance = radius / std::sin(std::min(a_v, a_fit));
     const Vec3 u = toward_camera(o.view);
-    c.location = c.target + distance * u;
     // Straight above or below, "up" in the image is away from the camera's horizontal side.
     c.sky = std::abs(o.view.elevation) > 89.0 ? Vec3(-horizontal_toward_camera(o.view))
                                               : Vec3(Vec3::UnitY());
     c.right = (-u).cross(c.sky).normalized();
+    c.target += strip * std::tan(a_h) * distance * c.right;
+    c.location = c.target + distance * u;
     c.horizontal_angle = 2.0 * a_h * 180.0 / std::numbers::pi;
     c.pixel = 2.0 * distance * std::tan(a_v) / static_cast<double>(o.height);
+    return c;
+}
+
+/// The camera's frame for the key.
+OverlayFrame overlay_frame(const Camera& c, const SceneOptions& o) {
+    OverlayFrame f;
+    f.location = c.location;
+    f.distance = (c.target - c.location).norm();
+    f.forward = (c.target - c.location) / f.distance;
+    f.right = c.right;
+    f.up = f.right.cross(f.forward).normalized();
+    const double aspect = static_cast<double>(o.width) / static_cast<double>(o.height);
+    f.tan_v = std::tan(kHalfAngleDegrees * std::numbers::pi / 180.0);
+    f.tan_h = f.tan_v * aspect;
+    return f;
+}
+
+/// The colour range of the caller's values: the q and 1 − q quantiles (nearest rank) of the
+/// finite ones, [lo, hi] with hi > lo.
+std::pair<double, double> value_range(const std::vector<double>& values, double q) {
+    std::vector<double> finite;
+    for (const double v : values) {
+        if (std::isfinite(v)) {
+            finite.push_back(v);
+        }
+    }
+    if (finite.empty()) {
+        return {0.0, 1.0};
+    }
+    std::sort(finite.begin(), finite.end());
+    const auto rank = [&](double p) {
+        return finite[static_cast<std::size_t>(
+            std::lround(p * static_cast<double>(finite.size() - 1)))];
+    };
+    const double lo = rank(q), hi = rank(1.0 - q);
+    return {lo, hi > lo ? hi : lo + 1.0};
+}
+
+/// What the key shows for these options.
+LegendContent legend_content(const Pack& pack, const SceneOptions& o, double floor, double top) {
+    LegendContent c;
+    const double d = mean_diameter(pack);
+    c.diameter = d;
+    if (const auto unit = pack.metadata.get("length_unit");
+        unit && pack.metadata.contains("length_scale")) {
+        c.unit = *unit;
+        c.unit_per_length = 1.0;  // lengths are read in the file's unit
+    }
+    if (o.coloring == Coloring::Height) {
+        c.caption = {"height", "above floor"};
+        c.bar = true;
+        c.lo = 0.0;
+        c.hi = d > 0.0 ? (top - floor) / d : 1.0;
+        c.caption.back() += ", d";
+    } else if (o.coloring == Coloring::Values) {
+        c.caption = o.caption;
+        c.bar = true;
+        std::tie(c.lo, c.hi) = value_range(o.values, o.clip_quantile);
+    } else if (o.coloring == Coloring::Species) {
+        c.caption = {"species"};
+        int species = 1;
+        for (const Particle& p : pack.particles) {
+            species = std::max(species, p.species);
+        }
+        c.swatches = species;
+    }
     return c;
 }
 
@@ -157,7 +231,8 @@ void write_spheres(std::ostream& out, const Pack& pack, const std::vector<std::s
                    const SceneOptions& o, double floor, double top) {
     out << "#declare Shade = finish { ambient 0.10 diffuse 0.75 specular 0.35 roughness 0.015 "
            "}\n";
-    if (o.coloring != Coloring::Height) {  // bins and species: the qualitative palette
+    const auto [lo, hi] = value_range(o.values, o.clip_quantile);
+    if (o.coloring == Coloring::Bin || o.coloring == Coloring::Species) {
         for (int bin = 0; bin < kBinColors; ++bin) {
             out << "#declare Bin" << bin << " = texture { pigment { color " << rgb(bin_color(bin))
                 << " } finish { Shade } }\n";
@@ -174,6 +249,12 @@ void write_spheres(std::ostream& out, const Pack& pack, const std::vector<std::s
             // is all species 1).
             const int species = std::max(p.species, 1) - 1;
             out << "Bin" << species % kBinColors;
+        } else if (o.coloring == Coloring::Values) {
+            const double v = i < o.values.size() ? o.values[i] : NAN;
+            out << "pigment{color "
+                << (std::isfinite(v) ? rgb(height_color((v - lo) / (hi - lo)))
+                                     : rgb(Rgb{0.75, 0.75, 0.75}))
+                << "} finish{Shade}";
         } else {
             out << "pigment{color " << rgb(height_color((p.center.y() - floor) / span))
                 << "} finish{Shade}";
@@ -214,6 +295,10 @@ std::string povray_scene(const Pack& pack, const SceneOptions& o) {
     if (pack.particles.empty()) {
         throw std::invalid_argument("the pack has no particles");
     }
+    if (o.coloring == Coloring::Values && o.values.size() != pack.particles.size()) {
+        throw std::invalid_argument("colour values: " + std::to_string(o.values.size()) + " for " +
+                                    std::to_string(pack.particles.size()) + " spheres");
+    }
     const Container container = container_of(pack);
     const double top = top_of(pack.particles, container);
     const Box box = container.box_up_to(std::max(top, container.floor + 1e-3));
@@ -229,6 +314,10 @@ std::string povray_scene(const Pack& pack, const SceneOptions& o) {
         write_walls(out, box, o.view, 2.0 * camera.pixel);
     }
     write_spheres(out, pack, kept, o, container.floor, top);
+    if (o.legend) {
+        out << legend_scene(overlay_frame(camera, o),
+                            legend_content(pack, o, container.floor, top));
+    }
     return out.str();
 }
 

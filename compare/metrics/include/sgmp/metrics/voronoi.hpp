@@ -34,6 +34,8 @@ struct VoronoiOptions {
     /// centre within twice its largest vertex distance is in) is computed again among all
     /// centres. The slabs change no cell beyond rounding; they run on the threads.
     std::size_t cells_per_slab = 50000;
+    /// Keep every origin's φ_i in VoronoiPhi::local (pictures coloured by local φ).
+    bool keep_local = false;
 };
 
 /// φ_i over the origins of one species of a blend.
@@ -57,6 +59,9 @@ struct VoronoiPhi {
                                     ///< A φ_i ≥ 1 (spheres overlapping deeply) counts in the
                                     ///< last bin.
     std::vector<VoronoiSpecies> by_species;  ///< a blend's, by increasing species (else empty)
+    /// With VoronoiOptions::keep_local: φ_i of particle i (index into the input), NaN for a
+    /// centre outside the region; else empty.
+    std::vector<double> local;
 };
 
 /// Local packing fractions of the centres inside `region`, from the cells of all

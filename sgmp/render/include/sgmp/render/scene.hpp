@@ -9,6 +9,7 @@
 /// POV-Ray's left-handed frame shows the pack unmirrored.
 
 #include <string>
+#include <vector>
 
 #include "sgmp/pack/pack.hpp"
 #include "sgmp/render/cut.hpp"
@@ -17,8 +18,10 @@
 namespace sgmp::render {
 
 /// Sphere colours: the colour bin (Tableau 10), the height (viridis from the floor to the
-/// top), or the species of a blend (Tableau 10 in species order: 1 blue, 2 orange, 3 green…).
-enum class Coloring { Bin, Height, Species };
+/// top), the species of a blend (Tableau 10 in species order: 1 blue, 2 orange, 3 green…),
+/// or one value per sphere given by the caller (viridis from its least to its largest
+/// finite value; grey where it is NaN), such as the coordination or the local φ.
+enum class Coloring { Bin, Height, Species, Values };
 enum class ContainerStyle { Outline, Walls, None };
 
 struct SceneOptions {
@@ -28,17 +31,27 @@ struct SceneOptions {
     Coloring coloring = Coloring::Bin;
     ContainerStyle container = ContainerStyle::Outline;
     CutSpec cut;
+    /// Coloring::Values: one value per particle, and the key's caption lines.
+    std::vector<double> values;
+    std::vector<std::string> caption;
+    /// The colour range of the values: from the q to the 1 − q quantile of the finite
+    /// values (beyond it the end colours), q = clip_quantile; 0: least to largest.
+    double clip_quantile = 0.0;
+    /// Draw the key (legend.hpp): the colour bar or species swatches and a length scale,
+    /// in a strip on the right of the image.
+    bool legend = true;
     /// Free text placed in the scene's first comment lines (what made it).
     std::string provenance;
 };
 
-/// Parses "bin" | "height" | "species", and "outline" | "walls" | "none".
+/// Parses "bin" | "height" | "species" (values come from the caller), and "outline" |
+/// "walls" | "none".
 std::optional<Coloring> parse_coloring(std::string_view text);
 std::optional<ContainerStyle> parse_container_style(std::string_view text);
 
 /// The scene text. The container is the pack's `container` header key (the thesis
-/// container when absent). Throws std::invalid_argument for a malformed container key or
-/// a pack without particles.
+/// container when absent). Throws std::invalid_argument for a malformed container key, a
+/// pack without particles, or Coloring::Values without one value per particle.
 std::string povray_scene(const Pack& pack, const SceneOptions& options);
 
 /// Number of spheres in a scene text (lines starting "sphere{"), for checks.

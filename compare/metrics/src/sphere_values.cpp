@@ -1,0 +1,51 @@
+#include "sgmp/metrics/sphere_values.hpp"
+
+#include <algorithm>
+
+#include "sgmp/metrics/neighbour_index.hpp"
+#include "sgmp/metrics/voronoi.hpp"
+
+namespace sgmp::metrics {
+
+std::vector<double> sphere_contact_numbers(const std::vector<Particle>& particles,
+                                           double gap_over_d) {
+    std::vector<double> z(particles.size(), 0.0);
+    if (particles.empty()) {
+        return z;
+    }
+    double r_max = 0.0;
+    double radius_sum = 0.0;
+    for (const Particle& p : particles) {
+        r_max = std::max(r_max, p.radius);
+        radius_sum += p.radius;
+    }
+    const double d = 2.0 * radius_sum / static_cast<double>(particles.size());
+    const double gap = gap_over_d * d;
+    const NeighbourIndex index(particles);
+    std::vector<Index> found;
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const Particle& a = particles[i];
+        index.within(a.center, a.radius + r_max + gap, found);
+        for (const Index j : found) {
+            const Particle& b = particles[j];
+            if (j != i && (a.center - b.center).norm() - a.radius - b.radius <= gap) {
+                z[i] += 1.0;
+            }
+        }
+    }
+    return z;
+}
+
+std::vector<double> sphere_local_phi(const std::vector<Particle>& particles,
+                                     const Container& container) {
+    double top = container.floor;
+    for (const Particle& p : particles) {
+        top = std::max(top, p.center.y() + p.radius);
+    }
+    VoronoiOptions options;
+    options.keep_local = true;
+    const Box everything = container.box_up_to(top + 1.0);
+    return voronoi_local_phi(particles, container, everything, options).local;
+}
+
+}  // namespace sgmp::metrics

@@ -25,7 +25,7 @@ LIBRARIES = {
     "batch": ("sgmp/batch", {"pack", "engine"}),
     "reference": ("reference", {"pack"}),
     "metrics": ("compare/metrics", {"pack"}),
-    "report": ("compare/report", {"pack", "render", "metrics"}),
+    "report": ("compare/report", {"pack", "render", "metrics", "reference"}),
 }
 NAMESPACE = re.compile(r"^namespace\s+(sgmp(?:::\w+)*)\s*\{", re.MULTILINE)
 INCLUDE = re.compile(r'^\s*#\s*include\s+"(sgmp/[^"]+)"', re.MULTILINE)

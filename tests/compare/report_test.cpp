@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "sgmp/report/agreement.hpp"
+#include "sgmp/report/dem_parameters.hpp"
 #include "sgmp/report/report_files.hpp"
 #include "sgmp/report/report_plots.hpp"
 #include "synthetic_packs.hpp"
@@ -279,3 +280,61 @@ BOOST_AUTO_TEST_CASE(report_directory_with_and_without_gnuplot) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+// Plots hold at most 6 series: every reference chunk (≤ 3) meets every candidate chunk,
+// each series lands in some plot, each plot mixes both kinds when both exist.
+BOOST_AUTO_TEST_CASE(plots_are_split_into_at_most_six_series) {
+    for (std::size_t candidates = 0; candidates <= 9; ++candidates) {
+        for (std::size_t references = 0; references <= 7; ++references) {
+            std::vector<bool> reference(candidates, false);
+            reference.insert(reference.end(), references, true);
+            const auto parts = split_series(reference);
+            std::vector<std::size_t> seen(reference.size(), 0);
+            for (const auto& part : parts) {
+                BOOST_TEST(part.size() <= kMaxSeries);
+                bool any_ref = false, any_cand = false;
+                for (const std::size_t i : part) {
+                    ++seen[i];
+                    (reference[i] ? any_ref : any_cand) = true;
+                }
+                if (candidates > 0 && references > 0) {
+                    BOOST_TEST((any_ref && any_cand));
+                }
+            }
+            for (const std::size_t s : seen) {
+                BOOST_TEST(s >= 1U);
+            }
+            if (candidates + references > 0 && candidates + references <= kMaxSeries &&
+                references <= 3) {
+                BOOST_TEST(parts.size() == 1U);  // a small plot stays whole
+            }
+        }
+    }
+}
+
+// The DEM parameter table: the pours' recorded parameters per class, one value when they
+// agree, all of them when they differ, "—" where one class lacks a key another has, and
+// keys no pour records (or packs that are not pours) left out.
+BOOST_AUTO_TEST_CASE(dem_parameters_come_from_the_pours_headers) {
+    const auto pour = [](const std::string& e, const std::string& mu) {
+        PackSummary p;
+        p.provenance = {{"generator", "liggghts"}, {"youngs_modulus_pa", e}, {"friction", mu}};
+        return p;
+    };
+    Report report;
+    report.groups.push_back(Group{"DEM a", {pour("1e+09", "0.5"), pour("1e+09", "0.5")}});
+    report.groups.push_back(Group{"DEM b", {pour("5e+08", "0.01"), pour("2e+09", "0.01")}});
+    PackSummary sgmp;
+    sgmp.provenance = {{"generator", "sgmp"}, {"youngs_modulus_pa", "7"}};
+    report.groups.push_back(Group{"mode", {sgmp}});
+    const DemParameterTable t = dem_parameter_table(report, {"DEM a", "DEM b", "mode"});
+    BOOST_TEST((t.classes == std::vector<std::string>{"DEM a", "DEM b"}));
+    const auto row = [&](const std::string& key) {
+        const auto at = std::find(t.keys.begin(), t.keys.end(), key);
+        BOOST_TEST_REQUIRE((at != t.keys.end()), key);
+        return t.values[static_cast<std::size_t>(at - t.keys.begin())];
+    };
+    BOOST_TEST((row("youngs_modulus_pa") == std::vector<std::string>{"1e+09", "5e+08 / 2e+09"}));
+    BOOST_TEST((row("friction") == std::vector<std::string>{"0.5", "0.01"}));
+    BOOST_TEST((std::find(t.keys.begin(), t.keys.end(), "restitution") == t.keys.end()));
+}

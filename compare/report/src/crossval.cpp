@@ -348,6 +348,7 @@ CrossValidation cross_validate(const Report& report, const std::vector<ManifestE
         v.reference_seconds = mean_seconds(manifest, c.reference, Role::Reference, c.count);
     }
     cv.counts.assign(counts.begin(), counts.end());
+    cv.dem_parameters = dem_parameter_table(report, cv.references);
     for (const auto& group : report.groups) {
         for (auto& [key, row] : rows) {
             if (key.first == group.label) {

@@ -40,30 +40,6 @@ std::string speed(const std::optional<double>& factor) {
     return *factor >= 100.0 ? fixed(*factor, 0) + "×" : sig(*factor) + "×";
 }
 
-/// The marks of one metric over every count of the cross-validation.
-std::string marks(const CrossValidation& cv, const std::string& candidate, std::size_t reference,
-                  const std::string& metric) {
-    std::string text;
-    for (const std::size_t n : cv.counts) {
-        std::string mark(verdict_mark(Verdict::Info));
-        for (const auto& row : cv.rows) {
-            if (row.group == candidate && row.count == n && !row.against[reference].rows.empty()) {
-                mark = verdict_mark(row.against[reference].row(metric).verdict);
-            }
-        }
-        text += mark;
-    }
-    return text;
-}
-
-std::string count_list(const std::vector<std::size_t>& counts) {
-    std::string text;
-    for (std::size_t i = 0; i < counts.size(); ++i) {
-        text += (i == 0 ? "" : ", ") + std::to_string(counts[i]);
-    }
-    return text;
-}
-
 /// One line of a stand-in record: the answer and its strength.
 std::string stand_in_sentence(const StandIn& s) {
     const std::size_t judged = s.agree + s.differ + s.inconclusive;
@@ -110,8 +86,37 @@ void tuning_markdown(std::ostringstream& md, const CrossValidation& cv) {
     md << "\n";
 }
 
+/// The DEM parameters of the reference classes, one column per class.
+void dem_parameters_markdown(std::ostringstream& md, const CrossValidation& cv) {
+    const DemParameterTable& t = cv.dem_parameters;
+    if (t.classes.empty()) {
+        return;
+    }
+    md << "## DEM parameters of the reference classes\n\n";
+    md << "As the LIGGGHTS pours record them in their headers (keys with their SI unit; "
+          "reference/README.md explains each). A class whose pours differ lists their values."
+          "\n\n| parameter |";
+    for (const auto& c : t.classes) {
+        md << " " << c << " |";
+    }
+    md << "\n| --- |";
+    for (std::size_t i = 0; i < t.classes.size(); ++i) {
+        md << " --- |";
+    }
+    md << "\n";
+    for (std::size_t k = 0; k < t.keys.size(); ++k) {
+        md << "| `" << t.keys[k] << "` |";
+        for (const auto& v : t.values[k]) {
+            md << " " << v << " |";
+        }
+        md << "\n";
+    }
+    md << "\n";
+}
+
 void stand_in_markdown(std::ostringstream& md, const CrossValidation& cv) {
     tuning_markdown(md, cv);
+    dem_parameters_markdown(md, cv);
     md << "## Which SGMP mode stands in for which DEM class\n\n";
     md << "Every verdict is an equivalence test on a declared margin (rules at the end of the "
           "page). A mode *stands in* for a class when no test differs under Holm's procedure "
@@ -157,34 +162,140 @@ void stand_in_markdown(std::ostringstream& md, const CrossValidation& cv) {
     }
 }
 
-void matrix_markdown(std::ostringstream& md, const CrossValidation& cv) {
-    md << "\n## Verdict matrix\n\n";
-    md << "One mark per particle count, N = " << count_list(cv.counts)
-       << " in order: ✓ agree, ✗ differ, ◌ inconclusive (the interval straddles the margin), "
-          "· not compared or information only (a contact metric below the overlap depth). "
-          "Columns: φ of the control volume; Z at gap "
-          "tolerance δ; the split ratio g(√3·d)/g(2·d); the Voronoi local φ, mean and sd; Q6 "
-          "global and local; g(r) beyond contact; P(Z) at δ. Rules at the end of the page.\n\n";
-    md << "| SGMP mode | DEM class |";
+/// The verdict of one metric of `candidate` against reference `reference` at count `n`
+/// (Info when the pair was not compared there).
+Verdict verdict_at(const CrossValidation& cv, const std::string& candidate, std::size_t reference,
+                   std::size_t n, const std::string& metric) {
+    for (const auto& row : cv.rows) {
+        if (row.group == candidate && row.count == n && !row.against[reference].rows.empty()) {
+            return row.against[reference].row(metric).verdict;
+        }
+    }
+    return Verdict::Info;
+}
+
+/// Whether `candidate` was compared with reference `reference` at count `n`.
+bool compared_at(const CrossValidation& cv, const std::string& candidate, std::size_t reference,
+                 std::size_t n) {
+    return std::any_of(cv.rows.begin(), cv.rows.end(), [&](const HeadlineRow& row) {
+        return row.group == candidate && row.count == n && !row.against[reference].rows.empty();
+    });
+}
+
+/// Tally of verdicts over some metrics (and counts).
+struct Tally {
+    std::size_t agree = 0;
+    std::size_t differ = 0;
+    std::size_t inconclusive = 0;
+    [[nodiscard]] std::size_t judged() const { return agree + differ + inconclusive; }
+    void add(Verdict v) {
+        agree += v == Verdict::Agree ? 1 : 0;
+        differ += v == Verdict::Differ ? 1 : 0;
+        inconclusive += v == Verdict::Inconclusive ? 1 : 0;
+    }
+    /// "k of K agree" and the differences and undecided ones, or "·" when none was judged.
+    [[nodiscard]] std::string text() const {
+        if (judged() == 0) {
+            return "·";
+        }
+        std::string s = std::to_string(agree) + " of " + std::to_string(judged()) + " agree";
+        if (differ > 0) {
+            s += ", " + std::to_string(differ) + " ✗";
+        }
+        if (inconclusive > 0) {
+            s += ", " + std::to_string(inconclusive) + " ◌";
+        }
+        return s;
+    }
+};
+
+std::vector<const MetricRule*> judged_rules() {
     std::vector<const MetricRule*> judged;
     for (const auto& rule : metric_rules()) {
         if (rule.judged) {
             judged.push_back(&rule);
-            md << " " << rule.short_label << " |";
         }
     }
-    md << "\n| --- | --- |";
-    for (std::size_t i = 0; i < judged.size(); ++i) {
+    return judged;
+}
+
+/// Per mode and class, per count: how many judged metrics agree, differ, stay undecided.
+void summary_markdown(std::ostringstream& md, const CrossValidation& cv,
+                      const std::vector<const MetricRule*>& judged) {
+    md << "\n## Verdicts per count\n\n";
+    md << "Per SGMP mode and DEM class: of the K metrics judged at each particle count, how "
+          "many agree (k of K agree), differ (✗) or stay inconclusive (◌); the last column adds "
+          "up every count. The metric by metric marks are in the verdict matrix below.\n\n";
+    md << "| SGMP mode | DEM class |";
+    for (const std::size_t n : cv.counts) {
+        md << " N = " << n << " |";
+    }
+    md << " all counts |\n| --- | --- |";
+    for (std::size_t i = 0; i <= cv.counts.size(); ++i) {
         md << " --- |";
     }
     md << "\n";
     for (const auto& candidate : cv.candidates) {
         for (std::size_t r = 0; r < cv.references.size(); ++r) {
             md << "| " << candidate << " | " << cv.references[r] << " |";
-            for (const auto* rule : judged) {
-                md << " " << marks(cv, candidate, r, rule->name) << " |";
+            Tally all;
+            for (const std::size_t n : cv.counts) {
+                Tally at;
+                for (const auto* rule : judged) {
+                    const Verdict v = verdict_at(cv, candidate, r, n, rule->name);
+                    at.add(v);
+                    all.add(v);
+                }
+                md << " " << at.text() << " |";
             }
-            md << "\n";
+            md << " **" << all.text() << "** |\n";
+        }
+    }
+}
+
+void matrix_markdown(std::ostringstream& md, const CrossValidation& cv) {
+    const auto judged = judged_rules();
+    summary_markdown(md, cv, judged);
+    md << "\n## Verdict matrix\n\n";
+    md << "One row per SGMP mode and DEM class compared at that count, under a header row "
+          "per particle count: ✓ "
+          "agree, ✗ differ, ◌ inconclusive (the interval straddles the margin), · not compared "
+          "or information only (a contact metric below the overlap depth). Columns: φ of the "
+          "control volume; Z at gap tolerance δ; the split ratio g(√3·d)/g(2·d); the Voronoi "
+          "local φ, mean and sd; Q6 global and local; g(r) beyond contact; P(Z) at δ; and how "
+          "many of the judged metrics agree. Rules at the end of the page.\n\n";
+    md << "| SGMP mode | DEM class |";
+    for (const auto* rule : judged) {
+        md << " " << rule->short_label << " |";
+    }
+    md << " agree |\n| --- | --- |";
+    for (std::size_t i = 0; i <= judged.size(); ++i) {
+        md << " --- |";
+    }
+    md << "\n";
+    for (const std::size_t n : cv.counts) {
+        md << "| **N = " << n << "** | |";
+        for (std::size_t i = 0; i <= judged.size(); ++i) {
+            md << " |";
+        }
+        md << "\n";
+        for (const auto& candidate : cv.candidates) {
+            for (std::size_t r = 0; r < cv.references.size(); ++r) {
+                if (!compared_at(cv, candidate, r, n)) {
+                    continue;  // no pours of that class at this count
+                }
+                md << "| " << candidate << " | " << cv.references[r] << " |";
+                Tally at;
+                for (const auto* rule : judged) {
+                    const Verdict v = verdict_at(cv, candidate, r, n, rule->name);
+                    at.add(v);
+                    md << " " << verdict_mark(v) << " |";
+                }
+                md << " "
+                   << (at.judged() ? std::to_string(at.agree) + " of " + std::to_string(at.judged())
+                                   : std::string("·"))
+                   << " |\n";
+            }
         }
     }
 }
@@ -274,6 +385,16 @@ Json tuning_json(const CrossValidation& cv) {
                         {"note", t.note}});
     }
     return list;
+}
+
+/// {"classes": [...], "parameters": {key: [value per class]}}.
+Json dem_parameters_json(const CrossValidation& cv) {
+    const DemParameterTable& t = cv.dem_parameters;
+    Json parameters = Json::object();
+    for (std::size_t k = 0; k < t.keys.size(); ++k) {
+        parameters[t.keys[k]] = t.values[k];
+    }
+    return {{"classes", t.classes}, {"parameters", parameters}};
 }
 
 Json class_pairs_json(const CrossValidation& cv) {
@@ -476,10 +597,15 @@ Json crossval_json(const CrossValidation& cv) {
                              {"speedup", optional_json(s.speedup)},
                              {"speedup_count", s.speedup_count}});
     }
-    return {{"schema_version", kSchemaVersion}, {"candidates", cv.candidates},
-            {"references", cv.references},      {"counts", cv.counts},
-            {"stand_ins", stand_ins},           {"class_pairs", class_pairs_json(cv)},
-            {"tuning", tuning_json(cv)},        {"headline", rows}};
+    return {{"schema_version", kSchemaVersion},
+            {"candidates", cv.candidates},
+            {"references", cv.references},
+            {"counts", cv.counts},
+            {"stand_ins", stand_ins},
+            {"class_pairs", class_pairs_json(cv)},
+            {"tuning", tuning_json(cv)},
+            {"dem_parameters", dem_parameters_json(cv)},
+            {"headline", rows}};
 }
 
 }  // namespace sgmp::report

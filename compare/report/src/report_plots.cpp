@@ -192,8 +192,6 @@ std::vector<std::string> write_trend_plots(std::ostringstream& gp, const fs::pat
         }
     }
     for (const auto& metric : metrics) {
-        std::ostringstream plot;
-        std::size_t k = 0;
         std::string label;
         std::vector<const Trend*> series;
         std::vector<std::pair<std::string, bool>> labels;
@@ -203,27 +201,41 @@ std::vector<std::string> write_trend_plots(std::ostringstream& gp, const fs::pat
                 labels.emplace_back(t.label, t.reference);
             }
         }
-        const auto styles = series_styles(labels);
+        const auto styles = series_styles(labels);  // the same style in every part
+        std::vector<bool> reference;
         for (const Trend* t : series) {
-            label = t->metric_label;
-            const SeriesStyle& style = styles[k];
-            ++k;
-            const std::string file = "trend_" + metric + "_" + std::to_string(k) + ".dat";
-            if (t->reference) {
-                write_text_file(plots / file, band_columns(t->count, t->mean, t->sd));
-                plot << "'" << file << "' using 1:2:3 with filledcurves" << style.band
-                     << line_only(style.line) << " title " << quoted(t->label + " ± 2 sd") << ", ";
-            } else {
-                write_text_file(plots / file, columns(t->count, t->mean));
-                plot << "'" << file << "' with linespoints ps 0.8" << style.line << " title "
-                     << quoted(t->label) << ", ";
-            }
+            reference.push_back(t->reference);
         }
-        const std::string text = plot.str();
-        gp << "set output 'trend_" << metric << ".svg'\nset title " << quoted(label + " against N")
-           << "\nset logscale x\nset xlabel 'N (particles)'\nset ylabel " << quoted(label)
-           << "\nplot " << text.substr(0, text.size() - 2) << "\nunset logscale\n";
-        files.push_back("plots/trend_" + metric + ".svg");
+        const auto parts = split_series(reference);
+        for (std::size_t p = 0; p < parts.size(); ++p) {
+            std::ostringstream part;
+            for (const std::size_t i : parts[p]) {
+                const Trend* t = series[i];
+                label = t->metric_label;
+                const SeriesStyle& style = styles[i];
+                const std::string file = "trend_" + metric + "_" + std::to_string(i + 1) + ".dat";
+                if (t->reference) {
+                    write_text_file(plots / file, band_columns(t->count, t->mean, t->sd));
+                    part << "'" << file << "' using 1:2:3 with filledcurves" << style.band
+                         << line_only(style.line) << " title " << quoted(t->label + " ± 2 sd")
+                         << ", ";
+                } else {
+                    write_text_file(plots / file, columns(t->count, t->mean));
+                    part << "'" << file << "' with linespoints ps 1.2" << style.line << " title "
+                         << quoted(t->label) << ", ";
+                }
+            }
+            const std::string text = part.str();
+            const std::string name =
+                "trend_" + metric + (p == 0 ? "" : "_" + std::to_string(p + 1)) + ".svg";
+            const std::string of = parts.size() > 1 ? " (" + std::to_string(p + 1) + " of " +
+                                                          std::to_string(parts.size()) + ")"
+                                                    : "";
+            gp << "set output '" << name << "'\nset title " << quoted(label + " against N" + of)
+               << "\nset logscale x\nset xlabel 'N (particles)'\nset ylabel " << quoted(label)
+               << "\nplot " << text.substr(0, text.size() - 2) << "\nunset logscale\n";
+            files.push_back("plots/" + name);
+        }
     }
     return files;
 }
@@ -421,6 +433,64 @@ std::vector<PlotPanel> panels_per_comparison(const Report& report) {
     return panels;
 }
 
+std::vector<std::vector<std::size_t>> split_series(const std::vector<bool>& reference) {
+    std::vector<std::size_t> refs, cands;
+    for (std::size_t i = 0; i < reference.size(); ++i) {
+        (reference[i] ? refs : cands).push_back(i);
+    }
+    const auto chunks = [](const std::vector<std::size_t>& items, std::size_t size) {
+        std::vector<std::vector<std::size_t>> out;
+        for (std::size_t i = 0; i < items.size(); i += size) {
+            out.emplace_back(
+                items.begin() + static_cast<std::ptrdiff_t>(i),
+                items.begin() + static_cast<std::ptrdiff_t>(std::min(items.size(), i + size)));
+        }
+        return out;
+    };
+    if (refs.empty() || cands.empty()) {
+        std::vector<std::size_t> all(reference.size());
+        for (std::size_t i = 0; i < all.size(); ++i) {
+            all[i] = i;
+        }
+        return chunks(all, kMaxSeries);
+    }
+    const std::size_t per_ref = std::min<std::size_t>(refs.size(), 3);
+    std::vector<std::vector<std::size_t>> out;
+    for (const auto& r : chunks(refs, per_ref)) {
+        for (const auto& c : chunks(cands, kMaxSeries - per_ref)) {
+            out.push_back(c);
+            out.back().insert(out.back().end(), r.begin(), r.end());
+        }
+    }
+    return out;
+}
+
+namespace {
+
+/// `panel` cut into panels of at most kMaxSeries curves (split_series).
+std::vector<PlotPanel> split_panel(const PlotPanel& panel) {
+    std::vector<bool> reference;
+    for (const auto& curve : panel.curves) {
+        reference.push_back(curve.reference);
+    }
+    const auto parts = split_series(reference);
+    std::vector<PlotPanel> out;
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+        PlotPanel part{panel.stem + (p == 0 ? "" : "_" + std::to_string(p + 1)),
+                       panel.what + (parts.size() > 1 ? " (" + std::to_string(p + 1) + " of " +
+                                                            std::to_string(parts.size()) + ")"
+                                                      : ""),
+                       {}};
+        for (const std::size_t k : parts[p]) {
+            part.curves.push_back(panel.curves[k]);
+        }
+        out.push_back(std::move(part));
+    }
+    return out;
+}
+
+}  // namespace
+
 std::vector<PlotPanel> panels_per_count(const Report& report) {
     std::vector<PlotPanel> panels;
     std::vector<std::set<std::string>> drawn;
@@ -443,7 +513,13 @@ std::vector<PlotPanel> panels_per_count(const Report& report) {
                                                  &c.reference_curves, true, c.reference});
         }
     }
-    return panels;
+    std::vector<PlotPanel> split;
+    for (const PlotPanel& panel : panels) {
+        for (PlotPanel& part : split_panel(panel)) {
+            split.push_back(std::move(part));
+        }
+    }
+    return split;
 }
 
 PlotResult make_plots(const std::vector<PlotPanel>& panels, const std::vector<Trend>& trends,
@@ -461,8 +537,10 @@ PlotResult make_plots(const std::vector<PlotPanel>& panels, const std::vector<Tr
     const fs::path plots = directory / "plots";
     fs::create_directories(plots);
     std::ostringstream gp;
-    gp << "set terminal svg size 900,460 dynamic noenhanced font 'sans,12' background rgb "
-          "'white'\nset key outside right top samplen 2\nset grid\n"
+    // Drawn at 800 px and shown at 640 px: 16 pt text reads as about 13 px; the key goes
+    // below the plot, where it hides no curve.
+    gp << "set terminal svg size 800,520 dynamic noenhanced font 'sans,16' background rgb "
+          "'white'\nset key outside below center horizontal samplen 2 spacing 1.1\nset grid\n"
        << kPalette;
     std::vector<std::string> files = write_trend_plots(gp, plots, trends);
     for (const PlotPanel& panel : panels) {

@@ -370,7 +370,12 @@ std::string plots_html(const ReportContext& context, const std::vector<std::stri
     const auto stem_of = [&](std::size_t i) {
         const std::string& file = context.plot_files[i];
         const std::string name = file.substr(file.find('/') + 1);
-        return name.rfind("trend_", 0) == 0 ? std::string() : name.substr(0, name.rfind('_'));
+        // The count's (or comparison's) group: "N1002" of N1002_gr.svg and N1002_2_gr.svg.
+        if (name.rfind("trend_", 0) == 0) {
+            return std::string();
+        }
+        const std::string stem = name.substr(0, name.rfind('_'));
+        return stem.rfind('N', 0) == 0 ? stem.substr(0, stem.find('_')) : stem;
     };
     // The last group of plots (the largest count) is shown open; the others collapsed.
     std::string last_group;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "sgmp/report/agreement.hpp"
+#include "sgmp/report/dem_parameters.hpp"
 #include "sgmp/report/manifest.hpp"
 #include "sgmp/report/thesis_table.hpp"
 #include "sgmp/report/tuning.hpp"
@@ -119,6 +120,7 @@ struct CrossValidation {
     std::vector<StandIn> stand_ins;      // by reference, then candidate (best first)
     std::vector<ClassPair> class_pairs;  // the reference classes against each other
     std::vector<TunedParameter> tuning;  // disclosed on every page (tuning.hpp)
+    DemParameterTable dem_parameters;    // of the reference classes (dem_parameters.hpp)
 
     /// Whether a tuning line names `group`.
     [[nodiscard]] bool tuned(const std::string& group) const;

@@ -40,9 +40,19 @@ struct PlotPanel {
 
 /// One panel per comparison: candidate against reference.
 std::vector<PlotPanel> panels_per_comparison(const Report& report);
-/// One panel per particle count with every group compared at that count (a group drawn
-/// once); P(Z) is then drawn at δ = 1e-2 only.
+/// Per particle count, the groups compared at that count (a group drawn once) in panels
+/// of at most kMaxSeries curves (split_series); P(Z) is then drawn at δ = 1e-2 only.
+/// The first panel of count N has the stem "N<N>", the others "N<N>_2", "N<N>_3", …
 std::vector<PlotPanel> panels_per_count(const Report& report);
+
+/// Most series a plot shows.
+inline constexpr std::size_t kMaxSeries = 6;
+
+/// Series of one plot split into plots of at most kMaxSeries: when both kinds are present,
+/// every chunk of at most 3 references (the classes) is drawn with every chunk of at most
+/// kMaxSeries − min(references, 3) candidates; otherwise chunks of kMaxSeries. Each chunk
+/// lists indices into `reference` (candidates first), in their order.
+std::vector<std::vector<std::size_t>> split_series(const std::vector<bool>& reference);
 
 /// One group's values of a scalar metric against N: a candidate (points and lines) or a
 /// reference (a mean ± 2 sd band).

@@ -125,7 +125,11 @@ std::string command_line(int argc, char** argv) {
 Pack read_pack(const std::string& path) {
     ReadOptions options;
     options.threads = thread_count();  // the lines are parsed on the measurement's threads
-    Pack pack = read_pack_file(path, options).pack;
+    PackRead read = read_pack_file(path, options);
+    for (const std::string& warning : read.warnings) {
+        std::cerr << "sgmp-compare: warning: " << path << ": " << warning << "\n";
+    }
+    Pack pack = std::move(read.pack);
     if (pack.particles.empty()) {
         throw InputError(path, 0, "the pack has no particles");
     }

@@ -151,6 +151,9 @@ int convert(const ConvertOptions& o) {
         read_options.radius = o.radius;
     }
     PackRead read = read_pack_file(o.in, read_options);
+    for (const std::string& warning : read.warnings) {
+        std::fprintf(stderr, "sgmp convert: warning: %s: %s\n", o.in.c_str(), warning.c_str());
+    }
     warn_on_precision(read);
     warn_on_dem_start(read.pack, format);
     if (o.origin == "zero") {

@@ -1,7 +1,11 @@
 #include "sgmp/pack/xyz_format.hpp"
 
 #include <boost/test/unit_test.hpp>
+#include <filesystem>
+#include <fstream>
 #include <sstream>
+
+#include "sgmp/pack/pack_file.hpp"
 
 #include "sgmp/pack/line_reader.hpp"
 #include "sgmp/pack/random.hpp"
@@ -217,3 +221,28 @@ BOOST_AUTO_TEST_CASE(a_claimed_count_allocates_nothing_before_its_lines_arrive) 
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+// An extended XYZ's own orthogonal cell is its container (walls at the Lattice's x and z
+// faces, the floor at the Origin's y), as a dump's box is; a `container` key that differs
+// from the cell is kept and named in one warning; a skewed cell gives no container.
+BOOST_AUTO_TEST_CASE(the_lattice_cell_is_the_container_unless_a_key_says_otherwise) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "sgmp_xyz_cell_test";
+    fs::create_directories(dir);
+    const auto read = [&](const std::string& header) {
+        std::ofstream(dir / "c.xyz")
+            << "1\n"
+            << header << " Properties=species:S:1:pos:R:3:radius:R:1\nAr 1 1 1 0.5\n";
+        return read_pack_file(dir / "c.xyz", ReadOptions{});
+    };
+    const PackRead own = read(R"(Lattice="6 0 0 0 7 0 0 0 8" Origin="1 2 3")");
+    BOOST_TEST(own.pack.metadata.get("container").value_or("") == "1 7 3 11 2");
+    BOOST_TEST(own.warnings.empty());
+    const PackRead keyed = read(R"(Lattice="6 0 0 0 7 0 0 0 8" container="0 1 0 1 0")");
+    BOOST_TEST(keyed.pack.metadata.get("container").value_or("") == "0 1 0 1 0");
+    BOOST_TEST_REQUIRE(keyed.warnings.size() == 1U);
+    BOOST_TEST(keyed.warnings[0].find("'0 6 0 8 0'") != std::string::npos, keyed.warnings[0]);
+    const PackRead skewed = read(R"(Lattice="6 0 0 1 7 0 0 0 8")");
+    BOOST_TEST(!skewed.pack.metadata.contains("container"));
+    fs::remove_all(dir);
+}

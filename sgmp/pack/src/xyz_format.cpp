@@ -377,13 +377,14 @@ bool is_derived_key(const std::string& key) {
     return name == "properties" || name == "pbc" || name == "lattice" || name == "origin";
 }
 
-/// A `Lattice` (9 numbers) or `Origin` (3) the reader does not use must still be a cell:
-/// finite numbers, and a Lattice's diagonal ≥ 0 (ASE and OVITO read it).
-void check_cell_key(const std::string& key, const std::string& value, const LineReader& reader) {
+/// A `Lattice` (9 numbers) or `Origin` (3) must be a cell: finite numbers, and a Lattice's
+/// diagonal ≥ 0 (ASE and OVITO read it). Returns its numbers (none for another key).
+std::vector<double> cell_numbers(const std::string& key, const std::string& value,
+                                 const LineReader& reader) {
     const std::string name = lower(key);
     const std::size_t expected = name == "lattice" ? 9 : name == "origin" ? 3 : 0;
     if (expected == 0) {
-        return;
+        return {};
     }
     std::vector<double> numbers;
     const char* p = value.data();
@@ -406,6 +407,51 @@ void check_cell_key(const std::string& key, const std::string& value, const Line
         (expected == 9 && (numbers[0] < 0.0 || numbers[4] < 0.0 || numbers[8] < 0.0))) {
         throw reader.error(key + "=\"" + value + "\" must be " + std::to_string(expected) +
                            " finite numbers" + (expected == 9 ? ", its diagonal >= 0" : ""));
+    }
+    return numbers;
+}
+
+/// The file's own cell as its container: walls at the Lattice's x and z faces, the floor
+/// at its lowest y (as a dump's box, dump_format.cpp), when the Lattice is an orthogonal
+/// box of positive width; with a `container` key too, a container that differs from the
+/// cell in x, z or the floor is kept and named in a warning.
+void take_cell(const std::vector<double>& lattice, const std::vector<double>& origin,
+               PackRead& read) {
+    const bool orthogonal = lattice.size() == 9 && lattice[1] == 0.0 && lattice[2] == 0.0 &&
+                            lattice[3] == 0.0 && lattice[5] == 0.0 && lattice[6] == 0.0 &&
+                            lattice[7] == 0.0 && lattice[0] > 0.0 && lattice[8] > 0.0;
+    if (!orthogonal) {
+        return;
+    }
+    const double ox = origin.empty() ? 0.0 : origin[0];
+    const double oy = origin.empty() ? 0.0 : origin[1];
+    const double oz = origin.empty() ? 0.0 : origin[2];
+    const Container cell{ox, ox + lattice[0], oz, oz + lattice[8], oy};
+    const auto key = read.pack.metadata.get("container");
+    if (read.pack.metadata.contains("box")) {
+        return;  // written in an output frame: the cell is the turned box (output_frame.hpp)
+    }
+    if (!key) {
+        read.pack.metadata.set("container", cell.to_string());
+        return;
+    }
+    Container stated;
+    try {
+        stated = Container::parse(*key);
+    } catch (const std::invalid_argument&) {
+        return;  // the key's own check reports it where the container is used
+    }
+    const double tolerance = 1e-9 * std::max(1.0, std::abs(lattice[0]) + std::abs(lattice[8]));
+    const bool same = std::abs(stated.x_min - cell.x_min) <= tolerance &&
+                      std::abs(stated.x_max - cell.x_max) <= tolerance &&
+                      std::abs(stated.z_min - cell.z_min) <= tolerance &&
+                      std::abs(stated.z_max - cell.z_max) <= tolerance &&
+                      std::abs(stated.floor - cell.floor) <= tolerance;
+    if (!same) {
+        read.warnings.push_back(
+            "container '" + *key +
+            "' (x_min x_max z_min z_max floor) is not the Lattice/Origin cell '" +
+            cell.to_string() + "'; the container key is used");
     }
 }
 
@@ -444,15 +490,20 @@ PackRead read_frame(const std::string& count_line, std::size_t frame, const Read
     PackRead read;
     read.frame = frame;
     std::optional<Columns> columns;
+    std::vector<double> lattice;
+    std::vector<double> origin;
     for (auto& [key, value] : parse_comment(line, reader)) {
         if (lower(key) == "properties") {
             columns = parse_properties(value, options.radius.has_value(), reader);
         } else if (!is_derived_key(key)) {
             read.pack.metadata.set(key, std::move(value));
-        } else {
-            check_cell_key(key, value, reader);
+        } else if (lower(key) == "lattice") {
+            lattice = cell_numbers(key, value, reader);
+        } else if (lower(key) == "origin") {
+            origin = cell_numbers(key, value, reader);
         }
     }
+    take_cell(lattice, origin, read);
     if (!columns) {
         throw reader.error("header lacks Properties=...");
     }

@@ -4,6 +4,8 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "sgmp/pack/pack.hpp"
 
@@ -29,6 +31,10 @@ struct PackRead {
     /// (for "1.5e-05", 6), so 0.5·10^-decimals bounds each number's rounding; nullopt when
     /// the reader does not track it.
     std::optional<int> decimals;
+    /// Things the reader decided that the user should hear of, one line each (the front
+    /// ends print them as warnings): an extended XYZ whose `container` key disagrees with
+    /// its Lattice/Origin cell (the key is kept).
+    std::vector<std::string> warnings;
 };
 
 }  // namespace sgmp

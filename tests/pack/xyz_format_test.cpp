@@ -5,7 +5,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "sgmp/pack/pack_extent.hpp"
 #include "sgmp/pack/pack_file.hpp"
+#include "sgmp/pack/pack_format.hpp"
 
 #include "sgmp/pack/line_reader.hpp"
 #include "sgmp/pack/random.hpp"
@@ -244,5 +246,38 @@ BOOST_AUTO_TEST_CASE(the_lattice_cell_is_the_container_unless_a_key_says_otherwi
     BOOST_TEST(keyed.warnings[0].find("'0 6 0 8 0'") != std::string::npos, keyed.warnings[0]);
     const PackRead skewed = read(R"(Lattice="6 0 0 1 7 0 0 0 8")");
     BOOST_TEST(!skewed.pack.metadata.contains("container"));
+    fs::remove_all(dir);
+}
+
+// Periodic sides travel with the file: an extended XYZ says pbc="T F T" (ASE and OVITO read
+// periodic x and z), a dump "pp ff pp"; either read back as sides=periodic, and an ASE file
+// with pbc="T F T" and no sides key is periodic too. Wall packs keep pbc="F F F".
+BOOST_AUTO_TEST_CASE(periodic_sides_are_written_as_pbc_and_read_back) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "sgmp_xyz_pbc_test";
+    fs::create_directories(dir);
+    Pack pack;
+    pack.metadata.set("sides", "periodic");
+    pack.particles = {Particle{1, Vec3(0.6, -0.5, 0.0), 0.05, 0}};
+    for (const char* name : {"p.xyz", "p.dump"}) {
+        write_pack_as(dir / name, pack, *format_from_extension(dir / name), WriteOptions{true});
+        const Pack back = read_pack_file(dir / name);
+        BOOST_TEST(back.metadata.get("sides").value_or("") == "periodic", name);
+        BOOST_TEST(container_of(back).periodic, name);
+    }
+    std::ifstream xyz(dir / "p.xyz");
+    std::string line;
+    std::getline(xyz, line);
+    std::getline(xyz, line);
+    BOOST_TEST(line.find("pbc=\"T F T\"") != std::string::npos, line);
+    std::ofstream(dir / "ase.xyz") << "1\nLattice=\"2 0 0 0 2 0 0 0 2\" pbc=\"T F T\" "
+                                      "Properties=species:S:1:pos:R:3:radius:R:1\nAr 1 1 1 0.5\n";
+    BOOST_TEST(read_pack_file(dir / "ase.xyz").metadata.get("sides").value_or("") == "periodic");
+    pack.metadata = {};
+    write_pack_as(dir / "w.xyz", pack, PackFormat::xyz, WriteOptions{true});
+    std::ifstream walls(dir / "w.xyz");
+    std::getline(walls, line);
+    std::getline(walls, line);
+    BOOST_TEST(line.find("pbc=\"F F F\"") != std::string::npos, line);
     fs::remove_all(dir);
 }

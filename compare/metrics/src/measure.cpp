@@ -124,7 +124,9 @@ Container container_of(const Pack& pack, std::string* source) {
     if (source != nullptr) {
         *source = text ? "metadata" : "thesis default";
     }
-    return text ? Container::parse(*text) : Container{};
+    Container c = text ? Container::parse(*text) : Container{};
+    c.periodic = pack.metadata.get("sides").value_or("walls") == "periodic";
+    return c;
 }
 
 /// The particles sorted along a Morton curve of cells of side d, so that particles near in

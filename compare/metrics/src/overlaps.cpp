@@ -4,6 +4,7 @@
 
 #include "sgmp/metrics/parallel.hpp"
 #include "sgmp/pack/pack_overlaps.hpp"
+#include "sgmp/pack/periodic_images.hpp"
 
 namespace sgmp::metrics {
 namespace {
@@ -102,12 +103,19 @@ OverlapSummary summarise(Tally tally, std::size_t limit) {
 OverlapStats measure_overlaps(const std::vector<Particle>& particles, const Container& container,
                               double mean_diameter, double floor, std::size_t worst_count) {
     // The pairs in work items of fixed size, folded in order: the depth sum is the same
-    // for any thread count.
-    const OverlapSearch search(particles);
+    // for any thread count. With periodic sides, minimum-image pairs through the images
+    // (periodic_images.hpp), each once.
+    const ImagedParticles imaged =
+        with_periodic_images(particles, container, 2.0 * max_radius(particles));
+    const OverlapSearch search(imaged.particles);
     const Tally pairs = chunked_reduce(
         particles.size(), kSpheresPerChunk, Tally{},
         [&](Tally& tally, std::size_t first, std::size_t last) {
-            search.pairs_from(first, last, [&](std::size_t i, std::size_t j, double depth) {
+            search.pairs_from(first, last, [&](std::size_t i, std::size_t image, double depth) {
+                const std::size_t j = imaged.source[image];
+                if (image >= imaged.originals && !(i < j)) {
+                    return;  // met as (j, image of i)
+                }
                 add_depth(tally, depth / mean_diameter, floor, worst_count, [&] {
                     const std::int64_t a = particles[i].id;
                     const std::int64_t b = particles[j].id;

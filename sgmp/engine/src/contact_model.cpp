@@ -87,8 +87,10 @@ double first_plane_on(const Container& box, const Meridian& m, double r) {
         if (sine >= std::sin(m.phi0) && sine <= 1.0)
             end = std::min(end, std::asin(sine));
     };
-    wall(m.cj.x(), m.u.x(), m.u.x() > 0 ? box.x_max - r : box.x_min + r);
-    wall(m.cj.z(), m.u.z(), m.u.z() > 0 ? box.z_max - r : box.z_min + r);
+    if (!box.periodic) {
+        wall(m.cj.x(), m.u.x(), m.u.x() > 0 ? box.x_max - r : box.x_min + r);
+        wall(m.cj.z(), m.u.z(), m.u.z() > 0 ? box.z_max - r : box.z_min + r);
+    }
     return end;
 }
 
@@ -132,8 +134,10 @@ Vec3 roll_over_support(const SettledGrid& grid, const Container& container, doub
         return c;
     }
     Vec3 p = m.cj + D * (std::sin(end) * u + std::cos(end) * Vec3::UnitY());
-    p.x() = std::clamp(p.x(), container.x_min + r, container.x_max - r);
-    p.z() = std::clamp(p.z(), container.z_min + r, container.z_max - r);
+    if (!container.periodic) {
+        p.x() = std::clamp(p.x(), container.x_min + r, container.x_max - r);
+        p.z() = std::clamp(p.z(), container.z_min + r, container.z_max - r);
+    }
     p.y() = std::max(p.y(), container.floor + r);
     return clear_at(grid, container, r_max, p, r) ? p : c;
 }

@@ -128,7 +128,7 @@ void deposit(std::vector<Particle>& particles, const PackRequest& request,
     const std::size_t report_every = 1000;
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const DropOutcome outcome = protocol.drop(particles[i], rng);
-        particles[i].center = outcome.center;
+        particles[i].center = container.wrapped(outcome.center);
         protocol.settle(particles[i]);
         local.moves += outcome.moves;
         switch (outcome.reason) {
@@ -218,6 +218,12 @@ void validate(const PackRequest& request) {
                                  " it gives at phi_target " + format_number(request.phi_target) +
                                  " does not fit the 1.25-wide container");
     }
+    if (request.sides == Sides::Periodic && !(4.0 * sizes.largest <= kContainerSide)) {
+        throw ParameterError("sides", "periodic",
+                             "the largest diameter " + format_number(sizes.largest) +
+                                 " must fit the 1.25-wide periodic cell at least 4 times across "
+                                 "(at most 0.3125; more particles or a smaller size ratio)");
+    }
     check_pack_parameters(request, "protocol", {sizes.smallest});
     check_pack_parameters(request, "relax", {sizes.smallest});
 }
@@ -237,7 +243,8 @@ Pack make_start_pack(const PackRequest& request) {
 Pack make_pack(const PackRequest& request, const ProgressCallback& progress, PackStats* stats,
                const RelaxProgressCallback& relax_progress) {
     validate(request);
-    const Container container;
+    Container container;
+    container.periodic = request.sides == Sides::Periodic;
     const Sizes sizes = sizes_of(request);
     const double d = sizes.scale;
     Random rng(request.seed);

@@ -40,6 +40,34 @@ Protocol::Protocol(const Container& container, const ProtocolParams& params, dou
 
 void Protocol::settle(const Particle& p) {
     grid_.insert(Sphere{p.center.x(), p.center.y(), p.center.z(), p.radius});
+    if (!container_.periodic) {
+        return;
+    }
+    // Its images one period away, wherever a sphere inside the cell (or one moving up to
+    // a period's margin outside it before it is wrapped) could reach them: within
+    // 2·r_max + the reach of a sweep of the face. The grid keeps points beyond its
+    // columns in its edge cells, where the scans near a face find them.
+    const double margin = 4.0 * max_radius_;
+    const double lx = container_.x_max - container_.x_min;
+    const double lz = container_.z_max - container_.z_min;
+    const Vec3& c = p.center;
+    const auto shifts = [&](double v, double lo, double hi, double period) {
+        std::vector<double> s{0.0};
+        if (v - lo < margin) {
+            s.push_back(period);
+        }
+        if (hi - v < margin) {
+            s.push_back(-period);
+        }
+        return s;
+    };
+    for (const double sx : shifts(c.x(), container_.x_min, container_.x_max, lx)) {
+        for (const double sz : shifts(c.z(), container_.z_min, container_.z_max, lz)) {
+            if (sx != 0.0 || sz != 0.0) {
+                grid_.insert(Sphere{c.x() + sx, c.y(), c.z() + sz, p.radius});
+            }
+        }
+    }
 }
 
 Protocol::Fall Protocol::fall_exact(const Vec3& c, double r) const {
@@ -127,7 +155,7 @@ void Protocol::gather_near(const Vec3& c, double r, double s) {
             near_.push_back(Blocker{a, b, q});
         }
     }
-    if (params_.walls == WallRule::Block) {
+    if (params_.walls == WallRule::Block && !container_.periodic) {
         // A wall is one more linear constraint: the sample crosses x_max iff
         // c_x + s·u_x + r > x_max ⟺ −s·u_x < c_x + r − x_max (likewise for the others).
         const auto wall = [&](double a, double b, double q) {
@@ -317,7 +345,7 @@ DropOutcome Protocol::drop(const Particle& particle, Random& rng) {
             }
             return rest(c, r, StopReason::NoFreeArc, moves);
         }
-        c = target;
+        c = container_.wrapped(target);  // periodic sides: back into the cell
         previous = move;
     }
 }

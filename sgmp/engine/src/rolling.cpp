@@ -111,6 +111,9 @@ Hit first_hit(const Context& ctx, const Arc& arc, const Sphere* contacts, int co
             hit = Hit{phi, kind, Sphere{}};
     };
     plane(arc.m.y() - ctx.box.floor - r, arc.rho * arc.e1.y(), arc.rho * arc.e2.y(), Kind::Floor);
+    if (ctx.box.periodic) {
+        return hit;  // no walls
+    }
     plane(ctx.box.x_max - r - arc.m.x(), -arc.rho * arc.e1.x(), -arc.rho * arc.e2.x(), Kind::Wall);
     plane(arc.m.x() - ctx.box.x_min - r, arc.rho * arc.e1.x(), arc.rho * arc.e2.x(), Kind::Wall);
     plane(ctx.box.z_max - r - arc.m.z(), -arc.rho * arc.e1.z(), -arc.rho * arc.e2.z(), Kind::Wall);

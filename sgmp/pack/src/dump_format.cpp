@@ -125,7 +125,9 @@ Pack read_snapshot(LineReader& reader) {
     const std::int64_t step = expect_integer(reader, "the timestep");
     expect_item(reader, "NUMBER OF ATOMS");
     const std::int64_t count = expect_integer(reader, "the number of atoms");
-    expect_item(reader, "BOX BOUNDS");
+    const auto flags = detail::split_fields(expect_item(reader, "BOX BOUNDS"));
+    // "pp ff pp": periodic x and z (LAMMPS' boundary p f p), the sides of a periodic cell.
+    const bool periodic = flags.size() >= 3 && flags[0] == "pp" && flags[2] == "pp";
     std::string box;
     std::array<std::pair<double, double>, 3> bounds{};
     for (int axis = 0; axis < 3; ++axis) {
@@ -156,6 +158,9 @@ Pack read_snapshot(LineReader& reader) {
     pack.metadata.set("container", Container{bounds[0].first, bounds[0].second, bounds[2].first,
                                              bounds[2].second, bounds[1].first}
                                        .to_string());
+    if (periodic) {
+        pack.metadata.set("sides", "periodic");
+    }
     // The count is only a claim until the lines arrive (see read_xyz_lines).
     pack.particles.reserve(static_cast<std::size_t>(std::min<std::int64_t>(count, 1 << 16)));
     detail::ParticleValidator validator;

@@ -32,10 +32,28 @@ Container Container::parse(const std::string& text) {
 }
 
 double Container::penetration(const Vec3& center, double radius) const {
+    if (periodic) {
+        return std::max(0.0, floor - (center.y() - radius));
+    }
     const double worst = std::max({x_min - (center.x() - radius), (center.x() + radius) - x_max,
                                    z_min - (center.z() - radius), (center.z() + radius) - z_max,
                                    floor - (center.y() - radius)});
     return std::max(0.0, worst);
+}
+
+Vec3 Container::wrapped(const Vec3& center) const {
+    if (!periodic) {
+        return center;
+    }
+    const auto wrap = [](double v, double lo, double hi) {
+        const double period = hi - lo;
+        double w = v - period * std::floor((v - lo) / period);
+        if (w >= hi) {  // rounding at the upper face
+            w -= period;
+        }
+        return w < lo ? lo : w;
+    };
+    return Vec3(wrap(center.x(), x_min, x_max), center.y(), wrap(center.z(), z_min, z_max));
 }
 
 Box Container::box_up_to(double top) const {

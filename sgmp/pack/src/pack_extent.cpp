@@ -9,7 +9,9 @@ namespace sgmp {
 
 Container container_of(const Pack& pack) {
     const auto text = pack.metadata.get("container");
-    return text ? Container::parse(*text) : Container{};
+    Container c = text ? Container::parse(*text) : Container{};
+    c.periodic = pack.metadata.get("sides").value_or("walls") == "periodic";
+    return c;
 }
 
 double top_of(const Pack& pack, const Container& container) {

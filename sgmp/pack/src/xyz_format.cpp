@@ -461,6 +461,14 @@ std::string lattice_text(const Box& box) {
            format_number(side.z());
 }
 
+/// The `pbc` of a pack: periodic sides are x and z, or x and y when written z up.
+std::string pbc_text(const Pack& pack) {
+    if (!container_of(pack).periodic) {
+        return "F F F";
+    }
+    return pack.metadata.get("up_axis").value_or("y") == "z" ? "T T F" : "T F T";
+}
+
 /// The cell written as Lattice and Origin: the container from the floor to the top (not
 /// widened: a pack's own cell), or the output frame's box (output_frame.hpp).
 Box written_xyz_box(const Pack& pack) {
@@ -492,6 +500,7 @@ PackRead read_frame(const std::string& count_line, std::size_t frame, const Read
     std::optional<Columns> columns;
     std::vector<double> lattice;
     std::vector<double> origin;
+    std::string pbc;
     for (auto& [key, value] : parse_comment(line, reader)) {
         if (lower(key) == "properties") {
             columns = parse_properties(value, options.radius.has_value(), reader);
@@ -501,6 +510,19 @@ PackRead read_frame(const std::string& count_line, std::size_t frame, const Read
             lattice = cell_numbers(key, value, reader);
         } else if (lower(key) == "origin") {
             origin = cell_numbers(key, value, reader);
+        } else if (lower(key) == "pbc") {
+            pbc = value;
+        }
+    }
+    // Periodic x and z (ASE, OVITO: pbc="T F T") are periodic sides, unless the header
+    // says otherwise; a file written z up says so (up_axis) and is turned back later.
+    if (!read.pack.metadata.contains("sides") && !read.pack.metadata.contains("up_axis")) {
+        const auto flags = detail::split_fields(pbc);
+        const auto on = [](std::string_view f) {
+            return f == "T" || f == "t" || f == "True" || f == "true" || f == "1";
+        };
+        if (flags.size() == 3 && on(flags[0]) && on(flags[2])) {
+            read.pack.metadata.set("sides", "periodic");
         }
     }
     take_cell(lattice, origin, read);
@@ -560,7 +582,8 @@ void write_xyz(std::ostream& out, const Pack& pack) {
     const bool species = has_species(pack.particles);
     out << "Properties=" << kProperties << (species ? kSpeciesProperty : "") << " Lattice=\""
         << lattice_text(box) << "\" Origin=\"" << format_number(box.lo.x()) << ' '
-        << format_number(box.lo.y()) << ' ' << format_number(box.lo.z()) << "\" pbc=\"F F F\"";
+        << format_number(box.lo.y()) << ' ' << format_number(box.lo.z()) << "\" pbc=\""
+        << pbc_text(pack) << "\"";
     for (const auto& [key, value] : pack.metadata.entries()) {
         if (is_derived_key(key)) {
             continue;

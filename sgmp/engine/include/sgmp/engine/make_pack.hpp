@@ -18,6 +18,7 @@
 #include "sgmp/engine/protocol_params.hpp"
 #include "sgmp/engine/relax.hpp"
 #include "sgmp/engine/relax_params.hpp"
+#include "sgmp/engine/sides.hpp"
 #include "sgmp/engine/size_modes.hpp"
 #include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/pack.hpp"
@@ -40,6 +41,8 @@ struct PackRequest {
     std::string size_distribution;
     /// Relaxation after deposition (relax.hpp); none by default.
     RelaxParams relax;
+    /// The container's lateral sides (sides.hpp): the thesis' walls by default.
+    Sides sides = Sides::Walls;
 };
 
 /// What happened during packing (also recorded in the pack's metadata).

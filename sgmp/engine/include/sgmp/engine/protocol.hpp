@@ -116,14 +116,16 @@ class Protocol {
     void gather_near(const Vec3& c, double r, double s);
     /// True when the centre displaced by (ox, oz) from c overlaps no settled sphere.
     [[nodiscard]] bool free_at(const Vec3& c, double r, double ox, double oz) const;
-    // (The wall tests are defined here so that the drop loop inlines them: once per move.)
+    // (The wall tests are defined here so that the drop loop inlines them: once per move.
+    // Periodic sides have no walls.)
     [[nodiscard]] bool crosses_wall(double x, double z, double r) const {
-        return x - r < container_.x_min || x + r > container_.x_max || z - r < container_.z_min ||
-               z + r > container_.z_max;
+        return !container_.periodic && (x - r < container_.x_min || x + r > container_.x_max ||
+                                        z - r < container_.z_min || z + r > container_.z_max);
     }
     [[nodiscard]] bool touches_wall(const Vec3& c, double r) const {
-        return c.x() - r <= container_.x_min || c.x() + r >= container_.x_max ||
-               c.z() - r <= container_.z_min || c.z() + r >= container_.z_max;
+        return !container_.periodic &&
+               (c.x() - r <= container_.x_min || c.x() + r >= container_.x_max ||
+                c.z() - r <= container_.z_min || c.z() + r >= container_.z_max);
     }
     /// Chooses the move direction; false when no stage has a free position.
     bool choose_move(const Vec3& c, double r, double s, const Move& previous, Random& rng,

@@ -13,10 +13,10 @@
 /// the file (a dump still being written, or a stopped run), even in the middle of a line,
 /// is skipped when an earlier one is complete. An error followed by further lines, or in
 /// the only snapshot, rejects the file. The timestep and box are recorded in the metadata
-/// (`timestep`, `dump_box`); a `bin` column, if present, gives the colour bins and a `species` column the species; velocity
-/// columns `vx vy vz`, when all three are present, give `velocity_rms`, the root mean
-/// square speed √(Σ|vᵢ|²/N) in the dump's units (a DEM pour's kinetic energy per particle
-/// is m·velocity_rms²/2). Errors name source:line and the reason.
+/// (`timestep`, `dump_box`); a `bin` column, if present, gives the colour bins and a `species`
+/// column the species; velocity columns `vx vy vz`, when all three are present, give
+/// `velocity_rms`, the root mean square speed √(Σ|vᵢ|²/N) in the dump's units (a DEM pour's kinetic
+/// energy per particle is m·velocity_rms²/2). Errors name source:line and the reason.
 ///
 /// The writer gives one snapshot, `ITEM: ATOMS id type x y z radius bin` (and `species`
 /// when the pack has species), with the box

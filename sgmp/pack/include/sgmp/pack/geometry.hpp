@@ -39,20 +39,28 @@ inline constexpr std::size_t kMaxCount = 10'000'000;
 
 /// The container: walls at x = x_min, x_max and z = z_min, z_max, a floor at y = floor,
 /// no lid. A particle is inside when its sphere lies between the walls and above the floor.
+/// With periodic sides (`sides=periodic` in a pack's header) x and z are periodic with
+/// periods x_max − x_min and z_max − z_min: there are no walls, only the floor, and a
+/// centre belongs in [x_min, x_max) × [z_min, z_max).
 struct Container {
     double x_min = -0.625;
     double x_max = 0.625;
     double z_min = -0.625;
     double z_max = 0.625;
     double floor = -0.625;
+    bool periodic = false;  ///< x and z periodic (not part of to_string: the `sides` key)
 
     /// The five numbers "x_min x_max z_min z_max floor" as written in pack headers.
     [[nodiscard]] std::string to_string() const;
     /// Parses the text of `to_string`; throws std::invalid_argument naming the text.
     static Container parse(const std::string& text);
 
-    /// Largest amount by which the sphere crosses a wall or the floor (0 when inside).
+    /// Largest amount by which the sphere crosses a wall or the floor (0 when inside); with
+    /// periodic sides, the floor only.
     [[nodiscard]] double penetration(const Vec3& center, double radius) const;
+    /// The centre moved by whole periods into [x_min, x_max) × [z_min, z_max) when periodic;
+    /// unchanged otherwise.
+    [[nodiscard]] Vec3 wrapped(const Vec3& center) const;
     /// The container as a box reaching up to `top`.
     [[nodiscard]] Box box_up_to(double top) const;
 };

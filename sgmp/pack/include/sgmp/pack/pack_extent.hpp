@@ -10,7 +10,8 @@
 namespace sgmp {
 
 /// The container recorded in the header (`container="x_min x_max z_min z_max floor"`), or
-/// the testbed's when the key is absent. Throws std::invalid_argument for a malformed key.
+/// the testbed's when the key is absent; periodic when `sides=periodic`. Throws
+/// std::invalid_argument for a malformed key.
 Container container_of(const Pack& pack);
 
 /// max_i (y_i + r_i), never below the floor; for an empty pack the floor plus the

@@ -13,6 +13,7 @@
 
 #include "sgmp/pack/cell_grid.hpp"
 #include "sgmp/pack/geometry.hpp"
+#include "sgmp/pack/periodic_images.hpp"
 
 namespace sgmp {
 
@@ -49,11 +50,25 @@ class OverlapSearch {
 
 /// Calls on_pair(i, j, depth) for every overlapping pair i < j (indices into
 /// `particles`, in CellGrid::for_each_pair order), then on_wall(i, depth) for every sphere
-/// crossing the container, in index order. Depths are lengths, > 0.
+/// crossing the container, in index order. Depths are lengths, > 0. With periodic sides
+/// (Container::periodic) pairs are minimum-image pairs (periodic_images.hpp), found after
+/// the direct ones, and only the floor is a wall.
 template <class OnPair, class OnWall>
 void for_each_overlap(const std::vector<Particle>& particles, const Container& container,
                       OnPair&& on_pair, OnWall&& on_wall) {
-    OverlapSearch(particles).pairs_from(0, particles.size(), on_pair);
+    if (!container.periodic) {
+        OverlapSearch(particles).pairs_from(0, particles.size(), on_pair);
+    } else {
+        const ImagedParticles imaged =
+            with_periodic_images(particles, container, 2.0 * max_radius(particles));
+        OverlapSearch(imaged.particles)
+            .pairs_from(0, imaged.originals, [&](std::size_t i, std::size_t j, double depth) {
+                const std::size_t k = imaged.source[j];
+                if (j < imaged.originals || i < k) {
+                    on_pair(i, k, depth);
+                }
+            });
+    }
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const double depth = container.penetration(particles[i].center, particles[i].radius);
         if (depth > 0.0) {

@@ -17,12 +17,12 @@
 ///
 /// The reader finds columns by the Properties descriptor, names in any case (`Radius`,
 /// `POS`), any order, extra columns ignored; `radius` may be replaced by `diameter`, the
-/// bin (`bin`, or the older `color`) and `species_id` (1…) are optional, and without a radius or diameter the
-/// caller's radius (`ReadOptions::radius`) is used. A bare key (`key` without `=value`, as
-/// ASE writes a true flag) is kept as `key=T`. A file may hold several frames one after
-/// another; one is returned (ReadOptions::frame, from 1; the last by default). Anything
-/// it cannot parse is rejected with source:line and the reason. Numbers are written in
-/// shortest round-trip form (std::to_chars), so a pack read back is bit-identical.
+/// bin (`bin`, or the older `color`) and `species_id` (1…) are optional, and without a radius or
+/// diameter the caller's radius (`ReadOptions::radius`) is used. A bare key (`key` without
+/// `=value`, as ASE writes a true flag) is kept as `key=T`. A file may hold several frames one
+/// after another; one is returned (ReadOptions::frame, from 1; the last by default). Anything it
+/// cannot parse is rejected with source:line and the reason. Numbers are written in shortest
+/// round-trip form (std::to_chars), so a pack read back is bit-identical.
 
 #include <istream>
 #include <ostream>

@@ -1,0 +1,22 @@
+#pragma once
+/// @file sides.hpp
+/// The container's lateral sides (`--sides`): the thesis' walls at x = x_min, x_max and
+/// z = z_min, z_max, or periodic x and z (Container::periodic), the floor kept either way.
+/// Periodic sides pack bulk material without wall layers (Rocpack-style propellant cells):
+/// a sphere near one face meets the images of the spheres near the opposite face, shifted
+/// by one period, and every centre is wrapped into the cell when it settles.
+#include <optional>
+#include <string_view>
+
+#include "sgmp/engine/name_table.hpp"
+
+namespace sgmp::engine {
+
+enum class Sides { Walls, Periodic };
+
+/// walls, periodic.
+const NameTable<Sides, 2>& sides_names();
+std::string_view to_string(Sides sides);
+std::optional<Sides> parse_sides(std::string_view text);
+
+}  // namespace sgmp::engine

@@ -1,0 +1,98 @@
+// Periodic sides (`--sides periodic`, sides.hpp): over arrangements, contact models, blends
+// and seeds, a brute-force minimum-image check of every pair finds no overlap beyond
+// rounding (1e-12·d), every centre lies in the cell, spheres touch across the faces, the
+// floor is the only wall, and the same request gives the same pack. A wall pack keeps its
+// header without a `sides` key. Periodic sides refuse a relaxation and spheres wider than
+// a quarter of the cell (exit 2 in the CLI tests' sense: ParameterError).
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+
+#include "sgmp/engine/make_pack.hpp"
+#include "sgmp/pack/parameter_error.hpp"
+
+using namespace sgmp;
+using namespace sgmp::engine;
+
+namespace {
+
+struct Periodic {
+    double min_gap_over_d = INFINITY;
+    std::size_t across = 0;  ///< pairs touching (gap ≤ 1e-9·d) only through a face
+    bool inside = true;
+};
+
+Periodic brute_force(const Pack& pack, double d) {
+    const Container c;  // the cell: the container's x and z ranges
+    const double lx = c.x_max - c.x_min, lz = c.z_max - c.z_min;
+    Periodic out;
+    const auto& p = pack.particles;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const Vec3& a = p[i].center;
+        out.inside = out.inside && a.x() >= c.x_min && a.x() < c.x_max && a.z() >= c.z_min &&
+                     a.z() < c.z_max && a.y() - p[i].radius >= c.floor - 1e-12 * d;
+        for (std::size_t j = i + 1; j < p.size(); ++j) {
+            Vec3 delta = p[j].center - a;
+            const double direct = delta.norm();
+            delta.x() -= lx * std::round(delta.x() / lx);
+            delta.z() -= lz * std::round(delta.z() / lz);
+            const double gap = delta.norm() - p[i].radius - p[j].radius;
+            out.min_gap_over_d = std::min(out.min_gap_over_d, gap / d);
+            if (gap <= 1e-9 * d && std::abs(direct - delta.norm()) > 1e-9 * d) {
+                ++out.across;
+            }
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(periodic_packs_have_no_overlap_under_the_minimum_image) {
+    for (const Arrangement arrangement : {Arrangement::LooseRandom, Arrangement::SmallDense}) {
+        for (const ContactModel contact :
+             {ContactModel::None, ContactModel::Settle, ContactModel::Roll}) {
+            for (const std::uint64_t seed : {1U, 2U}) {
+                for (const bool blend : {false, true}) {
+                    PackRequest request;
+                    request.count = 600;
+                    request.arrangement = arrangement;
+                    request.seed = seed;
+                    request.sides = Sides::Periodic;
+                    request.protocol.contact = contact;
+                    if (blend) {
+                        request.size_modes = {{1.0, 0.3}, {0.5, 0.7}};
+                    }
+                    const Pack pack = make_pack(request);
+                    const double d = *pack.metadata.get_number("diameter");
+                    const Periodic check = brute_force(pack, blend ? 0.5 * d : d);
+                    BOOST_TEST(check.inside);
+                    BOOST_TEST(check.min_gap_over_d >= -1e-12);
+                    BOOST_TEST(check.across > 0U);
+                    BOOST_TEST(pack.metadata.get("sides").value_or("") == "periodic");
+                    BOOST_TEST(pack.metadata.get_number("fixed_wall").value_or(-1) == 0.0);
+                    const Pack again = make_pack(request);
+                    bool same = again.particles.size() == pack.particles.size();
+                    for (std::size_t i = 0; same && i < pack.particles.size(); ++i) {
+                        same = again.particles[i].center == pack.particles[i].center;
+                    }
+                    BOOST_TEST(same);
+                }
+            }
+        }
+    }
+}
+
+BOOST_AUTO_TEST_CASE(periodic_sides_refuse_what_they_cannot_do) {
+    PackRequest request;
+    request.count = 600;
+    request.arrangement = Arrangement::LooseRandom;
+    request.sides = Sides::Periodic;
+    request.relax.mode = RelaxMode::Frictionless;
+    BOOST_CHECK_THROW(make_pack(request), ParameterError);
+    request.relax.mode = RelaxMode::None;
+    request.count = 60;  // d = 0.39 > 1.25 / 4
+    BOOST_CHECK_THROW(make_pack(request), ParameterError);
+    PackRequest walls;
+    walls.count = 300;
+    BOOST_TEST(!make_pack(walls).metadata.contains("sides"));
+}

@@ -60,7 +60,8 @@ void add_common(CLI::App* command, CommonOptions& o) {
     command
         ->add_option("--region", o.region,
                      "box measured: xlo xhi ylo yhi zlo zhi (length units; default the control "
-                     "volume -0.5 0.5 -0.5 0.5 -0.5 0.5); must lie inside the container")
+                     "volume -0.5 0.5 -0.5 0.5 -0.5 0.5, times the file's length_scale when it "
+                     "has one); must lie inside the container")
         ->expected(6);
     command->add_option("--slab", o.measure.slab_thickness,
                         "phi(y) slab thickness, in mean diameters d (default 1)");

@@ -123,7 +123,9 @@ int run_report(ReportOptions& o, const std::string& cmd) {
 
 /// Prints every key=value of the header, or the value of each asked key on its own line.
 int run_header(const HeaderOptions& o) {
-    const Pack pack = read_pack_file(o.pack);
+    ReadOptions as_written;
+    as_written.as_written = true;  // the header as the file has it (up_axis, box)
+    const Pack pack = read_pack_file(o.pack, as_written).pack;
     if (o.keys.empty()) {
         for (const auto& entry : pack.metadata.entries()) {
             std::cout << entry.first << "=" << entry.second << "\n";

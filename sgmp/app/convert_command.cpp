@@ -121,6 +121,11 @@ OutputFrame output_frame(const ConvertOptions& o) {
         throw UsageError{"--length-unit '" + o.length_unit +
                          "': give --length-scale, the length of one control-volume side in it"};
     }
+    if (o.origin == "zero" && (o.up == "z" || o.length_scale > 0.0)) {
+        throw UsageError{
+            "--origin zero: not with --up z or --length-scale yet (it moves the "
+            "container's corner in the testbed's frame, before turning or scaling)"};
+    }
     OutputFrame frame;
     frame.up = o.up == "z" ? UpAxis::Z : UpAxis::Y;
     frame.length_scale = o.length_scale > 0.0 ? o.length_scale : 1.0;

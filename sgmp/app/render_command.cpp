@@ -159,6 +159,12 @@ int run(const RenderOptions& o) {
     }
     render::SceneOptions scene_opts = s;
     add_structure_values(o, pack, scene_opts);
+    scene_opts.key_text = render::key_font_found();
+    if (scene_opts.legend && !scene_opts.key_text) {
+        std::fprintf(stderr,
+                     "sgmp: warning: POV-Ray's font cyrvetic.ttf was not found (Debian "
+                     "povray-includes): the key is drawn without its labels\n");
+    }
     std::string scene;
     try {
         scene = render::povray_scene(pack, scene_opts);

@@ -12,6 +12,7 @@
 #include <functional>
 #include <stdexcept>
 
+#include "sgmp/pack/atom_types.hpp"
 #include "sgmp/pack/interrupt.hpp"
 #include "sgmp/pack/output_frame.hpp"
 #include "sgmp/pack/pack_extent.hpp"
@@ -257,6 +258,40 @@ BOOST_AUTO_TEST_CASE(an_output_frame_turns_and_scales_and_reads_back_y_up) {
         BOOST_TEST(back.metadata.get("length_unit").value_or("") == "m");
     }
     BOOST_TEST(read_bytes(scratch.path() / "f.data").find(" 2500 ") != std::string::npos);
+}
+
+// Frames and what they must not break: a blend's LAMMPS types survive scaling; a file
+// already in metres written in millimetres is scaled by their ratio; a pack without a
+// container key, written z up to a data file (whose reader takes the box as container),
+// reads back with the container it had.
+BOOST_AUTO_TEST_CASE(output_frames_keep_types_scale_once_and_keep_the_container) {
+    TestDirectory scratch("pack_file_frames");
+    Pack blend;
+    blend.metadata.set("diameter", "0.2");
+    blend.metadata.set("size_modes", "1:0.5,0.5:0.5");
+    blend.particles = {Particle{1, Vec3(0.0, -0.5, 0.0), 0.1, 0},
+                       Particle{2, Vec3(0.3, -0.55, 0.0), 0.05, 0}};
+    OutputFrame metres;
+    metres.length_scale = 0.004;
+    metres.length_unit = "m";
+    const Pack m = in_output_frame(blend, metres);
+    BOOST_TEST((atom_types(m).type == std::vector<int>{1, 2}));
+    OutputFrame millimetres;
+    millimetres.length_scale = 4.0;
+    millimetres.length_unit = "mm";
+    const Pack mm = in_output_frame(m, millimetres);
+    BOOST_TEST(mm.particles[0].radius == blend.particles[0].radius * 4.0,
+               boost::test_tools::tolerance(1e-15));
+    BOOST_TEST(mm.metadata.get("length_scale").value_or("") == "4");
+    Pack plain;
+    plain.particles = blend.particles;
+    OutputFrame up;
+    up.up = UpAxis::Z;
+    write_pack_as(scratch.path() / "z.data", in_output_frame(plain, up), PackFormat::lammps_data,
+                  WriteOptions{});
+    const Pack back = read_pack_file(scratch.path() / "z.data");
+    BOOST_TEST(back.metadata.get("container").value_or("") == Container{}.to_string());
+    BOOST_TEST(back.particles[1].center == plain.particles[1].center);
 }
 
 BOOST_AUTO_TEST_CASE(dump_files_are_detected) {

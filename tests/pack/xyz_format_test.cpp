@@ -228,9 +228,8 @@ BOOST_AUTO_TEST_SUITE_END()
 // faces, the floor at the Origin's y), as a dump's box is; a `container` key that differs
 // from the cell is kept and named in one warning; a skewed cell gives no container.
 BOOST_AUTO_TEST_CASE(the_lattice_cell_is_the_container_unless_a_key_says_otherwise) {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / "sgmp_xyz_cell_test";
-    fs::create_directories(dir);
+    const sgmp::testing::TestDirectory scratch("xyz_cell");
+    const std::filesystem::path dir = scratch.path();
     const auto read = [&](const std::string& header) {
         std::ofstream(dir / "c.xyz")
             << "1\n"
@@ -246,16 +245,14 @@ BOOST_AUTO_TEST_CASE(the_lattice_cell_is_the_container_unless_a_key_says_otherwi
     BOOST_TEST(keyed.warnings[0].find("'0 6 0 8 0'") != std::string::npos, keyed.warnings[0]);
     const PackRead skewed = read(R"(Lattice="6 0 0 1 7 0 0 0 8")");
     BOOST_TEST(!skewed.pack.metadata.contains("container"));
-    fs::remove_all(dir);
 }
 
 // Periodic sides travel with the file: an extended XYZ says pbc="T F T" (ASE and OVITO read
 // periodic x and z), a dump "pp ff pp"; either read back as sides=periodic, and an ASE file
 // with pbc="T F T" and no sides key is periodic too. Wall packs keep pbc="F F F".
 BOOST_AUTO_TEST_CASE(periodic_sides_are_written_as_pbc_and_read_back) {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / "sgmp_xyz_pbc_test";
-    fs::create_directories(dir);
+    const sgmp::testing::TestDirectory scratch("xyz_pbc");
+    const std::filesystem::path dir = scratch.path();
     Pack pack;
     pack.metadata.set("sides", "periodic");
     pack.particles = {Particle{1, Vec3(0.6, -0.5, 0.0), 0.05, 0}};
@@ -279,5 +276,4 @@ BOOST_AUTO_TEST_CASE(periodic_sides_are_written_as_pbc_and_read_back) {
     std::getline(walls, line);
     std::getline(walls, line);
     BOOST_TEST(line.find("pbc=\"F F F\"") != std::string::npos, line);
-    fs::remove_all(dir);
 }

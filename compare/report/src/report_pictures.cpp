@@ -121,6 +121,7 @@ PictureSet render_pictures(const std::vector<PictureChoice>& choices, int size) 
     options.view = render::View{35.0, 30.0};
     options.cut = *render::parse_cut("half");
     options.coloring = render::Coloring::Height;  // layering shows; random bins showed nothing
+    options.key_text = render::key_font_found();
     std::string scratch_name = (fs::temp_directory_path() / "sgmp-pictures-XXXXXX").string();
     if (::mkdtemp(scratch_name.data()) == nullptr) {
         set.note = "pictures skipped: cannot create a scratch directory";

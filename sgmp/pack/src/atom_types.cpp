@@ -9,14 +9,18 @@
 namespace sgmp {
 namespace {
 
-/// Mode diameters a_k·D; empty when the keys are absent or malformed.
+/// Mode diameters a_k·D·L (L the output frame's length scale, output_frame.hpp, else 1:
+/// the recorded D is in control-volume sides); empty when the keys are absent or malformed.
 std::vector<double> mode_diameters(const Pack& pack) {
     const auto text = pack.metadata.get("size_modes");
     const auto scale = pack.metadata.get("diameter");
-    const auto d = scale ? detail::parse_double(*scale) : std::nullopt;
-    if (!text || !d) {
+    const auto unscaled = scale ? detail::parse_double(*scale) : std::nullopt;
+    const auto length = pack.metadata.get("length_scale");
+    const auto factor = length ? detail::parse_double(*length) : std::optional<double>(1.0);
+    if (!text || !unscaled || !factor) {
         return {};
     }
+    const std::optional<double> d = *unscaled * *factor;
     std::vector<double> modes;
     std::stringstream in(*text);
     std::string item;

@@ -25,11 +25,18 @@ std::string box_text(const Box& box) {
 
 Pack in_output_frame(const Pack& pack, const OutputFrame& frame) {
     Pack out = pack;
-    const double scale = frame.length_scale;
+    // A file already in a unit (length_scale L₀) is rescaled by L / L₀, so that one
+    // control-volume side is L in the new unit; without a new unit it stays as it is.
+    const double before = pack.metadata.get_number("length_scale").value_or(1.0);
+    const bool rescale = !frame.length_unit.empty();
+    const double scale = rescale ? frame.length_scale / before : 1.0;
     Box box = container_box(pack);
     box.lo *= scale;
     box.hi *= scale;
-    if (scale != 1.0) {
+    const bool turned = frame.up == UpAxis::Z;
+    if (scale != 1.0 || turned) {
+        // The container is always written in the file's unit, so that a reader that
+        // takes the box instead (a data file) still finds it after turning back.
         const Container c = container_of(pack);
         const Container scaled{scale * c.x_min, scale * c.x_max, scale * c.z_min, scale * c.z_max,
                                scale * c.floor};
@@ -39,21 +46,20 @@ Pack in_output_frame(const Pack& pack, const OutputFrame& frame) {
             p.radius *= scale;
         }
     }
-    if (frame.up == UpAxis::Z) {
+    if (turned) {
         for (Particle& p : out.particles) {
             p.center = turned_up_z(p.center);
         }
         const Vec3 a = turned_up_z(box.lo), b = turned_up_z(box.hi);
         box = Box{a.cwiseMin(b), a.cwiseMax(b)};
     }
-    if (frame.up == UpAxis::Z || scale != 1.0) {
-        out.metadata.set("up_axis", frame.up == UpAxis::Z ? "z" : "y");
+    if (turned || scale != 1.0) {
+        out.metadata.set("up_axis", turned ? "z" : "y");
         out.metadata.set("box", box_text(box));
     }
-    if (scale != 1.0 || !frame.length_unit.empty()) {
-        out.metadata.set_number("length_scale", scale);
-        out.metadata.set("length_unit",
-                         frame.length_unit.empty() ? "control-volume side" : frame.length_unit);
+    if (rescale) {
+        out.metadata.set_number("length_scale", frame.length_scale);
+        out.metadata.set("length_unit", frame.length_unit);
     }
     if (frame.density) {
         out.metadata.set_number("particle_density", *frame.density);

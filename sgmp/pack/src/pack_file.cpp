@@ -125,7 +125,9 @@ Pack read_pack_file(const std::filesystem::path& path) {
 
 PackRead read_pack_file(const std::filesystem::path& path, const ReadOptions& options) {
     PackRead read = read_pack_file_as_written(path, options);
-    to_internal_frame(read.pack);
+    if (!options.as_written) {
+        to_internal_frame(read.pack);
+    }
     return read;
 }
 

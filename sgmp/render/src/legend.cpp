@@ -47,7 +47,8 @@ std::string quoted(const std::string& text) {
 
 class Overlay {
   public:
-    explicit Overlay(const OverlayFrame& f) : f_(f), depth_(0.25 * f.distance) {}
+    Overlay(const OverlayFrame& f, bool with_text)
+        : f_(f), depth_(0.25 * f.distance), with_text_(with_text) {}
 
     /// The overlay point at screen (u, v).
     [[nodiscard]] Vec3 at(double u, double v) const {
@@ -68,10 +69,16 @@ class Overlay {
             << " } finish { ambient 1 diffuse 0 } } no_shadow }\n";
     }
 
-    /// `text` with its baseline's left end at (u, v), `size` units of v high.
+    /// `text` with its baseline's left end at (u, v), `size` units of v high, smaller where
+    /// it would pass the image's right edge (a glyph is taken as 0.6 of its height wide).
     void label(std::ostream& out, double u, double v, const std::string& text,
                double size = kTextHeight) const {
-        const double s = size * v_unit();
+        if (!with_text_) {
+            return;
+        }
+        const double room = (0.98 - u) * u_unit();  // world width left to the edge
+        const double wide = 0.6 * static_cast<double>(text.size()) * size * v_unit();
+        const double s = size * v_unit() * (wide > room && wide > 0.0 ? room / wide : 1.0);
         const Vec3 r = s * f_.right, up = s * f_.up, z = 0.01 * s * f_.forward;
         const Vec3 o = at(u, v);
         out << "text { ttf \"cyrvetic.ttf\" " << quoted(text)
@@ -84,6 +91,7 @@ class Overlay {
   private:
     OverlayFrame f_;
     double depth_;
+    bool with_text_;
 };
 
 std::string colour_of(const Rgb& srgb) {
@@ -124,8 +132,8 @@ void write_scale(std::ostream& out, const Overlay& o, const OverlayFrame& f, con
     // n·d on the target plane is n·d·D_o/D on the overlay plane: in units of u,
     // n·d / (D·tan a_h).
     const double per_diameter = c.diameter / (f.distance * f.tan_h);
-    double n = 1.0;
-    for (double step = 1.0; step < 1e6; step *= 10.0) {
+    double n = 0.01;
+    for (double step = 0.01; step < 1e6; step *= 10.0) {
         for (const double m : {1.0, 2.0, 5.0}) {
             if (m * step * per_diameter <= 0.8 * width) {
                 n = m * step;
@@ -147,7 +155,7 @@ std::string legend_scene(const OverlayFrame& frame, const LegendContent& content
     std::ostringstream out;
     out << "#declare Ink = texture { pigment { color rgb <0,0,0> } finish { ambient 1 diffuse 0 "
            "} }\n";
-    const Overlay o(frame);
+    const Overlay o(frame, content.text);
     const double width = 2.0 * kLegendStrip;  // of u
     const double u0 = 1.0 - width;
     double v = 0.62;

@@ -51,6 +51,18 @@ std::optional<fs::path> find_povray() {
     return find_executable("povray");
 }
 
+bool key_font_found() {
+    for (const char* folder :
+         {"/usr/share/povray-3.7/include", "/usr/local/share/povray-3.7/include",
+          "/usr/share/povray/include", "/usr/local/share/povray/include"}) {
+        std::error_code error;
+        if (fs::exists(fs::path(folder) / "cyrvetic.ttf", error)) {
+            return true;
+        }
+    }
+    return false;
+}
+
 std::string povray_missing_note() {
     return "POV-Ray was not found (install the Debian package povray), so no pictures were "
            "rendered";

@@ -123,6 +123,7 @@ std::pair<double, double> value_range(const std::vector<double>& values, double 
 /// What the key shows for these options.
 LegendContent legend_content(const Pack& pack, const SceneOptions& o, double floor, double top) {
     LegendContent c;
+    c.text = o.key_text;
     const double d = mean_diameter(pack);
     c.diameter = d;
     if (const auto unit = pack.metadata.get("length_unit");

@@ -9,7 +9,9 @@
 ///    container box (pack_extent.hpp), [x_min, x_max] × [−z_max, −z_min] × [floor, top].
 ///  - **Length scale** L in a named unit: every centre, radius and container number is
 ///    multiplied by L, so one control-volume side becomes L units (a pack of diameter
-///    d = 0.0416 written with L = 0.01 and unit m has spheres of 0.416 mm).
+///    d = 0.0416 written with L = 0.01 and unit m has spheres of 0.416 mm). A pack already
+///    in a unit (`length_scale` L₀) is multiplied by L/L₀. The request's recorded
+///    parameters (`diameter`) stay in control-volume sides.
 ///  - **Density** ρ (LAMMPS data files): the density column, so that a sphere's mass is
 ///    ρ·(π/6)·diameter³ in the file's units (kg/m³ with metres).
 ///

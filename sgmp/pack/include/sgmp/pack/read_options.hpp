@@ -20,6 +20,9 @@ struct ReadOptions {
     /// Threads that parse the particle lines of an extended XYZ file (at least 1). The pack,
     /// and the error of a bad file, do not depend on it.
     unsigned threads = 1;
+    /// Keep the file's frame (output_frame.hpp: up_axis, box) instead of turning it y up
+    /// (for showing a header as written).
+    bool as_written = false;
 };
 
 struct PackRead {

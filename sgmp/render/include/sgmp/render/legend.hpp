@@ -10,11 +10,13 @@
 /// point (u, v) is P = L + D_o·(F + u·tan(a_h)·R + v·tan(a_v)·S), with L the camera, F, R,
 /// S its forward, right and up unit vectors, a_h, a_v the half angles.
 ///
-/// Length scale. A bar of n mean diameters d, n the largest of 1, 2, 5, 10, 20, 50, … that
-/// fits 80 % of the strip, drawn at the size n·d has on the plane through the target
+/// Length scale. A bar of n mean diameters d, n the largest of 0.01, 0.02, 0.05, …, 1, 2, 5,
+/// 10, … that fits 80 % of the strip, drawn at the size n·d has on the plane through the target
 /// facing the camera (the cut face of `--cut half` and `slice`): on the overlay plane
-/// n·d·D_o/D. Labelled "n d" and, when the pack has a length unit, "= n·d unit".
-/// Text is POV-Ray's `cyrvetic.ttf` (Debian povray-includes).
+/// n·d·D_o/D (true on the cut face when the view is level, elevation 0). Labelled "n d" and,
+/// when the pack has a length unit, "= n·d unit". Text is POV-Ray's `cyrvetic.ttf` (Debian
+/// povray-includes), shrunk where a label would pass the image's edge; without the font the
+/// key has no labels.
 #include <string>
 #include <vector>
 
@@ -47,6 +49,8 @@ struct LegendContent {
     double diameter = 0.0;         ///< mean diameter, for the length scale (0: no scale)
     double unit_per_length = 0.0;  ///< file unit per scene length (0: no unit)
     std::string unit;
+    /// Whether to write the labels (POV-Ray's font is found: povray.hpp, key_font_found).
+    bool text = true;
 };
 
 /// POV-Ray text of the key.

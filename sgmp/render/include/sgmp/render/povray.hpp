@@ -15,6 +15,11 @@ namespace sgmp::render {
 /// The POV-Ray executable: $SGMP_POVRAY when set (empty: none), else `povray` on PATH.
 std::optional<std::filesystem::path> find_povray();
 
+/// Whether the key's font, POV-Ray's `cyrvetic.ttf` (Debian povray-includes), is in one of
+/// POV-Ray's usual include folders (/usr/share/povray-3.7/include, /usr/local/share/…); a
+/// picture whose key would need it otherwise gets a key without labels.
+bool key_font_found();
+
 /// One line saying why there are no pictures, for when find_povray() finds nothing.
 std::string povray_missing_note();
 

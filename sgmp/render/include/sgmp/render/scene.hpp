@@ -40,6 +40,8 @@ struct SceneOptions {
     /// Draw the key (legend.hpp): the colour bar or species swatches and a length scale,
     /// in a strip on the right of the image.
     bool legend = true;
+    /// Whether the key has its labels: POV-Ray's font was found (povray.hpp).
+    bool key_text = true;
     /// Free text placed in the scene's first comment lines (what made it).
     std::string provenance;
 };

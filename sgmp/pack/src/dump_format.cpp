@@ -125,7 +125,8 @@ Pack read_snapshot(LineReader& reader) {
     const std::int64_t step = expect_integer(reader, "the timestep");
     expect_item(reader, "NUMBER OF ATOMS");
     const std::int64_t count = expect_integer(reader, "the number of atoms");
-    const auto flags = detail::split_fields(expect_item(reader, "BOX BOUNDS"));
+    const std::string bounds_item = expect_item(reader, "BOX BOUNDS");  // the views below need it
+    const auto flags = detail::split_fields(bounds_item);
     // "pp ff pp": periodic x and z (LAMMPS' boundary p f p), the sides of a periodic cell.
     const bool periodic = flags.size() >= 3 && flags[0] == "pp" && flags[2] == "pp";
     std::string box;

@@ -107,7 +107,11 @@ void dem_parameters_markdown(std::ostringstream& md, const CrossValidation& cv) 
     for (std::size_t k = 0; k < t.keys.size(); ++k) {
         md << "| `" << t.keys[k] << "` |";
         for (const auto& v : t.values[k]) {
-            md << " " << v << " |";
+            std::string cell;
+            for (const char ch : v) {
+                cell += ch == '|' ? std::string("\\|") : std::string(1, ch);
+            }
+            md << " " << cell << " |";
         }
         md << "\n";
     }

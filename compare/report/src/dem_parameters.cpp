@@ -20,6 +20,7 @@ std::vector<std::string> shown_keys() {
             keys.push_back(key);
         }
     }
+    keys.insert(keys.begin(), "start");  // cloud or an arrangement, before its parameters
     keys.emplace_back("contact_model");
     keys.emplace_back("liggghts_version");
     return keys;

@@ -120,6 +120,14 @@ std::string dashed(const std::string& style, const std::string& dash) {
 }
 
 std::vector<SeriesStyle> panel_styles(const PlotPanel& panel) {
+    if (!panel.series.empty()) {  // a part: the whole panel's styles, each curve its own
+        const auto all = series_styles(panel.series);
+        std::vector<SeriesStyle> styles;
+        for (const auto& curve : panel.curves) {
+            styles.push_back(all.at(curve.slot));
+        }
+        return styles;
+    }
     std::vector<std::pair<std::string, bool>> series;
     for (const auto& curve : panel.curves) {
         series.emplace_back(curve.group.empty() ? curve.label : curve.group, curve.reference);
@@ -470,8 +478,10 @@ namespace {
 /// `panel` cut into panels of at most kMaxSeries curves (split_series).
 std::vector<PlotPanel> split_panel(const PlotPanel& panel) {
     std::vector<bool> reference;
+    std::vector<std::pair<std::string, bool>> series;
     for (const auto& curve : panel.curves) {
         reference.push_back(curve.reference);
+        series.emplace_back(curve.group.empty() ? curve.label : curve.group, curve.reference);
     }
     const auto parts = split_series(reference);
     std::vector<PlotPanel> out;
@@ -483,6 +493,10 @@ std::vector<PlotPanel> split_panel(const PlotPanel& panel) {
                        {}};
         for (const std::size_t k : parts[p]) {
             part.curves.push_back(panel.curves[k]);
+            part.curves.back().slot = k;
+        }
+        if (parts.size() > 1) {
+            part.series = series;  // one colour per group across the parts
         }
         out.push_back(std::move(part));
     }

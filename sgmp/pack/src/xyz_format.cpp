@@ -441,7 +441,10 @@ void take_cell(const std::vector<double>& lattice, const std::vector<double>& or
     } catch (const std::invalid_argument&) {
         return;  // the key's own check reports it where the container is used
     }
-    const double tolerance = 1e-9 * std::max(1.0, std::abs(lattice[0]) + std::abs(lattice[8]));
+    // The same container to a millionth of the cell's size (an ASE file rewrites the
+    // numbers with 8 decimals).
+    const double tolerance = 1e-6 * (std::abs(lattice[0]) + std::abs(lattice[8]) + std::abs(ox) +
+                                     std::abs(oy) + std::abs(oz));
     const bool same = std::abs(stated.x_min - cell.x_min) <= tolerance &&
                       std::abs(stated.x_max - cell.x_max) <= tolerance &&
                       std::abs(stated.z_min - cell.z_min) <= tolerance &&

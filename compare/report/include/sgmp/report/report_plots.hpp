@@ -29,6 +29,8 @@ struct PlotCurve {
     const GroupCurves* curves = nullptr;
     bool reference = false;
     std::string group;  // the group's label, which picks its colour
+    /// Its place among `PlotPanel::series` when the panel is a part of a split one.
+    std::size_t slot = 0;
 };
 
 /// One set of four plots (g(r), P(Z), Z(δ), φ(y)) sharing a title and file stem.
@@ -36,6 +38,9 @@ struct PlotPanel {
     std::string stem;  // file name stem, e.g. "c0_N1002"
     std::string what;  // title suffix
     std::vector<PlotCurve> curves;
+    /// For a part of a split panel: the whole panel's series (label, reference), so that a
+    /// group keeps its colour in every part; empty otherwise.
+    std::vector<std::pair<std::string, bool>> series{};
 };
 
 /// One panel per comparison: candidate against reference.

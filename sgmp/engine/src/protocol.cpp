@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "sgmp/engine/contact_model.hpp"
+#include "sgmp/pack/periodic_images.hpp"
 
 namespace sgmp::engine {
 
@@ -48,25 +49,8 @@ void Protocol::settle(const Particle& p) {
     // 2·r_max + the reach of a sweep of the face. The grid keeps points beyond its
     // columns in its edge cells, where the scans near a face find them.
     const double margin = 4.0 * max_radius_;
-    const double lx = container_.x_max - container_.x_min;
-    const double lz = container_.z_max - container_.z_min;
-    const Vec3& c = p.center;
-    const auto shifts = [&](double v, double lo, double hi, double period) {
-        std::vector<double> s{0.0};
-        if (v - lo < margin) {
-            s.push_back(period);
-        }
-        if (hi - v < margin) {
-            s.push_back(-period);
-        }
-        return s;
-    };
-    for (const double sx : shifts(c.x(), container_.x_min, container_.x_max, lx)) {
-        for (const double sz : shifts(c.z(), container_.z_min, container_.z_max, lz)) {
-            if (sx != 0.0 || sz != 0.0) {
-                grid_.insert(Sphere{c.x() + sx, c.y(), c.z() + sz, p.radius});
-            }
-        }
+    for (const Vec3& at : periodic_image_centers(p.center, container_, margin)) {
+        grid_.insert(Sphere{at.x(), at.y(), at.z(), p.radius});
     }
 }
 

@@ -2,6 +2,31 @@
 
 namespace sgmp {
 
+std::vector<Vec3> periodic_image_centers(const Vec3& c, const Container& container, double margin) {
+    std::vector<Vec3> images;
+    if (!container.periodic) {
+        return images;
+    }
+    const auto shifts = [&](double v, double lo, double hi) {
+        std::vector<double> s{0.0};
+        if (v - lo < margin) {
+            s.push_back(hi - lo);
+        }
+        if (hi - v < margin) {
+            s.push_back(lo - hi);
+        }
+        return s;
+    };
+    for (const double sx : shifts(c.x(), container.x_min, container.x_max)) {
+        for (const double sz : shifts(c.z(), container.z_min, container.z_max)) {
+            if (sx != 0.0 || sz != 0.0) {
+                images.push_back(c + Vec3(sx, 0.0, sz));
+            }
+        }
+    }
+    return images;
+}
+
 ImagedParticles with_periodic_images(const std::vector<Particle>& particles,
                                      const Container& container, double margin) {
     ImagedParticles out;
@@ -11,37 +36,12 @@ ImagedParticles with_periodic_images(const std::vector<Particle>& particles,
     for (std::size_t i = 0; i < particles.size(); ++i) {
         out.source[i] = i;
     }
-    if (!container.periodic) {
-        return out;
-    }
-    const double lx = container.x_max - container.x_min;
-    const double lz = container.z_max - container.z_min;
-    const auto shifts = [&](double v, double lo, double hi, double period, double(&s)[3]) {
-        int n = 0;
-        s[n++] = 0.0;
-        if (v - lo < margin) {
-            s[n++] = period;
-        }
-        if (hi - v < margin) {
-            s[n++] = -period;
-        }
-        return n;
-    };
     for (std::size_t i = 0; i < particles.size(); ++i) {
-        const Particle& p = particles[i];
-        double sx[3], sz[3];
-        const int nx = shifts(p.center.x(), container.x_min, container.x_max, lx, sx);
-        const int nz = shifts(p.center.z(), container.z_min, container.z_max, lz, sz);
-        for (int a = 0; a < nx; ++a) {
-            for (int b = 0; b < nz; ++b) {
-                if (a == 0 && b == 0) {
-                    continue;
-                }
-                Particle image = p;
-                image.center += Vec3(sx[a], 0.0, sz[b]);
-                out.particles.push_back(image);
-                out.source.push_back(i);
-            }
+        for (const Vec3& at : periodic_image_centers(particles[i].center, container, margin)) {
+            Particle image = particles[i];
+            image.center = at;
+            out.particles.push_back(image);
+            out.source.push_back(i);
         }
     }
     return out;

@@ -19,6 +19,11 @@ struct ImagedParticles {
     std::size_t originals = 0;
 };
 
+/// The images of one centre c, in the order (x shift, then z shift) each of 0, +period
+/// (c within `margin` of the low face), −period (within `margin` of the high face), leaving
+/// out c itself; none without periodic sides.
+std::vector<Vec3> periodic_image_centers(const Vec3& c, const Container& container, double margin);
+
 /// The list above; without periodic sides, the particles alone.
 ImagedParticles with_periodic_images(const std::vector<Particle>& particles,
                                      const Container& container, double margin);

@@ -14,6 +14,7 @@
 #include "sgmp/cli/run_main.hpp"
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/input_error.hpp"
+#include "sgmp/pack/pack_extent.hpp"
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/pack/parameter_error.hpp"
 #include "sgmp/pack/version.hpp"
@@ -45,6 +46,17 @@ struct RenderOptions {
 /// Gap tolerance of `--colour z`, over the mean diameter (the report's Z(10⁻³)).
 constexpr double kColourContactGap = 1e-3;
 
+#if SGMP_WITH_METRICS
+/// The pack's container with its sides (measure.hpp), a malformed key named as input.
+Container container_of(const RenderOptions& o, const Pack& pack) {
+    try {
+        return sgmp::container_of(pack);
+    } catch (const std::invalid_argument& e) {
+        throw InputError(o.pack, 0, std::string("container: ") + e.what());
+    }
+}
+#endif
+
 /// The per-sphere values and caption of `--colour z` and `--colour local-phi`.
 void add_structure_values(const RenderOptions& o, const Pack& pack, render::SceneOptions& s) {
     if (o.color != "z" && o.color != "local-phi") {
@@ -53,14 +65,13 @@ void add_structure_values(const RenderOptions& o, const Pack& pack, render::Scen
 #if SGMP_WITH_METRICS
     s.coloring = render::Coloring::Values;
     if (o.color == "z") {
-        s.values = metrics::sphere_contact_numbers(pack.particles, kColourContactGap);
+        s.values = metrics::sphere_contact_numbers(pack.particles, container_of(o, pack),
+                                                   kColourContactGap);
         s.caption = {"Z", "gap <= 1e-3 d"};
         return;
     }
-    const auto text = pack.metadata.get("container");
     try {
-        s.values =
-            metrics::sphere_local_phi(pack.particles, text ? Container::parse(*text) : Container{});
+        s.values = metrics::sphere_local_phi(pack.particles, container_of(o, pack));
     } catch (const std::invalid_argument& e) {
         throw InputError(o.pack, 0, std::string("local phi: ") + e.what());
     }

@@ -407,7 +407,7 @@ BOOST_AUTO_TEST_CASE(sphere_values_match_a_brute_count_and_the_tessellation) {
         }
         const double d = 2.0 * radius_sum / static_cast<double>(particles.size());
         for (const double gap : {0.0, 1e-3, 0.02, 0.3}) {
-            const auto z = metrics::sphere_contact_numbers(particles, gap);
+            const auto z = metrics::sphere_contact_numbers(particles, Container{}, gap);
             BOOST_TEST_REQUIRE(z.size() == particles.size());
             std::size_t differ = 0;
             double total = 0.0;

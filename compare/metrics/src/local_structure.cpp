@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -64,11 +65,17 @@ struct Partial {
     }
 };
 
-/// Gaps from the sphere to the four walls and the floor.
+/// Gaps from the sphere to the four walls and the floor (with periodic sides, the floor
+/// alone: the lateral gaps are infinite).
 std::array<double, 5> wall_gaps(const Particle& p, const Container& c) {
     const Vec3& x = p.center;
+    const double floor_gap = x.y() - c.floor - p.radius;
+    if (c.periodic) {
+        constexpr double kNone = std::numeric_limits<double>::infinity();
+        return {kNone, kNone, kNone, kNone, floor_gap};
+    }
     return {x.x() - c.x_min - p.radius, c.x_max - x.x() - p.radius, x.z() - c.z_min - p.radius,
-            c.z_max - x.z() - p.radius, x.y() - c.floor - p.radius};
+            c.z_max - x.z() - p.radius, floor_gap};
 }
 
 /// The split-ratio windows [centre ∓ half-width]·d, as absolute radii.

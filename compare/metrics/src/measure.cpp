@@ -18,7 +18,9 @@
 
 #include "sgmp/metrics/parallel.hpp"
 #include "sgmp/metrics/spatial_order.hpp"
+#include "sgmp/pack/pack_extent.hpp"
 #include "sgmp/pack/parameter_error.hpp"
+#include "sgmp/pack/periodic_images.hpp"
 
 namespace sgmp::metrics {
 namespace {
@@ -69,14 +71,60 @@ void check_region(const Box& region, const Container& container) {
 }
 
 /// The control volume, in the file's unit when it was written with a length scale
-/// (output_frame.hpp: `length_scale` is one control-volume side).
-Box default_region(const Pack& pack) {
+/// (output_frame.hpp: `length_scale` is one control-volume side). With periodic sides
+/// there is no lateral wall to keep away from: the whole cell across, the control
+/// volume's heights.
+Box default_region(const Pack& pack, const Container& container) {
     Box region = control_volume();
     if (const auto scale = pack.metadata.get_number("length_scale"); scale && *scale > 0.0) {
         region.lo *= *scale;
         region.hi *= *scale;
     }
+    if (container.periodic) {
+        region.lo.x() = container.x_min;
+        region.hi.x() = container.x_max;
+        region.lo.z() = container.z_min;
+        region.hi.z() = container.z_max;
+    }
     return region;
+}
+
+/// How far from a centre the pair passes look: the g(r) range (and the half bin a pair
+/// type's bins may be shifted by), Q6's bonds and the widest contact tolerance.
+double pair_reach(const MeasureOptions& o, double d, double max_radius) {
+    double widest = 0.0;
+    for (const double t : coordination_tolerances()) {
+        widest = std::max(widest, t);
+    }
+    return std::max({(o.gr_range + 1.5 * o.gr_bin_width) * d, o.q6_cutoff * 2.0 * max_radius,
+                     2.0 * max_radius + widest * d});
+}
+
+/// The pack with periodic sides as the pair passes see it: the particles, then their
+/// images within `reach` of a lateral face (periodic_images.hpp). One period of images
+/// is enough only when the reach is at most a period.
+std::vector<Particle> with_images(const std::vector<Particle>& particles,
+                                  const Container& container, double reach, double d) {
+    const double period =
+        std::min(container.x_max - container.x_min, container.z_max - container.z_min);
+    if (reach > period) {
+        throw ParameterError("gr_range", format_number(reach / d) + " d of reach",
+                             "must not exceed the periodic cell's shorter side, " +
+                                 format_number(period / d) + " d");
+    }
+    return with_periodic_images(particles, container, reach).particles;
+}
+
+/// The centres' space of g(r) with periodic sides: unbounded across (the images fill the
+/// reach beyond each face), so no shell is cut but by the floor and the top.
+Box widened(Box space, const Container& container, double reach) {
+    if (container.periodic) {
+        space.lo.x() = container.x_min - reach;
+        space.hi.x() = container.x_max + reach;
+        space.lo.z() = container.z_min - reach;
+        space.hi.z() = container.z_max + reach;
+    }
+    return space;
 }
 
 }  // namespace
@@ -120,13 +168,10 @@ void validate(const MeasureOptions& o) {
 }
 
 Container container_of(const Pack& pack, std::string* source) {
-    const auto text = pack.metadata.get("container");
     if (source != nullptr) {
-        *source = text ? "metadata" : "thesis default";
+        *source = pack.metadata.get("container") ? "metadata" : "thesis default";
     }
-    Container c = text ? Container::parse(*text) : Container{};
-    c.periodic = pack.metadata.get("sides").value_or("walls") == "periodic";
-    return c;
+    return sgmp::container_of(pack);
 }
 
 /// The particles sorted along a Morton curve of cells of side d, so that particles near in
@@ -192,7 +237,7 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     m.max_radius = hi->radius;
     m.polydisperse = m.min_radius != m.max_radius;
     m.container = container_of(pack, &m.container_source);
-    m.region = options.region.value_or(default_region(pack));
+    m.region = options.region.value_or(default_region(pack, m.container));
     check_region(m.region, m.container);
     m.top = -std::numeric_limits<double>::infinity();
     for (const Particle& p : input) {
@@ -210,7 +255,19 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
                                  " slabs from the floor to the top sphere; at most " +
                                  std::to_string(static_cast<long>(kMaxSlabs)) + " are allowed");
     }
-    const std::vector<Particle> particles = spatially_ordered(pack.particles, d);
+    std::vector<Particle> particles = spatially_ordered(pack.particles, d);
+    for (Particle& p : particles) {  // a foreign file's centres may lie a period out
+        p.center = m.container.wrapped(p.center);
+    }
+    // With periodic sides every pass but the overlaps' (which images on its own) and the
+    // tessellation's (likewise) runs over the particles and their images; origins are the
+    // particles alone.
+    const double reach = pair_reach(options, d, m.max_radius);
+    std::vector<Particle> imaged;
+    if (m.container.periodic) {
+        imaged = with_images(particles, m.container, reach, d);
+    }
+    const std::vector<Particle>& field = m.container.periodic ? imaged : particles;
 
     std::vector<Index> origins;
     for (std::size_t i = 0; i < particles.size(); ++i) {
@@ -223,14 +280,14 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     }
     stage_times.index = watch.lap();
 
-    m.phi = packing_fraction(particles, m.region);
+    m.phi = packing_fraction(field, m.region);
     stage_times.phi = watch.lap();
     m.phi_profile =
-        packing_fraction_profile(particles, m.region, m.container.floor,
+        packing_fraction_profile(field, m.region, m.container.floor,
                                  std::max(m.top, m.region.hi.y()), options.slab_thickness * d);
     if (has_species(particles)) {
         std::map<int, std::vector<Particle>> of_species;
-        for (const Particle& p : particles) {
+        for (const Particle& p : field) {
             of_species[p.species].push_back(p);
         }
         for (const auto& [species, members] : of_species) {
@@ -253,12 +310,14 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     local.bins = bins_for(options.gr_range / options.gr_bin_width);
     local.density_rule = options.gr_density;
     local.q6_cutoff = options.q6_cutoff;
-    local.space = options.gr_container_space ? container_space(particles, m.container)
-                                             : center_space(particles, m.container, 0.5 * d);
+    local.space =
+        widened(options.gr_container_space ? container_space(particles, m.container)
+                                           : center_space(particles, m.container, 0.5 * d),
+                m.container, reach);
     local.container = m.container;
-    m.local = measure_local_structure(particles, origins, local);
+    m.local = measure_local_structure(field, origins, local);
     if (options.gr_thesis) {
-        m.thesis_rdf = thesis_rdf(particles, m.region, m.phi, options.gr_bin_width * d, local.bins);
+        m.thesis_rdf = thesis_rdf(field, m.region, m.phi, options.gr_bin_width * d, local.bins);
     }
     stage_times.local = watch.lap();
     SpeciesStructureOptions per_species;
@@ -269,7 +328,8 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     per_species.bins = local.bins;
     per_species.density_rule = local.density_rule;
     per_species.tolerances = local.tolerances;
-    m.species = measure_species_structure(particles, per_species);
+    per_species.originals = particles.size();
+    m.species = measure_species_structure(field, per_species);
     stage_times.species = watch.lap();
     if (options.voronoi) {
         m.voronoi = voronoi_local_phi(particles, m.container, m.region);

@@ -177,7 +177,11 @@ Json metrics_json(const Measurement& m, const Json& prov) {
          "space (default: container shrunk by d/2 at walls and floor, up to the highest centre; "
          "gr_space=container: the container up to the top sphere); bins centred on k*bin_width; "
          "density (gr_density=neighbours) the pairs over the shell volume summed out to the "
-         "range, so g -> 1 far from contact; gr_density=space: N/|space|"}};
+         "range, so g -> 1 far from contact; gr_density=space: N/|space|"},
+        {"sides",
+         "walls, or periodic: x and z periodic (minimum-image pairs; g(r) shells and Voronoi "
+         "cells cut by the floor and the top alone; default region the whole cell across)"}};
+    j["sides"] = m.container.periodic ? "periodic" : "walls";
     j["overlaps_detail"] = Json{{"floor_over_d", m.overlaps.floor},
                                 {"pairs", overlap_json(m.overlaps.pairs)},
                                 {"walls", overlap_json(m.overlaps.walls)}};

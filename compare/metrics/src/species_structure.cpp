@@ -25,12 +25,14 @@ struct Members {
     int species = 0;
     std::vector<Index> all;
     std::vector<Index> origins;
+    std::int64_t count = 0;  // the pack's own (images left out)
     double radius_sum = 0.0;
     bool one_radius = true;
     double radius = 0.0;  // the one radius when one_radius
 };
 
-std::vector<Members> members_of(const std::vector<Particle>& particles, const Box& region) {
+std::vector<Members> members_of(const std::vector<Particle>& particles, const Box& region,
+                                std::size_t originals) {
     std::map<int, Members> by_species;
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const Particle& p = particles[i];
@@ -40,8 +42,12 @@ std::vector<Members> members_of(const std::vector<Particle>& particles, const Bo
             m.radius = p.radius;
         }
         m.one_radius = m.one_radius && p.radius == m.radius;
-        m.radius_sum += p.radius;
         m.all.push_back(static_cast<Index>(i));
+        if (i >= originals) {
+            continue;
+        }
+        m.radius_sum += p.radius;
+        ++m.count;
         if (region.contains(p.center)) {
             m.origins.push_back(static_cast<Index>(i));
         }
@@ -164,7 +170,7 @@ std::optional<SpeciesStructure> measure_species_structure(const std::vector<Part
     if (!has_species(particles)) {
         return std::nullopt;
     }
-    const std::vector<Members> members = members_of(particles, options.region);
+    const std::vector<Members> members = members_of(particles, options.region, options.originals);
     if (members.size() < 2) {
         return std::nullopt;
     }
@@ -240,9 +246,8 @@ std::optional<SpeciesStructure> measure_species_structure(const std::vector<Part
         SpeciesSummary s;
         s.species = members[a].species;
         s.origins = static_cast<std::int64_t>(members[a].origins.size());
-        s.count = static_cast<std::int64_t>(members[a].all.size());
-        s.diameter_over_d =
-            2.0 * members[a].radius_sum / static_cast<double>(members[a].all.size()) / d;
+        s.count = members[a].count;
+        s.diameter_over_d = 2.0 * members[a].radius_sum / static_cast<double>(members[a].count) / d;
         s.z_mean.assign(thresholds.size(), 0.0);
         for (std::size_t b = 0; b < n; ++b) {
             for (std::size_t t = 0; t < thresholds.size(); ++t) {

@@ -4,26 +4,30 @@
 
 #include "sgmp/metrics/neighbour_index.hpp"
 #include "sgmp/metrics/voronoi.hpp"
+#include "sgmp/pack/periodic_images.hpp"
 
 namespace sgmp::metrics {
 
-std::vector<double> sphere_contact_numbers(const std::vector<Particle>& particles,
-                                           double gap_over_d) {
-    std::vector<double> z(particles.size(), 0.0);
-    if (particles.empty()) {
+std::vector<double> sphere_contact_numbers(const std::vector<Particle>& input,
+                                           const Container& container, double gap_over_d) {
+    std::vector<double> z(input.size(), 0.0);
+    if (input.empty()) {
         return z;
     }
     double r_max = 0.0;
     double radius_sum = 0.0;
-    for (const Particle& p : particles) {
+    for (const Particle& p : input) {
         r_max = std::max(r_max, p.radius);
         radius_sum += p.radius;
     }
-    const double d = 2.0 * radius_sum / static_cast<double>(particles.size());
+    const double d = 2.0 * radius_sum / static_cast<double>(input.size());
     const double gap = gap_over_d * d;
+    // Images across periodic faces are neighbours, never spheres of their own.
+    const std::vector<Particle> particles =
+        with_periodic_images(input, container, 2.0 * r_max + gap).particles;
     const NeighbourIndex index(particles);
     std::vector<Index> found;
-    for (std::size_t i = 0; i < particles.size(); ++i) {
+    for (std::size_t i = 0; i < input.size(); ++i) {
         const Particle& a = particles[i];
         index.within(a.center, a.radius + r_max + gap, found);
         for (const Index j : found) {

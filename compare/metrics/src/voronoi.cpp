@@ -11,12 +11,14 @@
 #include <map>
 #include <numbers>
 #include <numeric>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <tuple>
 
 #include "sgmp/metrics/parallel.hpp"
+#include "sgmp/pack/periodic_images.hpp"
 
 namespace sgmp::metrics {
 namespace {
@@ -77,9 +79,13 @@ void check_input(const std::vector<Particle>& particles, const Container& contai
             reject(out.str());
         }
         const Vec3& c = p.center;
-        if (!c.allFinite() ||
-            !(c.x() > container.x_min && c.x() < container.x_max && c.z() > container.z_min &&
-              c.z() < container.z_max && c.y() > container.floor)) {
+        // With periodic sides a centre belongs in [x_min, x_max) × [z_min, z_max).
+        const bool across = container.periodic
+                                ? c.x() >= container.x_min && c.x() < container.x_max &&
+                                      c.z() >= container.z_min && c.z() < container.z_max
+                                : c.x() > container.x_min && c.x() < container.x_max &&
+                                      c.z() > container.z_min && c.z() < container.z_max;
+        if (!c.allFinite() || !(across && c.y() > container.floor)) {
             reject("particle " + std::to_string(p.id) + " has centre " + text_of(c) +
                    " outside container '" + container.to_string() +
                    "' (centres must lie strictly between the walls and above the floor)");
@@ -153,10 +159,17 @@ double fill_cell(voro::voronoicell& cell, const Vec3& c, double radius, double c
 /// artificial side lies within 2R (then none clipped the cell either). A cell that fails
 /// the test is computed again in a container of every centre. Slabs run on the threads;
 /// each cell comes from one fixed container, so results do not depend on the thread count.
+///
+/// Periodic sides (`periodic` holds the cell up to the lid, and entries of `particles` from
+/// `originals` on are images): the bounds reach past the cell over the images and their
+/// lateral sides are artificial too; a cell the slabs cannot vouch for is computed again in
+/// voro++'s periodic container of the cell, holding the particles alone.
 template <class VoroContainer, class Put>
 void tessellate(const std::vector<Particle>& particles, const std::vector<int>& sorted,
-                const std::vector<int>& slot, const Box& bounds, double mean_diameter,
-                std::size_t cells_per_slab, Put put, std::vector<Cell>& cells) {
+                const std::vector<int>& slot, const Box& bounds, const std::optional<Box>& periodic,
+                std::size_t originals, double mean_diameter, std::size_t cells_per_slab, Put put,
+                std::vector<Cell>& cells) {
+    const bool open_sides = periodic.has_value();
     const double cap = bounds.hi.y();
     const double cap_tolerance = 1e-9 * (bounds.hi - bounds.lo).maxCoeff();
     const double halo = kHaloDiameters * mean_diameter;
@@ -189,8 +202,9 @@ void tessellate(const std::vector<Particle>& particles, const std::vector<int>& 
         std::array<bool, 3> open_lo{};
         std::array<bool, 3> open_hi{};
         for (int a = 0; a < 3; ++a) {
-            open_lo[static_cast<std::size_t>(a)] = lo[a] > bounds.lo[a];
-            open_hi[static_cast<std::size_t>(a)] = hi[a] < bounds.hi[a];
+            const bool lateral = open_sides && a != 1;
+            open_lo[static_cast<std::size_t>(a)] = lateral || lo[a] > bounds.lo[a];
+            open_hi[static_cast<std::size_t>(a)] = lateral || hi[a] < bounds.hi[a];
         }
         // The centres strictly inside the box: within one range of the x-sorted positions.
         const auto x_below = [&](double x, bool strict) {
@@ -270,13 +284,17 @@ void tessellate(const std::vector<Particle>& particles, const std::vector<int>& 
     if (again.empty()) {
         return;
     }
-    // The cells a slab could not vouch for, in a container of every centre.
-    const auto blocks = block_grid(bounds.hi - bounds.lo, sorted.size());
-    VoroContainer voro(bounds.lo.x(), bounds.hi.x(), bounds.lo.y(), bounds.hi.y(), bounds.lo.z(),
-                       bounds.hi.z(), blocks[0], blocks[1], blocks[2], false, false, false,
+    // The cells a slab could not vouch for, in a container of every centre (periodic: of
+    // every particle, in the periodic cell).
+    const Box& whole = periodic ? *periodic : bounds;
+    const auto blocks = block_grid(whole.hi - whole.lo, periodic ? originals : sorted.size());
+    VoroContainer voro(whole.lo.x(), whole.hi.x(), whole.lo.y(), whole.hi.y(), whole.lo.z(),
+                       whole.hi.z(), blocks[0], blocks[1], blocks[2], open_sides, false, open_sides,
                        kInitialBlockMemory);
     for (std::size_t k = 0; k < sorted.size(); ++k) {
-        put(voro, static_cast<int>(k), particles[static_cast<std::size_t>(sorted[k])]);
+        if (!periodic || static_cast<std::size_t>(sorted[k]) < originals) {
+            put(voro, static_cast<int>(k), particles[static_cast<std::size_t>(sorted[k])]);
+        }
     }
     std::vector<char> wanted(cells.size(), 0);
     for (const std::size_t sl : again) {
@@ -342,9 +360,24 @@ std::vector<VoronoiSpecies> by_species(const std::vector<Particle>& particles,
 
 }  // namespace
 
-VoronoiPhi voronoi_local_phi(const std::vector<Particle>& particles, const Container& container,
+VoronoiPhi voronoi_local_phi(const std::vector<Particle>& input, const Container& container,
                              const Box& region, const VoronoiOptions& options) {
-    check_input(particles, container, region, options);
+    check_input(input, container, region, options);
+    // With periodic sides: the particles, then their images within the margin below of a
+    // lateral face; the bounds reach that far past the cell, and only the particles are
+    // origins.
+    double largest = 0.0;
+    double input_radius_sum = 0.0;
+    for (const Particle& p : input) {
+        largest = std::max(largest, p.radius);
+        input_radius_sum += p.radius;
+    }
+    const double margin =
+        std::min(2.0 * kHaloDiameters * 2.0 * input_radius_sum / static_cast<double>(input.size()) +
+                     4.0 * largest,
+                 std::min(container.x_max - container.x_min, container.z_max - container.z_min));
+    const ImagedParticles imaged = with_periodic_images(input, container, margin);
+    const std::vector<Particle>& particles = imaged.particles;
 
     const std::vector<int> sorted = canonical_order(particles);
     // Summed in canonical order: the cap must not depend on the input order.
@@ -354,16 +387,27 @@ VoronoiPhi voronoi_local_phi(const std::vector<Particle>& particles, const Conta
     for (const int i : sorted) {
         const Particle& p = particles[static_cast<std::size_t>(i)];
         top = std::max(top, p.center.y() + p.radius);
-        radius_sum += p.radius;
+        if (static_cast<std::size_t>(i) < imaged.originals) {
+            radius_sum += p.radius;
+        }
         equal_radii = equal_radii && p.radius == particles.front().radius;
     }
-    const double mean_diameter = 2.0 * radius_sum / static_cast<double>(particles.size());
-    const Box bounds = container.box_up_to(top + mean_diameter);
+    const double mean_diameter = 2.0 * radius_sum / static_cast<double>(imaged.originals);
+    Box bounds = container.box_up_to(top + mean_diameter);
+    std::optional<Box> periodic;
+    if (container.periodic) {
+        periodic = bounds;
+        bounds.lo.x() -= margin;
+        bounds.hi.x() += margin;
+        bounds.lo.z() -= margin;
+        bounds.hi.z() += margin;
+    }
 
     std::vector<int> slot(sorted.size(), -1);  // index among the measured origins
     std::int64_t count = 0;
     for (std::size_t k = 0; k < sorted.size(); ++k) {
-        if (region.contains(particles[static_cast<std::size_t>(sorted[k])].center)) {
+        if (static_cast<std::size_t>(sorted[k]) < imaged.originals &&
+            region.contains(particles[static_cast<std::size_t>(sorted[k])].center)) {
             slot[k] = static_cast<int>(count++);
         }
     }
@@ -374,14 +418,16 @@ VoronoiPhi voronoi_local_phi(const std::vector<Particle>& particles, const Conta
     std::vector<Cell> cells(static_cast<std::size_t>(count));
     if (equal_radii) {
         tessellate<voro::container>(
-            particles, sorted, slot, bounds, mean_diameter, options.cells_per_slab,
+            particles, sorted, slot, bounds, periodic, imaged.originals, mean_diameter,
+            options.cells_per_slab,
             [](voro::container& voro, int k, const Particle& p) {
                 voro.put(k, p.center.x(), p.center.y(), p.center.z());
             },
             cells);
     } else {
         tessellate<voro::container_poly>(
-            particles, sorted, slot, bounds, mean_diameter, options.cells_per_slab,
+            particles, sorted, slot, bounds, periodic, imaged.originals, mean_diameter,
+            options.cells_per_slab,
             [](voro::container_poly& voro, int k, const Particle& p) {
                 voro.put(k, p.center.x(), p.center.y(), p.center.z(), p.radius);
             },
@@ -422,7 +468,7 @@ VoronoiPhi voronoi_local_phi(const std::vector<Particle>& particles, const Conta
     }
     result.global = sphere_volume / result.cell_volume;
     if (options.keep_local) {
-        result.local.assign(particles.size(), std::numeric_limits<double>::quiet_NaN());
+        result.local.assign(imaged.originals, std::numeric_limits<double>::quiet_NaN());
         for (std::size_t k = 0; k < sorted.size(); ++k) {
             if (slot[k] >= 0) {
                 result.local[static_cast<std::size_t>(sorted[k])] =

@@ -11,6 +11,7 @@
 #include <tuple>
 #include <utility>
 
+#include "sgmp/pack/pack_extent.hpp"
 #include "sgmp/pack/version.hpp"
 #include "sgmp/render/legend.hpp"
 #include "sgmp/render/palette.hpp"
@@ -34,11 +35,6 @@ std::string vec(const Vec3& v) {
 std::string rgb(const Rgb& srgb) {
     const Rgb c = linear_from_srgb(srgb);
     return "rgb <" + num(c.r) + "," + num(c.g) + "," + num(c.b) + ">";
-}
-
-Container container_of(const Pack& pack) {
-    const auto text = pack.metadata.get("container");
-    return text ? Container::parse(*text) : Container{};
 }
 
 double top_of(const std::vector<Particle>& particles, const Container& container) {

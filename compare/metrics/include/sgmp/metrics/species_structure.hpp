@@ -25,6 +25,7 @@
 ///
 /// Pairs are found on the comparison's neighbour search (kd_columns.hpp); every sum over
 /// origins runs in a fixed order, so results do not depend on the thread count.
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -43,6 +44,9 @@ struct SpeciesStructureOptions {
     std::size_t bins = 251;          ///< of every g_IJ
     RdfDensity density_rule = RdfDensity::Neighbours;
     std::vector<double> tolerances;  ///< δ of Z_IJ(δ), units of d
+    /// Only the first `originals` particles are the pack's (origins, counts); the rest are
+    /// periodic images (periodic_images.hpp), neighbours only.
+    std::size_t originals = static_cast<std::size_t>(-1);
 };
 
 /// One species.

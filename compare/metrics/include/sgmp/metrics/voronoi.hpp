@@ -12,6 +12,10 @@
 /// |x − c_i|² − r_i² = |x − c_j|² − r_j², so a sphere keeps to its own cell when no two
 /// overlap (it equals the plain one for equal radii).
 ///
+/// Periodic sides (Container::periodic): no lateral walls; the tessellation holds the
+/// particles and their images within a margin of the faces (periodic_images.hpp), and only
+/// the particles are origins, so every cell is the cell of the infinite periodic pack.
+///
 /// Free surface: cells of spheres at the top reach the cap, so their φ_i depends on the
 /// margin d. The control volume lies a few diameters below the surface of every thesis pack,
 /// where no cell reaches the cap; a region that takes in top spheres measures cells cut by

@@ -29,7 +29,7 @@
 #include "sgmp/batch/shard.hpp"
 #include "sgmp/batch/world.hpp"
 #include "sgmp/cli/run_main.hpp"
-#include "sgmp/engine/size_modes.hpp"
+#include "sgmp/pack/size_modes.hpp"
 #if SGMP_WITH_METRICS
 #include "sgmp/metrics/parallel.hpp"
 #include "sgmp/metrics/summary_columns.hpp"
@@ -136,7 +136,7 @@ int run_merge(const Settings& s) {
 DistributionFiles read_distribution_files(const Settings& s) {
     DistributionFiles files;
     for (const std::string& value : s.values[parameter_index("size_distribution")]) {
-        if (value.empty() || engine::is_lognormal(value)) {
+        if (value.empty() || sgmp::is_lognormal(value)) {
             continue;
         }
         std::ifstream in(value, std::ios::binary);
@@ -147,7 +147,7 @@ DistributionFiles read_distribution_files(const Settings& s) {
         std::ostringstream text;
         text << in.rdbuf();
         try {
-            (void)engine::parse_size_distribution_csv(text.str(), value);  // refused here, once
+            (void)sgmp::parse_size_distribution_csv(text.str(), value);  // refused here, once
         } catch (const InputError& e) {
             throw BadValue{std::string("--size-distribution ") + e.what()};
         }

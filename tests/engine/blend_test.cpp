@@ -6,10 +6,10 @@
 #include <map>
 
 #include "sgmp/engine/make_pack.hpp"
-#include "sgmp/engine/size_modes.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/parameter_error.hpp"
 #include "sgmp/pack/random.hpp"
+#include "sgmp/pack/size_modes.hpp"
 #include "test_support.hpp"
 
 using namespace sgmp;

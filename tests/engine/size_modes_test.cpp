@@ -6,8 +6,8 @@
 
 #include "refusal.hpp"
 #include "sgmp/engine/make_pack.hpp"
-#include "sgmp/engine/size_modes.hpp"
 #include "sgmp/pack/parameter_error.hpp"
+#include "sgmp/pack/size_modes.hpp"
 
 using namespace sgmp;
 using namespace sgmp::engine;
@@ -127,7 +127,7 @@ BOOST_AUTO_TEST_SUITE(start_pack_sizes)
 BOOST_AUTO_TEST_CASE(one_mode_gives_exactly_the_sizing_rule_diameter) {
     for (const std::size_t n : {150u, 300u, 750u, 1002u, 2001u, 3000u, 6000u, 9000u, 100000u}) {
         for (const double phi : {0.3, 0.63, sgmp::kMaxPhiTarget}) {
-            BOOST_TEST(sgmp::engine::diameter_scale(n, phi, {sgmp::engine::SizeMode{1.0, 1.0}}) ==
+            BOOST_TEST(sgmp::diameter_scale(n, phi, {sgmp::SizeMode{1.0, 1.0}}) ==
                        sgmp::diameter_for_count(n, phi));
         }
     }

@@ -8,11 +8,11 @@
 
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/engine/pack_checks.hpp"
-#include "sgmp/engine/size_modes.hpp"
 #include "sgmp/pack/dump_format.hpp"
 #include "sgmp/pack/lammps_data_format.hpp"
 #include "sgmp/pack/pack_extent.hpp"
 #include "sgmp/pack/pack_file.hpp"
+#include "sgmp/pack/size_modes.hpp"
 #include "sgmp/pack/vtk_format.hpp"
 #include "sgmp/pack/xyz_format.hpp"
 #include "test_support.hpp"
@@ -29,7 +29,7 @@ Pack engine_pack(std::uint64_t seed) {
         seed % 2 ? engine::Arrangement::LooseRandom : engine::Arrangement::LargeDense;
     request.seed = seed;
     if (seed % 3 == 0) {
-        request.size_modes = *engine::parse_size_modes("1:0.7,0.5:0.3");
+        request.size_modes = *sgmp::parse_size_modes("1:0.7,0.5:0.3");
     }
     return engine::make_pack(request);
 }

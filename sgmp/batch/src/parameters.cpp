@@ -3,8 +3,8 @@
 #include <stdexcept>
 
 #include "sgmp/engine/pack_parameters.hpp"
-#include "sgmp/engine/size_modes.hpp"
 #include "sgmp/pack/parameter_error.hpp"
+#include "sgmp/pack/size_modes.hpp"
 
 namespace sgmp::batch {
 namespace {
@@ -49,9 +49,9 @@ engine::PackRequest to_request(const ParameterValues& values, std::uint64_t seed
             continue;
         }
         const auto file = files.find(values[i]);
-        if (row.name == "size_distribution" && !engine::is_lognormal(values[i]) &&
+        if (row.name == "size_distribution" && !sgmp::is_lognormal(values[i]) &&
             file != files.end()) {
-            request.size_modes = engine::parse_size_distribution_csv(file->second, file->first);
+            request.size_modes = sgmp::parse_size_distribution_csv(file->second, file->first);
             request.size_distribution = values[i];
             continue;
         }

@@ -1,4 +1,4 @@
-#include "sgmp/engine/size_modes.hpp"
+#include "sgmp/pack/size_modes.hpp"
 
 #include <boost/math/distributions/normal.hpp>
 
@@ -13,7 +13,7 @@
 #include "sgmp/pack/metadata.hpp"
 #include "sgmp/pack/parameter_error.hpp"
 
-namespace sgmp::engine {
+namespace sgmp {
 
 namespace {
 
@@ -348,4 +348,4 @@ std::vector<double> draw_diameters(std::size_t count, double phi_target,
     return draw_sizes(count, phi_target, modes, rng).diameters;
 }
 
-}  // namespace sgmp::engine
+}  // namespace sgmp

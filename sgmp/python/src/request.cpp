@@ -18,9 +18,9 @@
 #include "bindings.hpp"
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/engine/pack_parameters.hpp"
-#include "sgmp/engine/size_modes.hpp"
 #include "sgmp/pack/option_rules.hpp"
 #include "sgmp/pack/parameter_error.hpp"
+#include "sgmp/pack/size_modes.hpp"
 
 namespace sgmp::python {
 namespace {
@@ -87,7 +87,7 @@ void read_size_distribution(PackRequest& r, const py::handle& value) {
     }
     std::ostringstream content;
     content << in.rdbuf();
-    r.size_modes = engine::parse_size_distribution_csv(content.str(), spec);
+    r.size_modes = sgmp::parse_size_distribution_csv(content.str(), spec);
     r.size_distribution = spec;
 }
 

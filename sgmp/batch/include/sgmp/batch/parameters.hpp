@@ -36,7 +36,7 @@ using DistributionFiles = std::map<std::string, std::string, std::less<>>;
 
 /// The pack request the values stand for (seed included). A size_distribution that is not a
 /// `lognormal:` spec is looked up in `files` and parsed as a CSV file
-/// (engine::parse_size_distribution_csv). Throws ParameterError (the
+/// (sgmp::parse_size_distribution_csv). Throws ParameterError (the
 /// parameter's name, the value, the rule) for a value its row refuses or a request that
 /// breaks a rule; std::invalid_argument when `values` does not hold one value per parameter.
 engine::PackRequest to_request(const ParameterValues& values, std::uint64_t seed,

@@ -7,8 +7,8 @@
 #include <string_view>
 #include <vector>
 
-#include "sgmp/engine/name_table.hpp"
 #include "sgmp/pack/metadata.hpp"
+#include "sgmp/pack/name_table.hpp"
 
 namespace sgmp::engine {
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <string_view>
 
-#include "sgmp/engine/name_table.hpp"
 #include "sgmp/pack/metadata.hpp"
+#include "sgmp/pack/name_table.hpp"
 
 namespace sgmp::engine {
 

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string_view>
 
-#include "sgmp/engine/name_table.hpp"
+#include "sgmp/pack/name_table.hpp"
 
 namespace sgmp::engine {
 

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <utility>
 
-namespace sgmp::engine {
+namespace sgmp {
 
 template <class Enum, std::size_t N>
 struct NameTable {
@@ -42,4 +42,4 @@ struct NameTable {
     }
 };
 
-}  // namespace sgmp::engine
+}  // namespace sgmp

@@ -16,10 +16,10 @@
 #include <string_view>
 #include <vector>
 
-#include "sgmp/engine/name_table.hpp"
+#include "sgmp/pack/name_table.hpp"
 #include "sgmp/pack/random.hpp"
 
-namespace sgmp::engine {
+namespace sgmp {
 
 struct SizeMode {
     SizeMode() = default;
@@ -97,4 +97,4 @@ DrawnSizes draw_sizes(std::size_t count, double phi_target, const std::vector<Si
 std::vector<double> draw_diameters(std::size_t count, double phi_target,
                                    const std::vector<SizeMode>& modes, Random& rng);
 
-}  // namespace sgmp::engine
+}  // namespace sgmp

@@ -3,8 +3,12 @@
 #include "launcher_options.hpp"
 #include "pour_parameter_options.hpp"
 
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include "sgmp/cli/parameter_options.hpp"
 #include "sgmp/cli/run_main.hpp"
@@ -16,6 +20,8 @@
 #include "sgmp/pack/option_rules.hpp"
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/pack/parameter_error.hpp"
+#include "sgmp/pack/size_modes.hpp"
+#include "sgmp/reference/pour_parameters.hpp"
 
 namespace sgmp::reference {
 namespace {
@@ -38,13 +44,60 @@ StartPositions start_positions(const std::string& name, const PourParams& p) {
     return start;
 }
 
+/// The modes of --size-distribution FILE or lognormal:… (size_modes.hpp), as sgmp pack
+/// reads them; a bad file is a usage error naming file:line. Fractions that do not sum to
+/// 1 are normalised, in one warning line.
+void read_size_distribution(const PourOptions& o, PourParams& p) {
+    const std::string& path = o.size_distribution;
+    if (o.size_modes_option != nullptr && o.size_modes_option->count() > 0) {
+        throw cli::UsageError("--size-distribution " + path +
+                              ": give either --size-modes or --size-distribution, not both");
+    }
+    if (is_lognormal(path)) {
+        const PourParameter* row = find_row(pour_parameters(), "size_distribution");
+        if (!row->parse(p, path)) {
+            throw ParameterError(row->name, path, row->rule);
+        }
+        return;
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!std::filesystem::is_regular_file(path) || !in) {
+        throw cli::UsageError("--size-distribution " + path + ": must name a readable file");
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    try {
+        p.size_modes = parse_size_distribution_csv(text.str(), path);
+    } catch (const InputError& e) {
+        throw cli::UsageError(std::string("--size-distribution ") + e.what());
+    }
+    p.size_distribution = path;
+    double total = 0.0;
+    for (const SizeMode& m : p.size_modes) {
+        total += m.fraction;
+    }
+    if (std::abs(total - 1.0) > 1e-9) {
+        std::cerr << "sgmp-reference: warning: --size-distribution " << printable(path)
+                  << ": fractions sum to " << format_number(total) << "; normalised to 1\n";
+    }
+}
+
 }  // namespace
 
 CLI::App* add_pour_command(CLI::App& app, PourOptions& o) {
     CLI::App* cmd = app.add_subcommand(
-        "pour", "Pour N equal spheres into the container and write the settled pack.");
+        "pour",
+        "Pour N spheres (equal, or a blend as sgmp pack makes it) into the container and write "
+        "the settled pack.");
     PourParams& p = o.request.parameters;
     add_pour_parameter_options(*cmd, p, o.refused, {}, {"count", "seed"});
+    // A distribution may be a file, which the front end reads (run_pour).
+    if (CLI::Option* table_option = cmd->get_option_no_throw("--size-distribution")) {
+        const std::string help = table_option->get_description();
+        cmd->remove_option(table_option);
+        cmd->add_option("--size-distribution", o.size_distribution, help);
+    }
+    o.size_modes_option = cmd->get_option_no_throw("--size-modes");
     cmd->add_option("--out", o.out, "Output pack file (extended XYZ; .gz compresses)")->required();
     add_launcher_options(*cmd, o.request);
     cmd->add_option("--timeout", o.timeout, "Wall-clock limit in seconds; 0 means none")
@@ -76,6 +129,9 @@ int run_pour(PourOptions& o, const PourObserver& observer, const std::function<b
     PourRequest& request = o.request;
     PourParams& p = request.parameters;
     cli::throw_refused(o.refused);
+    if (!o.size_distribution.empty()) {
+        read_size_distribution(o, p);
+    }
     p.validate();
     try {
         check_writable(o.out, o.force);

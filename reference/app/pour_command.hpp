@@ -17,6 +17,8 @@ struct PourOptions {
     std::string out;
     std::string keep_work;
     std::string arrangement;
+    std::string size_distribution;  ///< a CSV file or lognormal:…, read by run_pour
+    CLI::Option* size_modes_option = nullptr;
     double timeout = 0.0;
     bool force = false;
     bool quiet = false;

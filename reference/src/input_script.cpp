@@ -1,6 +1,10 @@
 #include "sgmp/reference/input_script.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
+#include <vector>
 
 #include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/metadata.hpp"
@@ -56,15 +60,103 @@ std::string processor_grid(const PourParams& p) {
     return std::to_string(grid[0]) + " " + std::to_string(grid[1]) + " " + std::to_string(grid[2]);
 }
 
+namespace {
+
+constexpr const char* kSideWalls =
+    "fix wall_xl all wall/gran model hertz tangential history rolling_friction cdt primitive type "
+    "1 xplane -0.625 tangential_damping ${tangential_damping}\n"
+    "fix wall_xh all wall/gran model hertz tangential history rolling_friction cdt primitive type "
+    "1 xplane 0.625 tangential_damping ${tangential_damping}\n"
+    "fix wall_zl all wall/gran model hertz tangential history rolling_friction cdt primitive type "
+    "1 zplane -0.625 tangential_damping ${tangential_damping}\n"
+    "fix wall_zh all wall/gran model hertz tangential history rolling_friction cdt primitive type "
+    "1 zplane 0.625 tangential_damping ${tangential_damping}";
+
+/// The cloud's insertion: one template, distribution and insert/pack for equal spheres;
+/// for a blend one of each per species, largest first, each filling the region up to the
+/// count inserted so far (LIGGGHTS' particles_in_region counts every sphere in the region),
+/// so each species holds exactly its count.
+std::string insertion(const PourParams& p, const LiggghtsSeeds& seeds) {
+    const std::string tail =
+        " insert_every once overlapcheck yes all_in yes maxattempt 1000 particles_in_region ";
+    if (!p.is_blend()) {
+        return "fix sphere_template all particletemplate/sphere " +
+               std::to_string(seeds.particle_template) +
+               " atom_type 1 density constant ${density} radius constant ${radius}\n"
+               "fix sphere_sizes    all particledistribution/discrete " +
+               std::to_string(seeds.distribution) +
+               " 1 sphere_template 1.0\n"
+               "fix insert_cloud    all insert/pack seed " +
+               std::to_string(seeds.insertion) + " distributiontemplate sphere_sizes" + tail +
+               "${count} region cloud ntry_mc 10000";
+    }
+    const std::vector<PourSpecies> species = p.species();
+    std::vector<std::size_t> order(species.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        order[i] = i;
+    }
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return species[a].diameter > species[b].diameter;
+    });
+    const std::vector<LiggghtsSeeds> all = liggghts_species_seeds(p.seed, species.size());
+    std::string text;
+    std::size_t inserted = 0;
+    for (const std::size_t i : order) {
+        if (species[i].count == 0) {
+            continue;
+        }
+        const std::string k = std::to_string(i + 1);
+        inserted += species[i].count;
+        text += "# species " + k + ": " + std::to_string(species[i].count) +
+                " spheres of d = " + format_number(species[i].diameter) + " m\n";
+        text += "fix template_" + k + " all particletemplate/sphere " +
+                std::to_string(all[i].particle_template) + " atom_type 1 density constant " +
+                format_number(species[i].density) + " radius constant " +
+                format_number(species[i].diameter / 2.0) + "\n";
+        text += "fix sizes_" + k + " all particledistribution/discrete " +
+                std::to_string(all[i].distribution) + " 1 template_" + k + " 1.0\n";
+        text += "fix insert_" + k + " all insert/pack seed " + std::to_string(all[i].insertion) +
+                " distributiontemplate sizes_" + k + tail + std::to_string(inserted) +
+                " region cloud ntry_mc 10000\n";
+    }
+    text.pop_back();
+    return text;
+}
+
+/// The radius the time step and the neighbour skin are set from: d/2 for equal spheres;
+/// for a blend the smallest r_i·√(ρ_i/ρ) (the shortest Rayleigh time at density ρ).
+double rayleigh_radius(const PourParams& p) {
+    double radius = std::numeric_limits<double>::infinity();
+    for (const PourSpecies& s : p.species()) {
+        radius = std::min(radius, s.diameter / 2.0 * std::sqrt(s.density / p.density));
+    }
+    return p.is_blend() ? radius : p.diameter() / 2.0;
+}
+
+}  // namespace
+
 std::string pour_script(const PourParams& p, double start_top) {
     const double d = p.diameter();
     const LiggghtsSeeds seeds = liggghts_seeds(p.seed);
+    const bool periodic = p.sides == Sides::Periodic;
     std::map<std::string, std::string> values{
+        {"what", p.is_blend() ? "spheres of " + std::to_string(p.species().size()) + " sizes"
+                              : "equal spheres"},
+        {"container_text",
+         periodic ? "x and z periodic with period 1.25 m (boundary p f p), floor at y = "
+                    "-0.625 m, no lid."
+                  : "walls at x = +-0.625 m and z = +-0.625 m, floor at y = -0.625 m, no lid."},
+        {"diameter_text",
+         p.is_blend() ? "number-mean diameter d (m), the energy scale's" : "sphere diameter d (m)"},
+        {"radius_text",
+         p.is_blend() ? "smallest r_i sqrt(rho_i/rho) (m): time step, skin" : "d / 2 (m)"},
+        {"boundary", periodic ? "p f p" : "f f f"},
+        {"side_walls", periodic ? "# no side walls: x and z are periodic" : kSideWalls},
         {"sgmp_version", version()},
         {"count", std::to_string(p.count)},
         {"seed", std::to_string(p.seed)},
         {"diameter", format_number(d)},
-        {"radius", format_number(d / 2.0)},
+        {"radius", format_number(rayleigh_radius(p))},
         {"density", format_number(p.density)},
         {"youngs_modulus", format_number(p.youngs_modulus)},
         {"poisson_ratio", format_number(p.poisson_ratio)},
@@ -88,6 +180,7 @@ std::string pour_script(const PourParams& p, double start_top) {
         // LIGGGHTS refuses E above 1e9 Pa in SI units unless told the particles are hard.
         {"hard_particles", p.youngs_modulus > 1e9 ? "hard_particles  yes" : "# E <= 1e9 Pa"},
     };
+    values["insertion"] = insertion(p, seeds);
     const std::string& start_template =
         embedded_template(p.arrangement ? "start-arrangement.in" : "start-cloud.in");
     values["start"] = fill_template(start_template, values);

@@ -280,7 +280,21 @@ void check_at_rest(const Pack& raw, const PourParams& p) {
                         "cannot show that the pour settled");
     }
     const double d_metres = p.diameter() * kMetresPerUnit;
-    const double ke_ratio = *rms * *rms / (2.0 * p.gravity * d_metres);
+    // A blend's kinetic energy weighs each sphere by its mass; the rms alone bounds it from
+    // below by the lightest sphere's: Σ mᵢvᵢ² ≥ m_min Σ vᵢ², so v_rms² / (2 g d) is at most
+    // the threshold times m(d) / m_min.
+    double allowed = 1.0;
+    if (p.is_blend()) {
+        const auto mass = [](double diameter, double density) {
+            return density * diameter * diameter * diameter;
+        };
+        double lightest = std::numeric_limits<double>::infinity();
+        for (const PourSpecies& s : p.species()) {
+            lightest = std::min(lightest, mass(s.diameter, s.density));
+        }
+        allowed = mass(p.diameter(), p.density) / lightest;
+    }
+    const double ke_ratio = *rms * *rms / (2.0 * p.gravity * d_metres) / allowed;
     if (!(ke_ratio <= p.settle_threshold * (1.0 + 1e-9))) {
         throw PourError(
             "the LIGGGHTS result still moves: its velocities give KE_trans/(m g d) "
@@ -310,20 +324,38 @@ Pack read_final(const fs::path& dump, const PourParams& p) {
     check_at_rest(raw, p);
     std::sort(raw.particles.begin(), raw.particles.end(),
               [](const Particle& a, const Particle& b) { return a.id < b.id; });
-    const double r = p.diameter() / 2.0;
+    const std::vector<PourSpecies> species = p.species();
+    std::vector<std::size_t> found(species.size(), 0);
     for (std::size_t i = 0; i < raw.particles.size(); ++i) {
         Particle& particle = raw.particles[i];
         if (particle.id != static_cast<std::int64_t>(i + 1)) {
             throw PourError(std::string(kResultName) + ": particle ids are not 1.." +
                             std::to_string(p.count));
         }
-        if (std::abs(particle.radius - r) > 1e-12 * r) {
+        // Each sphere is of one species: its radius is that species' d/2, which it gets
+        // exactly (the sizing rule's), and a blend's sphere its species number.
+        std::size_t k = 0;
+        while (k < species.size() && std::abs(particle.radius - species[k].diameter / 2.0) >
+                                         1e-12 * species[k].diameter / 2.0) {
+            ++k;
+        }
+        if (k == species.size()) {
             throw PourError(std::string(kResultName) + ": radius " +
                             format_number(particle.radius) +
-                            " differs from d/2 = " + format_number(r));
+                            " differs from d/2 = " + format_number(species.front().diameter / 2.0) +
+                            (species.size() > 1 ? " and every other species' d/2" : ""));
         }
-        particle.radius = r;                // exactly the sizing rule's d/2
+        ++found[k];
+        particle.radius = species[k].diameter / 2.0;
+        particle.species = p.is_blend() ? static_cast<int>(k + 1) : 0;
         particle.center /= kMetresPerUnit;  // metres to project units
+    }
+    for (std::size_t k = 0; k < species.size(); ++k) {
+        if (found[k] != species[k].count) {
+            throw PourError(std::string(kResultName) + " holds " + std::to_string(found[k]) +
+                            " spheres of species " + std::to_string(k + 1) + ", not " +
+                            std::to_string(species[k].count));
+        }
     }
     Pack pack;
     pack.particles = std::move(raw.particles);
@@ -383,6 +415,13 @@ void record(Metadata& m, const PourRequest& request, const PourLog& log, const P
                                 std::to_string(seeds.insertion));
     m.set_number("wall_seconds", std::round(r.wall_seconds * 100.0) / 100.0);
     m.set("container", Container{}.to_string());
+    if (p.is_blend()) {
+        std::string counts;
+        for (const PourSpecies& s : p.species()) {
+            counts += (counts.empty() ? "" : ",") + std::to_string(s.count);
+        }
+        m.set("species_counts", counts);
+    }
 }
 
 }  // namespace
@@ -430,7 +469,7 @@ PourResult pour(const PourRequest& request, const PourObserver& observer) {
     result.steps = watch.log.steps;
     result.ke_ratio = watch.log.ke_ratio;
     const double d = p.diameter();
-    const OverlapCount overlaps = count_overlaps(result.pack.particles, Container{}, 0.0);
+    const OverlapCount overlaps = count_overlaps(result.pack.particles, p.container(), 0.0);
     result.max_overlap_over_d = overlaps.max_pair / d;
     result.max_wall_penetration_over_d = overlaps.max_wall / d;
     result.phi_control_volume = packing_fraction(result.pack, control_volume());

@@ -1,5 +1,6 @@
 #include "sgmp/reference/pour_parameters.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -50,9 +51,14 @@ std::vector<Row> count_and_identity() {
     rows.push_back(number(
         "phi_target", "identity", [](auto& p) -> auto& { return p.phi_target; },
         "Target packing fraction phi* of the sizing rule",
-        require(
-            "phi_target", [](const PourParams& p) { return p.phi_target; },
-            [](double v) { return v > 0.0 && v <= kMaxPhiTarget; }, "in (0, 0.74048]")));
+        [](const PourParams& p, const PourCheckContext& c) {
+            // Blends of several sizes pack denser than equal spheres can (size_modes.hpp).
+            const bool blend = p.is_blend();
+            require(
+                "phi_target", [](const PourParams& q) { return q.phi_target; },
+                [&](double v) { return v > 0.0 && v <= (blend ? 1.0 : kMaxPhiTarget); },
+                blend ? "in (0, 1] for a blend" : "in (0, 0.74048]")(p, c);
+        }));
     rows.push_back(number(
         "friction", "identity", [](auto& p) -> auto& { return p.friction; },
         "Sliding friction coefficient mu, particles and walls",
@@ -82,6 +88,120 @@ std::vector<Row> count_and_identity() {
     damping.recorded = [](const PourParams&) { return false; };  // in contact_model
     rows.push_back(std::move(damping));
     return rows;
+}
+
+/// A row choosing a value of a name table (walls/periodic, number/volume/mass).
+template <class Member, class Table>
+Row choice(std::string name, Member member, Table table, std::string help) {
+    Row row;
+    row.name = std::move(name);
+    row.group = "identity";
+    row.kind = ValueKind::Choice;
+    row.help = std::move(help);
+    row.rule = "must be one of " + table().choices();
+    row.parse = [member, table](PourParams& p, std::string_view text) {
+        const auto value = table().parse(text);
+        if (value) {
+            member(p) = *value;
+        }
+        return value.has_value();
+    };
+    row.format = [member, table](const PourParams& p) {
+        return std::string(table().name(member(p)));
+    };
+    return row;
+}
+
+/// The sizes of a blend, as `sgmp pack` takes them (size_modes.hpp), and the sides.
+void add_sizes_and_sides(std::vector<Row>& rows) {
+    Row modes;
+    modes.name = "size_modes";
+    modes.group = "identity";
+    modes.kind = ValueKind::List;
+    modes.help =
+        "Particle sizes as relative-diameter:fraction[:density] items, as sgmp pack takes them "
+        "(species 1, 2, ... in this order; fractions in --fraction-basis; densities relative, "
+        "species 1 at --density); the pour holds the same counts and diameters as the pack";
+    modes.rule = "must be positive diameter:fraction[:density] items, e.g. 1:0.5,0.5:0.5";
+    modes.parse = [](PourParams& p, std::string_view text) {
+        auto parsed = parse_size_modes(text);
+        if (parsed) {
+            p.size_modes = std::move(*parsed);
+        }
+        return parsed.has_value();
+    };
+    modes.format = [](const PourParams& p) { return size_modes_to_string(p.size_modes); };
+    modes.recorded = [](const PourParams& p) { return p.is_blend(); };
+    modes.check = [](const PourParams& p, const PourCheckContext&) {
+        if (p.size_modes.empty()) {
+            throw ParameterError("size_modes", "", "needs at least one mode");
+        }
+        if (p.is_blend() && p.arrangement) {
+            throw ParameterError("size_modes", size_modes_to_string(p.size_modes),
+                                 "a blend is poured from the cloud only (no --from-arrangement)");
+        }
+    };
+    rows.push_back(std::move(modes));
+    Row distribution;
+    distribution.name = "size_distribution";
+    distribution.group = "identity";
+    distribution.kind = ValueKind::Text;
+    distribution.help =
+        "Size distribution as sgmp pack takes it: a CSV file diameter,fraction[,density] or "
+        "lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]]";
+    distribution.rule = "must be lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]]";
+    // The text form only: a file is read by the front end (parse_size_distribution_csv).
+    distribution.parse = [](PourParams& p, std::string_view text) {
+        if (text.empty()) {  // unset: the sizes are --size-modes'
+            p.size_distribution.clear();
+            return true;
+        }
+        if (!is_lognormal(text)) {
+            return false;
+        }
+        p.size_modes = lognormal_modes(text);
+        p.size_distribution = std::string(text);
+        return true;
+    };
+    distribution.format = [](const PourParams& p) { return p.size_distribution; };
+    distribution.recorded = [](const PourParams& p) { return !p.size_distribution.empty(); };
+    distribution.unset_by_default = true;
+    rows.push_back(std::move(distribution));
+    Row basis = choice(
+        "fraction_basis", [](auto& p) -> auto& { return p.fraction_basis; },
+        [] { return fraction_bases(); },
+        "What the fractions of --size-modes or --size-distribution are: number, volume or mass");
+    basis.recorded = [](const PourParams& p) { return p.is_blend(); };
+    basis.check = [](const PourParams& p, const PourCheckContext&) {
+        (void)number_fractions(p.size_modes, p.fraction_basis);  // mass needs every density
+    };
+    rows.push_back(std::move(basis));
+    Row sides = choice(
+        "sides", [](auto& p) -> auto& { return p.sides; }, [] { return sides_names(); },
+        "The container's lateral sides: walls, or periodic (LIGGGHTS boundary p f p: x and z "
+        "periodic, the floor kept)");
+    sides.recorded = [](const PourParams& p) { return p.sides != Sides::Walls; };
+    sides.check = [](const PourParams& p, const PourCheckContext&) {
+        if (p.sides != Sides::Periodic) {
+            return;
+        }
+        double largest = 0.0;
+        for (const PourSpecies& s : p.species()) {
+            largest = std::max(largest, s.diameter);
+        }
+        const double cell = kContainerSide;
+        if (largest > cell / 4.0) {
+            throw ParameterError("sides", "periodic",
+                                 "needs the largest sphere (d = " + format_number(largest) +
+                                     ") to fit the periodic cell (" + format_number(cell) +
+                                     ") at least 4 times across; use more spheres");
+        }
+        if (p.arrangement) {
+            throw ParameterError("sides", "periodic",
+                                 "is poured from the cloud only (no --from-arrangement)");
+        }
+    };
+    rows.push_back(std::move(sides));
 }
 
 void add_start(std::vector<Row>& rows) {
@@ -231,6 +351,7 @@ void add_parallel(std::vector<Row>& rows) {
 
 std::vector<Row> make_rows() {
     std::vector<Row> rows = count_and_identity();
+    add_sizes_and_sides(rows);
     add_start(rows);
     add_material(rows);
     add_numerics(rows);

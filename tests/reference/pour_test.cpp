@@ -1,5 +1,6 @@
 // Real pours with LIGGGHTS: 150 spheres, settled in about a second of computing each.
 #include <boost/test/unit_test.hpp>
+#include <cmath>
 #include <filesystem>
 
 #include "run_program.hpp"
@@ -79,6 +80,48 @@ BOOST_AUTO_TEST_CASE(a_two_rank_near_frictionless_pour_from_an_arrangement) {
     BOOST_TEST(*pack.metadata.get("processor_grid") == "2 1 1");
     BOOST_TEST(*pack.metadata.get("arrangement") == "loose-random");
     BOOST_TEST(*pack.metadata.get_number("friction") == 0.01);
+    fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(liggghts_blend_pours)
+
+// A bimodal blend (diameter ratio 1 : 0.5, equal volumes) in a periodic cell: the species
+// hold the deterministic counts 67 : 533 of sgmp pack, every radius is its species' d/2
+// exactly, the header says periodic, and the minimum-image overlaps stay soft (< 1 % of d).
+BOOST_AUTO_TEST_CASE(a_periodic_bimodal_pour_of_600) {
+    const fs::path dir = testing::fresh_directory("sgmp-ref-blend");
+    const fs::path out = dir / "blend.xyz";
+    testing::ProgramOptions options;
+    options.args = {"pour",       "--count",      "600",           "--seed",
+                    "3",          "--size-modes", "1:0.5,0.5:0.5", "--fraction-basis",
+                    "volume",     "--sides",      "periodic",      "--out",
+                    out.string(), "--quiet"};
+    const testing::ProgramRun run = testing::run_program(SGMP_REFERENCE_EXE, options);
+    BOOST_TEST_REQUIRE(run.exit_code == 0, run.stderr_text);
+    const Pack pack = read_pack_file(out);
+    BOOST_TEST_REQUIRE(pack.particles.size() == 600u);
+    BOOST_TEST(*pack.metadata.get("sides") == "periodic");
+    BOOST_TEST(*pack.metadata.get("species_counts") == "67,533");
+    const double s = std::cbrt(18.0 * 0.63 / (3.141592653589793 * 600.0 * (1.0 / 9.0 + 1.0 / 9.0)));
+    std::size_t large = 0;
+    Container cell;
+    cell.periodic = true;
+    for (const Particle& p : pack.particles) {
+        const double expected = p.species == 1 ? s / 2.0 : s / 4.0;
+        BOOST_TEST(p.radius == expected, boost::test_tools::tolerance(1e-12));
+        large += p.species == 1 ? 1 : 0;
+        BOOST_TEST(p.center.x() >= cell.x_min);
+        BOOST_TEST(p.center.x() < cell.x_max);
+        BOOST_TEST(p.center.z() >= cell.z_min);
+        BOOST_TEST(p.center.z() < cell.z_max);
+    }
+    BOOST_TEST(large == 67u);
+    const double d = *pack.metadata.get_number("diameter");
+    const OverlapCount overlaps = count_overlaps(pack.particles, cell, 0.0);
+    BOOST_TEST(overlaps.max_pair < 0.01 * d);
+    BOOST_TEST(overlaps.max_wall < 0.01 * d);  // the floor only
     fs::remove_all(dir);
 }
 

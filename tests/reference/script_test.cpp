@@ -160,3 +160,88 @@ BOOST_AUTO_TEST_CASE(the_processor_grid_splits_horizontally) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(blends_and_periodic_sides)
+
+/// A bimodal blend of equal volumes (diameter ratio 1 : 0.5): 1 : 8 in number.
+PourParams bimodal(std::size_t count) {
+    PourParams p;
+    p.count = count;
+    p.size_modes = {{1.0, 0.5}, {0.5, 0.5}};
+    p.fraction_basis = sgmp::FractionBasis::Volume;
+    return p;
+}
+
+BOOST_AUTO_TEST_CASE(a_blend_holds_the_counts_and_diameters_of_the_pack_rule) {
+    const PourParams p = bimodal(1002);
+    const auto species = p.species();
+    BOOST_TEST_REQUIRE(species.size() == 2u);
+    // Number fractions 1/9 and 8/9: 111.33 and 890.67 round to 111 and 891.
+    BOOST_TEST(species[0].count == 111u);
+    BOOST_TEST(species[1].count == 891u);
+    BOOST_TEST(species[1].diameter == 0.5 * species[0].diameter);
+    // The generalised sizing rule (N/3)(pi/6) sum n_i (a_i s)^3 = phi*, in closed form.
+    const double s =
+        std::cbrt(18.0 * 0.63 / (std::numbers::pi * 1002.0 * (1.0 / 9.0 + 8.0 / 9.0 / 8.0)));
+    BOOST_TEST(species[0].diameter == s, boost::test_tools::tolerance(1e-14));
+    BOOST_TEST(p.diameter() == (111.0 * s + 891.0 * 0.5 * s) / 1002.0,
+               boost::test_tools::tolerance(1e-14));
+}
+
+BOOST_AUTO_TEST_CASE(a_blend_is_inserted_largest_first_up_to_each_count) {
+    PourParams p = bimodal(1002);
+    p.size_modes = {{0.5, 0.5}, {1.0, 0.5}};  // the small species first: inserted last
+    const std::string script = pour_script(p, p.cloud_top());
+    const auto large = script.find("fix insert_2 ");
+    const auto small = script.find("fix insert_1 ");
+    BOOST_TEST_REQUIRE(large != std::string::npos);
+    BOOST_TEST_REQUIRE(small != std::string::npos);
+    BOOST_TEST(large < small);
+    BOOST_TEST(script.find("particles_in_region 111 region cloud", large) != std::string::npos);
+    BOOST_TEST(script.find("particles_in_region 1002 region cloud", small) != std::string::npos);
+    // The time step follows the small spheres: radius = the smallest d/2.
+    BOOST_TEST(number(script_variable(script, "radius")) == p.species()[0].diameter / 2.0,
+               boost::test_tools::tolerance(1e-15));
+    BOOST_TEST(script.find("insert_cloud") == std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(periodic_sides_have_no_side_walls) {
+    PourParams p = bimodal(1002);
+    p.sides = sgmp::Sides::Periodic;
+    const std::string periodic = pour_script(p, p.cloud_top());
+    BOOST_TEST(periodic.find("\nboundary        p f p") != std::string::npos);
+    BOOST_TEST(periodic.find("xplane") == std::string::npos);
+    BOOST_TEST(periodic.find("zplane") == std::string::npos);
+    BOOST_TEST(periodic.find("yplane -0.625") != std::string::npos);  // the floor is kept
+    p.sides = sgmp::Sides::Walls;
+    const std::string walls = pour_script(p, p.cloud_top());
+    BOOST_TEST(walls.find("\nboundary        f f f") != std::string::npos);
+    BOOST_TEST(walls.find("xplane 0.625") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(equal_spheres_keep_one_insertion) {
+    PourParams p;
+    p.count = 150;
+    const std::string script = pour_script(p, p.cloud_top());
+    BOOST_TEST(script.find("fix insert_cloud    all insert/pack seed") != std::string::npos);
+    BOOST_TEST(script.find("particles_in_region ${count} region cloud") != std::string::npos);
+    BOOST_TEST(number(script_variable(script, "radius")) == p.diameter() / 2.0);
+}
+
+BOOST_AUTO_TEST_CASE(blends_and_periodic_cells_are_refused_where_they_cannot_be_poured) {
+    PourParams p = bimodal(300);
+    p.sides = sgmp::Sides::Periodic;  // d_max = 0.378 > 1.25 / 4
+    BOOST_CHECK_THROW(p.validate(), std::invalid_argument);
+    p.count = 1002;
+    BOOST_CHECK_NO_THROW(p.validate());
+    p.arrangement = "loose-random";
+    BOOST_CHECK_THROW(p.validate(), std::invalid_argument);
+    p = bimodal(1002);
+    p.fraction_basis = sgmp::FractionBasis::Mass;  // no densities
+    BOOST_CHECK_THROW(p.validate(), std::invalid_argument);
+    p = bimodal(1002);
+    p.phi_target = 0.8;  // a blend may ask above the one-size bound
+    BOOST_CHECK_NO_THROW(p.validate());
+}
+
+BOOST_AUTO_TEST_SUITE_END()

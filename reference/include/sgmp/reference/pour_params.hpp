@@ -3,16 +3,32 @@
 /// Everything that defines a LIGGGHTS pour, in SI units with 1 project length unit = 1 m.
 ///
 /// The sphere diameter follows the project's sizing rule, d = (18 φ* / (π N))^(1/3), so
-/// the N spheres hold a solid volume of 3 φ* whatever N is. The starting cloud fills the
-/// container's footprint from the floor up to a height h at solid fraction `cloud_fraction`:
-///     N (π/6) d³ = cloud_fraction · (1.25 − d)² · (h − d)   (the box the centres may take).
+/// the N spheres hold a solid volume of 3 φ* whatever N is. A blend (`size_modes`, as
+/// `sgmp pack` takes them: size_modes.hpp) has the generalised rule's diameters a_i·s and
+/// its deterministic counts, so a pour and an SGMP pack of the same request hold the same
+/// particles. The starting cloud fills the container's footprint from the floor up to a
+/// height h at solid fraction `cloud_fraction`:
+///     Σ N_i (π/6) d_i³ = cloud_fraction · (1.25 − d_max)² · (h − d_max)
+/// (the box the centres of the largest spheres may take).
 
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "sgmp/pack/geometry.hpp"
+#include "sgmp/pack/sides.hpp"
+#include "sgmp/pack/size_modes.hpp"
 
 namespace sgmp::reference {
+
+/// One species of a pour: its spheres' diameter (m), how many, and their density (kg/m³).
+struct PourSpecies {
+    double diameter = 0.0;
+    std::size_t count = 0;
+    double density = 0.0;
+};
 
 /// 1 project length unit in metres. Positions pass through unchanged.
 inline constexpr double kMetresPerUnit = 1.0;
@@ -36,7 +52,13 @@ struct PourParams {
     double check_time = 0.02;         ///< simulated seconds between settling checks
     double max_time = 30.0;           ///< simulated seconds allowed in all (the step cap)
     double cloud_fraction = 0.3;      ///< solid fraction of the starting cloud
-    int ranks = 1;                    ///< MPI ranks (1: run liggghts directly)
+    /// Sizes, as `sgmp pack --size-modes` (fractions in `fraction_basis`, densities relative
+    /// to species 1's `density`); one mode of size 1 is the equal-sphere pour.
+    std::vector<SizeMode> size_modes = std::vector<SizeMode>(1);
+    FractionBasis fraction_basis = FractionBasis::Number;
+    std::string size_distribution;  ///< the distribution as the user named it, when given
+    Sides sides = Sides::Walls;     ///< periodic: x and z periodic, the floor kept
+    int ranks = 1;                  ///< MPI ranks (1: run liggghts directly)
     /// LIGGGHTS processor grid "PX,PY,PZ" with PX·PY·PZ = ranks; empty: chosen from the
     /// container's shape (launcher.hpp).
     std::string processors;
@@ -50,7 +72,15 @@ struct PourParams {
     /// first row of the pour parameter table (pour_parameters.hpp) whose rule it breaks.
     void validate() const;
 
+    /// The number-mean diameter d = 2⟨r⟩ (the sizing rule's d for equal spheres): the unit
+    /// of overlaps and of the settling measure m(d)·g·d.
     [[nodiscard]] double diameter() const;
+    /// The species in order (species 1, 2, …), with the sizing rule's diameters and the
+    /// deterministic counts of size_modes.hpp; one entry for equal spheres.
+    [[nodiscard]] std::vector<PourSpecies> species() const;
+    [[nodiscard]] bool is_blend() const { return !is_monodisperse(size_modes); }
+    /// The container, periodic across when `sides` says so.
+    [[nodiscard]] Container container() const;
     /// Top of the starting cloud (project units = m).
     [[nodiscard]] double cloud_top() const;
 };
@@ -62,6 +92,9 @@ struct LiggghtsSeeds {
     std::uint64_t insertion = 0;
 };
 LiggghtsSeeds liggghts_seeds(std::uint64_t seed);
+/// The seeds of each species of a blend: species 1 has liggghts_seeds(seed), the others
+/// the following draws of the same generator.
+std::vector<LiggghtsSeeds> liggghts_species_seeds(std::uint64_t seed, std::size_t species);
 
 /// Smallest prime ≥ n (trial division; n below 2^40).
 std::uint64_t next_prime(std::uint64_t n);

@@ -18,9 +18,9 @@
 #include "sgmp/engine/protocol_params.hpp"
 #include "sgmp/engine/relax.hpp"
 #include "sgmp/engine/relax_params.hpp"
-#include "sgmp/engine/sides.hpp"
 #include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/pack.hpp"
+#include "sgmp/pack/sides.hpp"
 #include "sgmp/pack/size_modes.hpp"
 
 namespace sgmp::engine {

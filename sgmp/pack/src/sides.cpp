@@ -1,6 +1,6 @@
-#include "sgmp/engine/sides.hpp"
+#include "sgmp/pack/sides.hpp"
 
-namespace sgmp::engine {
+namespace sgmp {
 
 const NameTable<Sides, 2>& sides_names() {
     static constexpr NameTable<Sides, 2> table{
@@ -16,4 +16,4 @@ std::optional<Sides> parse_sides(std::string_view text) {
     return sides_names().parse(text);
 }
 
-}  // namespace sgmp::engine
+}  // namespace sgmp

@@ -10,7 +10,7 @@
 
 #include "sgmp/pack/name_table.hpp"
 
-namespace sgmp::engine {
+namespace sgmp {
 
 enum class Sides { Walls, Periodic };
 
@@ -19,4 +19,4 @@ const NameTable<Sides, 2>& sides_names();
 std::string_view to_string(Sides sides);
 std::optional<Sides> parse_sides(std::string_view text);
 
-}  // namespace sgmp::engine
+}  // namespace sgmp

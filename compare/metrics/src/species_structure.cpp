@@ -182,11 +182,17 @@ std::optional<SpeciesStructure> measure_species_structure(const std::vector<Part
         thresholds.push_back(t * d);
         max_tolerance = std::max(max_tolerance, t);
     }
-    double max_radius = 0.0;
-    for (const Particle& p : particles) {
-        max_radius = std::max(max_radius, p.radius);
+    // A pair type's contacts lie within r_I,max + r_J,max + δ·d: its own window, so that
+    // the small spheres of a wide blend are not searched out to twice the largest radius.
+    std::vector<double> largest(members.size(), 0.0);
+    for (std::size_t a = 0; a < members.size(); ++a) {
+        for (const Index i : members[a].all) {
+            largest[a] = std::max(largest[a], particles[i].radius);
+        }
     }
-    const double close = (2.0 * max_radius + max_tolerance * d) * (1.0 + 1e-9);
+    const auto close_of = [&](std::size_t a, std::size_t b) {
+        return (largest[a] + largest[b] + max_tolerance * d) * (1.0 + 1e-9);
+    };
     const double side = kPairPassColumnSide * d;
     std::vector<std::unique_ptr<KdColumns>> origin_columns;
     std::vector<std::unique_ptr<KdColumns>> all_columns;
@@ -209,7 +215,7 @@ std::optional<SpeciesStructure> measure_species_structure(const std::vector<Part
                 I.one_radius && J.one_radius ? contact - width * std::round(contact / width) : 0.0;
             const Bins bins{width, offset, options.bins};
             const PairCounts counts = count_pairs(particles, *origin_columns[a], *all_columns[b],
-                                                  a == b, bins, thresholds, close);
+                                                  a == b, bins, thresholds, close_of(a, b));
             const auto origins = static_cast<double>(I.origins.size());
             for (const std::int64_t c : counts.contacts) {
                 z[a][b].push_back(origins > 0.0 ? static_cast<double>(c) / origins : 0.0);

@@ -41,6 +41,14 @@ double PourParams::diameter() const {
     return sum / static_cast<double>(count);
 }
 
+double PourParams::largest_diameter() const {
+    double largest = 0.0;
+    for (const PourSpecies& s : species()) {
+        largest = std::max(largest, s.diameter);
+    }
+    return largest;
+}
+
 Container PourParams::container() const {
     Container c;
     c.periodic = sides == Sides::Periodic;
@@ -60,8 +68,9 @@ double PourParams::cloud_top() const {
     }
     const double d = largest;
     const Container container;
-    const double width = container.x_max - container.x_min - d;
-    const double depth = container.z_max - container.z_min - d;
+    const double back = sides == Sides::Periodic ? d : 0.0;  // input_script.cpp
+    const double width = container.x_max - container.x_min - d - back;
+    const double depth = container.z_max - container.z_min - d - back;
     return container.floor + d + solid / (cloud_fraction * width * depth);
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "sgmp/pack/geometry.hpp"
+#include "sgmp/pack/metadata.hpp"
 #include "sgmp/reference/input_script.hpp"
 #include "sgmp/reference/pour_params.hpp"
 
@@ -188,21 +189,18 @@ BOOST_AUTO_TEST_CASE(a_blend_holds_the_counts_and_diameters_of_the_pack_rule) {
                boost::test_tools::tolerance(1e-14));
 }
 
-BOOST_AUTO_TEST_CASE(a_blend_is_inserted_largest_first_up_to_each_count) {
+BOOST_AUTO_TEST_CASE(a_blend_is_inserted_by_one_number_based_distribution_of_its_counts) {
     PourParams p = bimodal(1002);
-    p.size_modes = {{0.5, 0.5}, {1.0, 0.5}};  // the small species first: inserted last
     const std::string script = pour_script(p, p.cloud_top());
-    const auto large = script.find("fix insert_2 ");
-    const auto small = script.find("fix insert_1 ");
-    BOOST_TEST_REQUIRE(large != std::string::npos);
-    BOOST_TEST_REQUIRE(small != std::string::npos);
-    BOOST_TEST(large < small);
-    BOOST_TEST(script.find("particles_in_region 111 region cloud", large) != std::string::npos);
-    BOOST_TEST(script.find("particles_in_region 1002 region cloud", small) != std::string::npos);
+    BOOST_TEST(script.find("particledistribution/discrete/numberbased") != std::string::npos);
+    // Weights are the deterministic counts over N: 111/1002 and 891/1002.
+    BOOST_TEST(script.find(" 2 template_1 " + sgmp::format_number(111.0 / 1002.0) + " template_2 " +
+                           sgmp::format_number(891.0 / 1002.0)) != std::string::npos);
+    BOOST_TEST(script.find("particles_in_region ${count} region cloud") != std::string::npos);
+    BOOST_TEST(script.find("fix insert_cloud all insert/pack") != std::string::npos);
     // The time step follows the small spheres: radius = the smallest d/2.
-    BOOST_TEST(number(script_variable(script, "radius")) == p.species()[0].diameter / 2.0,
+    BOOST_TEST(number(script_variable(script, "radius")) == p.species()[1].diameter / 2.0,
                boost::test_tools::tolerance(1e-15));
-    BOOST_TEST(script.find("insert_cloud") == std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(periodic_sides_have_no_side_walls) {

@@ -9,7 +9,8 @@
 /// particles. The starting cloud fills the container's footprint from the floor up to a
 /// height h at solid fraction `cloud_fraction`:
 ///     Σ N_i (π/6) d_i³ = cloud_fraction · (1.25 − d_max)² · (h − d_max)
-/// (the box the centres of the largest spheres may take).
+/// (the box the centres of the largest spheres may take); with periodic sides the cloud
+/// keeps d_max back from the high faces, so its sides are 1.25 − 2·d_max.
 
 #include <cstddef>
 #include <cstdint>
@@ -79,6 +80,8 @@ struct PourParams {
     /// deterministic counts of size_modes.hpp; one entry for equal spheres.
     [[nodiscard]] std::vector<PourSpecies> species() const;
     [[nodiscard]] bool is_blend() const { return !is_monodisperse(size_modes); }
+    /// The largest species' diameter (d for equal spheres).
+    [[nodiscard]] double largest_diameter() const;
     /// The container, periodic across when `sides` says so.
     [[nodiscard]] Container container() const;
     /// Top of the starting cloud (project units = m).

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <stdexcept>
 
@@ -124,12 +125,25 @@ struct Setup {
     std::vector<double> thresholds;
     double max_threshold;
     double q6_cutoff;
-    double reach;          // of the pass: g(r), Z and Q6 all lie within it
+    double reach;          // of the pair-counting pass: the g(r) range
     double reach_squared;  //
     double close_squared;  // a pair farther than this is neither a contact nor a bond
     BinSetup kernel;       // of count_bins
     bool equal;            // every radius is `radius`
     double radius;
+    /// A wide blend (r_max > 2·r_min) gathers contacts and bonds from its small spheres
+    /// (r ≤ r_max / 2) and its large ones apart, each within its own reach (close_for).
+    bool split_sizes = false;
+    double small_radius = 0.0;  // r_max / 2 when split_sizes
+    double q6_factor = 0.0;     // q6_cutoff
+    double max_tolerance_d = 0.0;
+
+    /// The gather's reach for origins of radius ≤ r_origin and candidates of radius ≤
+    /// r_other: a contact lies within r_o + r_j + δ_max·d, a bond within q6·(r_o + r_j).
+    [[nodiscard]] double close_for(double r_origin, double r_other) const {
+        return std::max(r_origin + r_other + max_tolerance_d, q6_factor * (r_origin + r_other)) *
+               (1.0 + 1e-9);
+    }
 
     Setup(const std::vector<Particle>& particles, const LocalStructureOptions& options)
         : tolerances(options.tolerances.size()),
@@ -156,13 +170,22 @@ struct Setup {
             thresholds.push_back(t * d);
         }
         max_threshold = max_tolerance * d;
-        reach = std::max(
-            {outer, 2.0 * max_radius + max_tolerance * d, options.q6_cutoff * 2.0 * max_radius});
+        // The pair-counting pass bins distances below `outer` only; contacts and bonds are
+        // gathered apart within `close` (for a wide blend 2·r_max far exceeds the g(r) range).
+        reach = outer;
         reach_squared = reach * reach;
         // Widened far beyond rounding: the exact tests below decide.
         const double close =
             std::max(2.0 * max_radius + max_threshold, q6_cutoff * 2.0 * max_radius) * (1.0 + 1e-9);
         close_squared = close * close;
+        q6_factor = options.q6_cutoff;
+        max_tolerance_d = max_threshold;
+        double min_radius = max_radius;
+        for (const Particle& p : particles) {
+            min_radius = std::min(min_radius, p.radius);
+        }
+        split_sizes = max_radius > 2.0 * min_radius;
+        small_radius = 0.5 * max_radius;
         kernel.reach_squared = reach_squared;
         kernel.per_width = per_width;
         kernel.bins = static_cast<std::uint32_t>(bins);
@@ -181,7 +204,7 @@ struct Close {
     Index index;           // into the particles
     double distance;
     std::uint32_t position;  // in its grid
-    std::uint32_t grid;      // 0: the origins' grid, 1: the other particles'
+    std::uint32_t grid;      // in CloseGrids::grids
 };
 
 /// Buffers of one work item, reused for each of its origins.
@@ -218,29 +241,48 @@ void count_column_pairs(const KdColumns& origin_grid, const KdColumns& other_gri
     }
 }
 
+/// The grids contacts and bonds are gathered from: the origins' and the other particles'
+/// grids, or for a wide blend the same split into small spheres (r ≤ r_max / 2) and large
+/// ones, each searched within its own reach. Close::grid indexes this list.
+struct CloseGrids {
+    std::vector<const KdColumns*> grids;
+    std::vector<double> max_radius;  // of each grid's particles (r_max when not split)
+};
+
 /// Fills scratch.close with the centres close enough to an origin of the column
-/// [begin, end) of the origins' grid to be a contact or a bond (both grids, the origin
-/// itself left out), sorted by origin, then particle index.
-void gather_close(const KdColumns& origin_grid, const KdColumns& other_grid, std::size_t begin,
-                  std::size_t end, const Setup& s, Scratch& scratch) {
+/// [begin, end) of the origins' grid to be a contact or a bond (every grid of `close`, the
+/// origin itself left out), sorted by origin, then particle index.
+void gather_close(const KdColumns& origin_grid, const CloseGrids& close,
+                  const std::vector<Particle>& particles, std::size_t begin, std::size_t end,
+                  const Setup& s, Scratch& scratch) {
     scratch.close.clear();
     if (begin == end) {
         return;
     }
     const std::array<double, 4> footprint = origin_grid.footprint(begin, end);
-    for (const KdColumns* grid : {&origin_grid, &other_grid}) {
-        const bool own = grid == &origin_grid;
+    double column_radius = s.radius;  // the largest origin of the column
+    if (s.split_sizes) {
+        column_radius = 0.0;
+        for (std::size_t o = begin; o < end; ++o) {
+            column_radius = std::max(column_radius, particles[origin_grid.index[o]].radius);
+        }
+    }
+    for (std::size_t g = 0; g < close.grids.size(); ++g) {
+        const KdColumns* grid = close.grids[g];
+        const double reach = s.split_sizes ? s.close_for(column_radius, close.max_radius[g])
+                                           : std::sqrt(s.close_squared);
+        const double reach_squared = s.split_sizes ? reach * reach : s.close_squared;
         grid->for_each_column(
-            footprint, std::sqrt(s.close_squared), 0,
+            footprint, reach, 0,
             [&](std::size_t, std::size_t first, std::size_t last, double half) {
                 for_each_pair_within(
                     origin_grid.x.data(), origin_grid.y.data(), origin_grid.z.data(), begin, end,
                     grid->x.data(), grid->y.data(), grid->z.data(), first, last, half, false,
-                    s.close_squared, [&](std::size_t p, std::size_t k, double q) {
-                        if (!(own && k == p)) {
+                    reach_squared, [&](std::size_t p, std::size_t k, double q) {
+                        if (grid->index[k] != origin_grid.index[p]) {
                             scratch.close.push_back({static_cast<std::uint32_t>(p), grid->index[k],
                                                      std::sqrt(q), static_cast<std::uint32_t>(k),
-                                                     own ? 0u : 1u});
+                                                     static_cast<std::uint32_t>(g)});
                         }
                     });
             });
@@ -272,14 +314,14 @@ void gather_close(const KdColumns& origin_grid, const KdColumns& other_grid, std
 /// Z at every tolerance and the Q6 bond sums of one origin, bonds summed in increasing
 /// particle index (which fixes their rounding whatever the grid or the thread count).
 BondSums contacts_and_bonds(const std::vector<Particle>& particles, const Particle& a,
-                            const Setup& s, const std::array<const KdColumns*, 2>& grids,
-                            const Close* first, const Close* last, Scratch& scratch) {
+                            const Setup& s, const CloseGrids& grids, const Close* first,
+                            const Close* last, Scratch& scratch) {
     std::fill(scratch.z.begin(), scratch.z.end(), 0);
     BondSums bonds;
     for (const Close* close = first; close != last; ++close) {
         const Close& c = *close;
         // The grid's copy of the centre (in cache) and, for equal spheres, the one radius.
-        const KdColumns& grid = *grids[c.grid];
+        const KdColumns& grid = *grids.grids[c.grid];
         const double rb = s.equal ? s.radius : particles[c.index].radius;
         const double gap = c.distance - a.radius - rb;
         if (gap <= s.max_threshold) {
@@ -413,8 +455,31 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
     // Origins are visited in the grid's stored order (column by column: near in space).
     const double side = kPairPassColumnSide * options.mean_diameter;
     const KdColumns origin_grid(particles, origins, side);
-    const KdColumns other_grid(particles, others(particles.size(), origins), side);
-    const std::array<const KdColumns*, 2> grids{&origin_grid, &other_grid};
+    const std::vector<Index> rest = others(particles.size(), origins);
+    const KdColumns other_grid(particles, rest, side);
+    // A wide blend's contacts and bonds: small and large spheres apart (Setup::split_sizes).
+    std::vector<std::unique_ptr<KdColumns>> size_grids;
+    CloseGrids grids{{&origin_grid, &other_grid}, {s.radius, s.radius}};
+    if (s.split_sizes) {
+        grids = {};
+        for (const std::vector<Index>* members : {&origins, &rest}) {
+            std::vector<Index> small;
+            std::vector<Index> large;
+            double large_radius = 0.0;
+            for (const Index i : *members) {
+                const bool is_large = particles[i].radius > s.small_radius;
+                (is_large ? large : small).push_back(i);
+                large_radius =
+                    is_large ? std::max(large_radius, particles[i].radius) : large_radius;
+            }
+            size_grids.push_back(std::make_unique<KdColumns>(particles, small, side));
+            grids.grids.push_back(size_grids.back().get());
+            grids.max_radius.push_back(s.small_radius);
+            size_grids.push_back(std::make_unique<KdColumns>(particles, large, side));
+            grids.grids.push_back(size_grids.back().get());
+            grids.max_radius.push_back(large_radius);
+        }
+    }
     const Partial total = chunked_reduce(
         origin_grid.columns(), kColumnsPerChunk, Partial(s.tolerances, options.bins),
         [&](Partial& part, std::size_t first, std::size_t last) {
@@ -427,7 +492,7 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
             for (std::size_t column = first; column < last; ++column) {
                 const std::size_t begin = origin_grid.column_begin(column);
                 const std::size_t end = origin_grid.column_begin(column + 1);
-                gather_close(origin_grid, other_grid, begin, end, s, scratch);
+                gather_close(origin_grid, grids, particles, begin, end, s, scratch);
                 const Close* close = scratch.close.data();
                 const Close* const close_end = close + scratch.close.size();
                 for (std::size_t o = begin; o < end; ++o) {

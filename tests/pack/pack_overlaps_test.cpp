@@ -98,6 +98,44 @@ BOOST_AUTO_TEST_CASE(pairs_match_brute_force_over_seeds_and_spreads) {
     }
 }
 
+BOOST_AUTO_TEST_CASE(a_wide_blend_finds_every_pair_once_in_order) {
+    // Radii 0.01–0.03 and a few of 0.2–0.3 (r_max > 2 r_min: cells for the small spheres,
+    // the large ones searched beyond them): the pair list of the O(N²) loop, each pair
+    // once with i < j, and every work item [first, last) giving its own pairs in order.
+    for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+        std::vector<Particle> ps = random_spheres(600, 0.4, seed);
+        Random random(seed + 100);
+        for (std::size_t i = 0; i < ps.size(); i += 37) {
+            ps[i].radius = random.uniform(0.2, 0.3);
+        }
+        std::vector<std::pair<std::size_t, std::size_t>> fast;
+        const OverlapSearch search(ps);
+        for (std::size_t first = 0; first < ps.size(); first += 97) {
+            std::vector<std::pair<std::size_t, std::size_t>> item;
+            search.pairs_from(first, std::min(ps.size(), first + 97),
+                              [&](std::size_t i, std::size_t j, double depth) {
+                                  BOOST_TEST(i < j);
+                                  BOOST_TEST(i >= first);
+                                  BOOST_TEST(depth > 0.0);
+                                  item.emplace_back(i, j);
+                              });
+            fast.insert(fast.end(), item.begin(), item.end());
+        }
+        std::set<std::pair<std::size_t, std::size_t>> unique(fast.begin(), fast.end());
+        BOOST_TEST(unique.size() == fast.size());  // none twice
+        std::set<std::pair<std::size_t, std::size_t>> brute;
+        for (std::size_t i = 0; i < ps.size(); ++i) {
+            for (std::size_t j = i + 1; j < ps.size(); ++j) {
+                if (ps[i].radius + ps[j].radius - (ps[i].center - ps[j].center).norm() > 0.0) {
+                    brute.insert({i, j});
+                }
+            }
+        }
+        BOOST_TEST_REQUIRE(unique == brute);
+        BOOST_TEST(brute.size() > 100u);
+    }
+}
+
 BOOST_AUTO_TEST_CASE(near_queries_of_any_radius_match_brute_force) {
     const std::vector<Particle> ps = random_spheres(300, 0.5, 11);
     const CellGrid grid(centers_of(ps), 0.05);

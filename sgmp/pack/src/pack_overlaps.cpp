@@ -13,10 +13,31 @@ double max_radius(const std::vector<Particle>& particles) {
 }
 
 OverlapSearch::OverlapSearch(const std::vector<Particle>& particles) : particles_(particles) {
-    const double r_max = max_radius(particles);
-    if (particles.size() >= 2 && r_max > 0.0) {
-        grid_.emplace(centers_of(particles), 2.0 * r_max);
+    r_max_ = max_radius(particles);
+    if (particles.size() < 2 || !(r_max_ > 0.0)) {
+        return;
     }
+    double r_min = r_max_;
+    double r_small = 0.0;  // the largest radius ≤ r_max / 2
+    for (const Particle& p : particles) {
+        r_min = std::min(r_min, p.radius);
+        if (p.radius <= 0.5 * r_max_) {
+            r_small = std::max(r_small, p.radius);
+        }
+    }
+    double reach = 2.0 * r_max_;
+    if (r_max_ > 2.0 * r_min) {  // a wide blend: cells for the small spheres
+        reach = 2.0 * r_small;
+        is_large_.assign(particles.size(), 0);
+        for (std::size_t i = 0; i < particles.size(); ++i) {
+            if (particles[i].radius > 0.5 * r_max_) {
+                large_.push_back(i);
+                is_large_[i] = 1;
+            }
+        }
+    }
+    reach_squared_ = reach * reach;
+    grid_.emplace(centers_of(particles), reach);
 }
 
 OverlapCount count_overlaps(const std::vector<Particle>& particles, const Container& container,

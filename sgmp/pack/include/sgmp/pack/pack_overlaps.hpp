@@ -6,9 +6,14 @@
 /// A pair overlaps by depth (r_i + r_j) − |c_i − c_j| > 0 (each pair's own radii); a
 /// sphere overlaps the container by Container::penetration > 0 (how far it crosses a
 /// wall or the floor). Pairs are found on a CellGrid of reach 2·r_max: overlapping
-/// centres are closer than r_i + r_j ≤ 2·r_max.
+/// centres are closer than r_i + r_j ≤ 2·r_max. A wide blend (r_max > 2·r_min) has the
+/// grid's reach 2·r_s, r_s the largest radius ≤ r_max / 2 (every pair of small spheres),
+/// and the few large spheres (r > r_max / 2) look for their partners beyond it within
+/// r_l + r_max: cells sized for the small spheres, not for the largest.
+#include <algorithm>
 #include <cstddef>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "sgmp/pack/cell_grid.hpp"
@@ -27,25 +32,54 @@ class OverlapSearch {
     explicit OverlapSearch(const std::vector<Particle>& particles);
 
     /// Calls on_pair(i, j, depth) for every overlapping pair i < j with first ≤ i < last,
-    /// in CellGrid::for_each_pair order; the pairs of for_each_overlap, cut by i.
+    /// in CellGrid::for_each_pair order (a wide blend: then the pairs of a large sphere
+    /// farther apart than the grid's reach, by increasing i, then j); the pairs of
+    /// for_each_overlap, cut by i.
     template <class OnPair>
     void pairs_from(std::size_t first, std::size_t last, OnPair&& on_pair) const {
         if (!grid_) {
             return;
         }
-        grid_->for_each_pair_from(first, last, [&](std::size_t i, std::size_t j, double) {
+        const auto report = [&](std::size_t i, std::size_t j) {
             const Particle& a = particles_[i];
             const Particle& b = particles_[j];
             const double depth = a.radius + b.radius - (a.center - b.center).norm();
             if (depth > 0.0) {
                 on_pair(i, j, depth);
             }
-        });
+        };
+        grid_->for_each_pair_from(first, last,
+                                  [&](std::size_t i, std::size_t j, double) { report(i, j); });
+        if (large_.empty()) {
+            return;
+        }
+        std::vector<std::pair<std::size_t, std::size_t>> beyond;
+        for (const std::size_t l : large_) {
+            const Particle& a = particles_[l];
+            grid_->for_each_near(a.center, a.radius + r_max_, [&](std::size_t k, double q) {
+                if (q < reach_squared_) {
+                    return;  // the grid's own pass has it
+                }
+                if (k > l && l >= first && l < last) {
+                    beyond.emplace_back(l, k);
+                } else if (k < l && k >= first && k < last && is_large_[k] == 0) {
+                    beyond.emplace_back(k, l);  // a large pair is met from its first member
+                }
+            });
+        }
+        std::sort(beyond.begin(), beyond.end());
+        for (const auto& [i, j] : beyond) {
+            report(i, j);
+        }
     }
 
   private:
     const std::vector<Particle>& particles_;
     std::optional<CellGrid> grid_;
+    std::vector<std::size_t> large_;  ///< a wide blend's spheres of r > r_max / 2
+    std::vector<char> is_large_;
+    double r_max_ = 0.0;
+    double reach_squared_ = 0.0;  ///< of the grid
 };
 
 /// Calls on_pair(i, j, depth) for every overlapping pair i < j (indices into

@@ -336,6 +336,9 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     }
     stage_times.voronoi = watch.lap();
     m.mixing = mixing_profile(particles, m.container.floor);
+    if (m.polydisperse) {
+        m.size_moments = size_moments(particles);
+    }
     return m;
 }
 

@@ -178,6 +178,12 @@ Json metrics_json(const Measurement& m, const Json& prov) {
          "gr_space=container: the container up to the top sphere); bins centred on k*bin_width; "
          "density (gr_density=neighbours) the pairs over the shell volume summed out to the "
          "range, so g -> 1 far from contact; gr_density=space: N/|space|"},
+        {"size_distribution",
+         "a polydisperse pack's radii by number: polydispersity sd(r)/mean(r), skewness "
+         "<(r - mean)^3>/sd^3, and the random-close-packing fraction of frictionless spheres "
+         "they predict by Desmond & Weeks, Phys. Rev. E 90, 022204 (2014): 0.634 + 0.0658 "
+         "delta + 0.0857 S delta^2, null outside the formula's range (delta <= 0.4, "
+         "-2 <= S <= 4)"},
         {"sides",
          "walls, or periodic: x and z periodic (minimum-image pairs; g(r) shells and Voronoi "
          "cells cut by the floor and the top alone; default region the whole cell across)"}};
@@ -216,6 +222,12 @@ Json metrics_json(const Measurement& m, const Json& prov) {
                            {"overall_volume_shares", m.mixing->overall},
                            {"quarters", quarters},
                            {"deviation_max", m.mixing->deviation}};
+    }
+    if (m.size_moments) {
+        const auto rcp = desmond_weeks_phi_rcp(*m.size_moments);
+        j["size_distribution"] = Json{{"polydispersity", m.size_moments->polydispersity},
+                                      {"skewness", m.size_moments->skewness},
+                                      {"phi_rcp_desmond_weeks", rcp ? Json(*rcp) : Json()}};
     }
     if (m.species) {
         j["species"] = species_json(*m.species, names);

@@ -13,6 +13,7 @@
 #include "sgmp/metrics/mixing_profile.hpp"
 #include "sgmp/metrics/overlaps.hpp"
 #include "sgmp/metrics/packing_fraction.hpp"
+#include "sgmp/metrics/random_close_packing.hpp"
 #include "sgmp/metrics/species_structure.hpp"
 #include "sgmp/metrics/voronoi.hpp"
 #include "sgmp/pack/pack.hpp"
@@ -60,6 +61,7 @@ struct Measurement {
     std::optional<VoronoiPhi> voronoi;  // absent when not asked for
     std::optional<ThesisRdf> thesis_rdf;
     std::optional<MixingProfile> mixing;      // a blend's (particles with species) only
+    std::optional<SizeMoments> size_moments;  // a polydisperse pack's δ and S
     std::optional<SpeciesStructure> species;  // a blend's: partial g_IJ(r), Z_IJ(δ)
     std::vector<SpeciesPhiProfile> phi_profile_by_species;  // a blend's, increasing species
 };

@@ -29,4 +29,20 @@ status=0
 scripts/run --counts 2>"$scratch/err" || status=$?
 [[ $status == 2 && "$(cat "$scratch/err")" == "run: --counts needs a value (see --help)" ]] \
     || fail "--counts without a value: status $status, '$(cat "$scratch/err")'"
+# The blend job: periodic SGMP packs of the bimodal blend against its stored pours, one
+# report per blend; a name that is no blend is a usage error.
+scripts/run --blends bimodal --counts 1002 --seeds 1 --modes "loose-random loose-random+relax" \
+    --frictions 0.5 --out "$out" --build-dir "$build" --no-pictures >"$scratch/log" 2>&1 \
+    || { cat "$scratch/log" >&2; fail "scripts/run --blends failed"; }
+[[ -f "$out/blends/bimodal/report/report.md" ]] || fail "no blend report"
+blend_manifest="$out/blends/bimodal/manifest.csv"
+[[ $(grep -c '^candidate,loose-random,1002,1,' "$blend_manifest") == 1 ]] || fail "no blend candidate"
+[[ $(grep -c '^candidate,loose-random+relax' "$blend_manifest") == 0 ]] || fail "a relaxed blend mode"
+[[ $(grep -c '^reference,DEM bimodal mu=0.5,1002,' "$blend_manifest") == 5 ]] || fail "not 5 DEM pours"
+blend_pack=$(ls "$out"/packs/sgmp-*-"$engine"/blends/bimodal/loose-random/n1002-seed1.xyz)
+"$build/compare/sgmp-compare" header "$blend_pack" sides size_modes | tr '\n' ' ' \
+    | grep -q '^periodic 1:0.5,0.5:0.5 $' || fail "the blend pack is not periodic bimodal"
+status=0
+scripts/run --blends nonsense --build-dir "$build" 2>"$scratch/err" || status=$?
+[[ $status == 2 ]] || fail "--blends nonsense: status $status"
 echo "run_paths_test: passed"

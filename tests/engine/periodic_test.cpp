@@ -4,11 +4,14 @@
 // floor is the only wall, and the same request gives the same pack. A wall pack keeps its
 // header without a `sides` key. Periodic sides refuse a relaxation and spheres wider than
 // a quarter of the cell (exit 2 in the CLI tests' sense: ParameterError).
+#include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
 #include "sgmp/engine/make_pack.hpp"
+#include "sgmp/engine/protocol.hpp"
 #include "sgmp/pack/parameter_error.hpp"
+#include "sgmp/pack/random.hpp"
 
 using namespace sgmp;
 using namespace sgmp::engine;
@@ -96,3 +99,53 @@ BOOST_AUTO_TEST_CASE(periodic_sides_refuse_what_they_cannot_do) {
     walls.count = 300;
     BOOST_TEST(!make_pack(walls).metadata.contains("sides"));
 }
+
+BOOST_AUTO_TEST_SUITE(split_grids)
+
+// A wide blend (1 : 0.25 : 0.15, r_max > 2 r_min) dropped with its small spheres in a grid
+// of their own (Protocol's small_max_radius) and with one grid: the same centres, exactly,
+// with walls and with periodic sides (the split changes where spheres are looked for,
+// never which are found).
+BOOST_AUTO_TEST_CASE(a_wide_blend_settles_the_same_with_split_grids) {
+    for (const bool periodic : {false, true}) {
+        PackRequest request;
+        request.count = 10000;  // the fewest whose coarse spheres fit the periodic cell
+        request.arrangement = Arrangement::LooseRandom;
+        request.seed = 11;
+        request.size_modes = {{1.0, 0.6}, {0.25, 0.2}, {0.15, 0.2}};
+        request.fraction_basis = FractionBasis::Volume;
+        request.sides = periodic ? Sides::Periodic : Sides::Walls;
+        const Pack start = make_start_pack(request);
+        Container container;
+        container.periodic = periodic;
+        double r_max = 0.0;
+        for (const Particle& p : start.particles) {
+            r_max = std::max(r_max, p.radius);
+        }
+        double small_max = 0.0;
+        for (const Particle& p : start.particles) {
+            small_max = p.radius <= 0.5 * r_max ? std::max(small_max, p.radius) : small_max;
+        }
+        BOOST_TEST_REQUIRE(small_max < 0.5 * r_max);
+        std::vector<std::vector<Vec3>> centres(2);
+        for (int split = 0; split < 2; ++split) {
+            Protocol protocol(container, request.protocol, r_max, split == 1 ? small_max : 0.0);
+            Random rng(request.seed);
+            std::vector<Particle> particles = start.particles;
+            for (Particle& p : particles) {
+                p.center = container.wrapped(protocol.drop(p, rng).center);
+                protocol.settle(p);
+                centres[static_cast<std::size_t>(split)].push_back(p.center);
+            }
+            BOOST_TEST(protocol.settled_count() >= particles.size());
+        }
+        BOOST_TEST_REQUIRE(centres[0].size() == centres[1].size());
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < centres[0].size(); ++i) {
+            differing += centres[0][i] == centres[1][i] ? 0 : 1;
+        }
+        BOOST_TEST(differing == 0u);
+    }
+}
+
+BOOST_AUTO_TEST_SUITE_END()

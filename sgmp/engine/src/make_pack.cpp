@@ -124,7 +124,16 @@ void release_free_memory() {
 void deposit(std::vector<Particle>& particles, const PackRequest& request,
              const Container& container, double r_max, Random& rng,
              const ProgressCallback& progress, PackStats& local) {
-    Protocol protocol(container, request.protocol, r_max);
+    // A wide blend (r_max > 2 r_min) keeps its small spheres in a grid of their own
+    // (protocol.hpp), for the contact model none, whose rests need no further grid query.
+    double r_min = r_max;
+    double small_max = 0.0;
+    for (const Particle& p : particles) {
+        r_min = std::min(r_min, p.radius);
+        small_max = p.radius <= 0.5 * r_max ? std::max(small_max, p.radius) : small_max;
+    }
+    const bool split = r_max > 2.0 * r_min && request.protocol.contact == ContactModel::None;
+    Protocol protocol(container, request.protocol, r_max, split ? small_max : 0.0);
     const std::size_t report_every = 1000;
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const DropOutcome outcome = protocol.drop(particles[i], rng);

@@ -20,12 +20,20 @@ double cell_side(double max_radius) {
 
 }  // namespace
 
-Protocol::Protocol(const Container& container, const ProtocolParams& params, double max_radius)
+Protocol::Protocol(const Container& container, const ProtocolParams& params, double max_radius,
+                   double small_max_radius)
     : container_(container),
       params_(params),
       max_radius_(max_radius),
-      grid_(container, cell_side(max_radius)) {
+      small_max_radius_(small_max_radius > 0.0 ? small_max_radius : max_radius),
+      grid_(container, cell_side(small_max_radius_)) {
     validate(params, 2.0 * max_radius);
+    if (small_max_radius_ < max_radius_) {
+        if (params.contact != ContactModel::None) {
+            throw std::logic_error("Protocol: split grids need the contact model none");
+        }
+        large_grid_.emplace(container, cell_side(max_radius));
+    }
     for (const int n : params.sweep_stages) {
         tables_.emplace_back(n);
     }
@@ -36,11 +44,12 @@ Protocol::Protocol(const Container& container, const ProtocolParams& params, dou
     runs_.blocked.reserve(64);
     near_.reserve(64);
     local_.reserve(256);
-    skin_ = 0.5 * max_radius;
+    skin_ = 0.5 * small_max_radius_;
 }
 
 void Protocol::settle(const Particle& p) {
-    grid_.insert(Sphere{p.center.x(), p.center.y(), p.center.z(), p.radius});
+    SettledGrid& grid = large_grid_ && p.radius > small_max_radius_ ? *large_grid_ : grid_;
+    grid.insert(Sphere{p.center.x(), p.center.y(), p.center.z(), p.radius});
     if (!container_.periodic) {
         return;
     }
@@ -50,12 +59,17 @@ void Protocol::settle(const Particle& p) {
     // columns in its edge cells, where the scans near a face find them.
     const double margin = 4.0 * max_radius_;
     for (const Vec3& at : periodic_image_centers(p.center, container_, margin)) {
-        grid_.insert(Sphere{at.x(), at.y(), at.z(), p.radius});
+        grid.insert(Sphere{at.x(), at.y(), at.z(), p.radius});
     }
 }
 
 Protocol::Fall Protocol::fall_exact(const Vec3& c, double r) const {
-    return first_contact_below(grid_, container_, max_radius_, c, r);
+    const Fall small = first_contact_below(grid_, container_, small_max_radius_, c, r);
+    if (!large_grid_) {
+        return small;
+    }
+    const Fall large = first_contact_below(*large_grid_, container_, max_radius_, c, r);
+    return large.y > small.y ? large : small;
 }
 
 DropOutcome Protocol::rest(const Vec3& c, double r, StopReason reason, long moves) const {
@@ -65,17 +79,22 @@ DropOutcome Protocol::rest(const Vec3& c, double r, StopReason reason, long move
 
 void Protocol::rebuild_local(const Vec3& origin, double r, double s) {
     local_.clear();
-    const double reach = r + max_radius_ + s + skin_;
-    const Vec3 span = Vec3::Constant(reach);
-    grid_.for_each_in_box(origin - span, origin + span, [&](const Sphere& j) {
-        const double dx = origin.x() - j.x;
-        const double dy = origin.y() - j.y;
-        const double dz = origin.z() - j.z;
-        const double limit = r + j.r + s + skin_;
-        if (dx * dx + dy * dy + dz * dz < limit * limit) {
-            local_.push_back(j);
-        }
-    });
+    const auto gather = [&](const SettledGrid& grid, double grid_max_radius) {
+        const Vec3 span = Vec3::Constant(r + grid_max_radius + s + skin_);
+        grid.for_each_in_box(origin - span, origin + span, [&](const Sphere& j) {
+            const double dx = origin.x() - j.x;
+            const double dy = origin.y() - j.y;
+            const double dz = origin.z() - j.z;
+            const double limit = r + j.r + s + skin_;
+            if (dx * dx + dy * dy + dz * dz < limit * limit) {
+                local_.push_back(j);
+            }
+        });
+    };
+    gather(grid_, small_max_radius_);
+    if (large_grid_) {
+        gather(*large_grid_, max_radius_);
+    }
     local_origin_ = origin;
     local_valid_ = true;
 }
@@ -284,7 +303,19 @@ DropOutcome Protocol::drop(const Particle& particle, Random& rng) {
     local_valid_ = false;  // the grid has changed since the last drop
     // Particles waiting in the arrangement are no obstacles, so a settled particle may have
     // come to rest where this one waits: it is first lifted straight up until it is free.
-    c.y() = lowest_free_height(grid_, c.x(), c.z(), r, max_radius_, c.y(), lift_scratch_);
+    c.y() = lowest_free_height(grid_, c.x(), c.z(), r, small_max_radius_, c.y(), lift_scratch_);
+    while (large_grid_) {  // free of both grids: lift until neither moves it
+        const double lifted =
+            lowest_free_height(*large_grid_, c.x(), c.z(), r, max_radius_, c.y(), lift_scratch_);
+        if (lifted == c.y()) {
+            break;
+        }
+        c.y() =
+            lowest_free_height(grid_, c.x(), c.z(), r, small_max_radius_, lifted, lift_scratch_);
+        if (c.y() == lifted) {
+            break;
+        }
+    }
     Move previous{0.0, 0.0};
     long stalled = 0;
     cycle_.forget();

@@ -55,6 +55,7 @@
 /// drop does not grow with N, and the drop loop allocates nothing once buffers are warm.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "sgmp/engine/contact_search.hpp"
@@ -89,14 +90,24 @@ class Protocol {
   public:
     /// `max_radius`: the largest radius of any particle that will settle (sets the grid and
     /// the neighbour reach). Parameters must be valid (see `validate`).
-    Protocol(const Container& container, const ProtocolParams& params, double max_radius);
+    ///
+    /// `small_max_radius` > 0 (a wide blend, contact model none: the largest radius at or
+    /// below max_radius / 2) keeps the small spheres in a grid of their own, with cells and
+    /// reaches sized for them, and the few larger ones in another: every query looks in
+    /// both, each within its own reach, so a fine particle no longer scans cells one coarse
+    /// diameter wide. The spheres found, hence the pack, are the same as with one grid up
+    /// to the order in which exact ties are met.
+    Protocol(const Container& container, const ProtocolParams& params, double max_radius,
+             double small_max_radius = 0.0);
 
     /// Runs the protocol for `particle` from its current centre against the settled
     /// particles; returns where it stops. Does not settle it (call `settle`).
     DropOutcome drop(const Particle& particle, Random& rng);
     /// Adds a particle at its final position; it becomes an obstacle for later drops.
     void settle(const Particle& particle);
-    [[nodiscard]] std::size_t settled_count() const { return grid_.size(); }
+    [[nodiscard]] std::size_t settled_count() const {
+        return grid_.size() + (large_grid_ ? large_grid_->size() : 0);
+    }
 
   private:
     /// The first contact of a fall (contact_search.hpp).
@@ -140,7 +151,9 @@ class Protocol {
     Container container_;
     ProtocolParams params_;
     double max_radius_;
+    double small_max_radius_;  ///< of grid_'s spheres: max_radius_ unless split
     SettledGrid grid_;
+    std::optional<SettledGrid> large_grid_;  ///< a wide blend's spheres above small_max_radius_
     std::vector<SweepTable> tables_;
     // Scratch buffers reused by every drop (no allocation in the drop loop).
     /// Obstacles of the current sweep as linear constraints (free_arcs.hpp).

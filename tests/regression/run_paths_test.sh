@@ -39,6 +39,13 @@ blend_manifest="$out/blends/bimodal/manifest.csv"
 [[ $(grep -c '^candidate,loose-random,1002,1,' "$blend_manifest") == 1 ]] || fail "no blend candidate"
 [[ $(grep -c '^candidate,loose-random+relax' "$blend_manifest") == 0 ]] || fail "a relaxed blend mode"
 [[ $(grep -c '^reference,DEM bimodal mu=0.5,1002,' "$blend_manifest") == 5 ]] || fail "not 5 DEM pours"
+# Per-species rows (species_rows.hpp) with their declared margins; none for equal spheres.
+blend_csv="$out/blends/bimodal/report/report.csv"
+for row in 'species_1:z_mean_tol_1e-2,contacts/particle' 'species_2:voronoi_phi_mean,ratio' \
+           'mixing_deviation_max,ratio'; do
+    grep -q ",DEM bimodal mu=0.5,$row," "$blend_csv" || fail "no row $row in the blend report"
+done
+! grep -q 'species_' "$out/report/report.csv" || fail "species rows for equal spheres"
 blend_pack=$(ls "$out"/packs/sgmp-*-"$engine"/blends/bimodal/loose-random/n1002-seed1.xyz)
 "$build/compare/sgmp-compare" header "$blend_pack" sides size_modes | tr '\n' ' ' \
     | grep -q '^periodic 1:0.5,0.5:0.5 $' || fail "the blend pack is not periodic bimodal"

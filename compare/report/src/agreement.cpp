@@ -1,9 +1,11 @@
 #include "sgmp/report/agreement.hpp"
+#include "sgmp/report/species_rows.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -233,6 +235,9 @@ Comparison compare_at(const Group& candidate, const Group& reference, std::size_
     for (const auto& rule : metric_rules()) {
         c.rows.push_back(judge(rule, a, b));
     }
+    for (const auto& rule : species_rules(a, b)) {  // blends: per species, after the others
+        c.rows.push_back(judge(rule, a, b));
+    }
     std::size_t uncertified = 0;
     std::string reason;
     for (const auto* p : all) {
@@ -368,7 +373,12 @@ double PackSummary::scalar(const std::string& name) const {
         }
         ++k;
     }
-    throw std::logic_error("no scalar metric named " + name);
+    for (const auto& [key, value] : species_scalars) {
+        if (key == name) {
+            return value;
+        }
+    }
+    return std::numeric_limits<double>::quiet_NaN();
 }
 
 const MetricRow& Comparison::row(const std::string& name) const {
@@ -464,6 +474,7 @@ PackSummary summarise(const std::string& source, const Pack& pack, const Measure
         }
         s.scalars.push_back(v);
     }
+    add_species_scalars(m, s);
     s.gr_bin_width = m.local.rdf.bin_width_over_d;
     s.gr_r = m.local.rdf.r_over_d;
     s.gr = m.local.rdf.g;

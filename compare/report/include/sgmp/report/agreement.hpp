@@ -91,8 +91,12 @@ struct PackSummary {
     std::vector<std::vector<double>> p_z;  // per coordination tolerance
     std::vector<double> phi_y_mid;
     std::vector<double> phi_y;
+    /// A blend's per-species values by name (species_rows.hpp), e.g.
+    /// "species_2:z_mean_tol_1e-3"; empty for equal spheres.
+    std::vector<std::pair<std::string, double>> species_scalars;
 
-    /// The scalar metric `name` (throws std::logic_error for an unknown one).
+    /// The scalar metric `name`: a scalar rule's, else a per-species value, else NaN (not
+    /// measured).
     [[nodiscard]] double scalar(const std::string& name) const;
     /// False for a pack known only by its scalar metrics (a batch summary row,
     /// precomputed.hpp); a scalar it lacks is NaN. Metrics a pack lacks are not judged.

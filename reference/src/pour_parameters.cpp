@@ -136,6 +136,18 @@ void add_sizes_and_sides(std::vector<Row>& rows) {
         if (p.size_modes.empty()) {
             throw ParameterError("size_modes", "", "needs at least one mode");
         }
+        // A pour tells species apart by their radius (one atom type for all).
+        for (std::size_t i = 0; i < p.size_modes.size(); ++i) {
+            for (std::size_t j = i + 1; j < p.size_modes.size(); ++j) {
+                if (p.size_modes[i].relative_diameter == p.size_modes[j].relative_diameter) {
+                    throw ParameterError("size_modes", size_modes_to_string(p.size_modes),
+                                         "species " + std::to_string(i + 1) + " and " +
+                                             std::to_string(j + 1) +
+                                             " have one diameter; a pour needs each species "
+                                             "of its own size");
+                }
+            }
+        }
         if (p.is_blend() && p.arrangement) {
             throw ParameterError("size_modes", size_modes_to_string(p.size_modes),
                                  "a blend is poured from the cloud only (no --from-arrangement)");

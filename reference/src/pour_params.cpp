@@ -22,8 +22,9 @@ std::vector<PourSpecies> PourParams::species() const {
     const std::vector<std::size_t> counts = mode_counts(count, modes);
     std::vector<PourSpecies> result;
     for (std::size_t i = 0; i < modes.size(); ++i) {
-        const double relative_density =
-            modes[i].density && modes[0].density ? *modes[i].density / *modes[0].density : 1.0;
+        // Densities relative to species 1's (a species without one has species 1's).
+        const double relative_density = modes[i].density.value_or(modes[0].density.value_or(1.0)) /
+                                        modes[0].density.value_or(1.0);
         result.push_back(
             {modes[i].relative_diameter * scale, counts[i], density * relative_density});
     }

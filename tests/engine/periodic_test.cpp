@@ -12,6 +12,7 @@
 #include "sgmp/engine/protocol.hpp"
 #include "sgmp/pack/parameter_error.hpp"
 #include "sgmp/pack/random.hpp"
+#include "sgmp/pack/size_classes.hpp"
 
 using namespace sgmp;
 using namespace sgmp::engine;
@@ -118,14 +119,10 @@ BOOST_AUTO_TEST_CASE(a_wide_blend_settles_the_same_with_split_grids) {
         const Pack start = make_start_pack(request);
         Container container;
         container.periodic = periodic;
-        double r_max = 0.0;
-        for (const Particle& p : start.particles) {
-            r_max = std::max(r_max, p.radius);
-        }
-        double small_max = 0.0;
-        for (const Particle& p : start.particles) {
-            small_max = p.radius <= 0.5 * r_max ? std::max(small_max, p.radius) : small_max;
-        }
+        const SizeClasses sizes = size_classes(start.particles);
+        BOOST_TEST_REQUIRE(sizes.wide());
+        const double r_max = sizes.max_radius;
+        const double small_max = sizes.small_max_radius;
         BOOST_TEST_REQUIRE(small_max < 0.5 * r_max);
         std::vector<std::vector<Vec3>> centres(2);
         for (int split = 0; split < 2; ++split) {

@@ -240,6 +240,17 @@ BOOST_AUTO_TEST_CASE(blends_and_periodic_cells_are_refused_where_they_cannot_be_
     p = bimodal(1002);
     p.phi_target = 0.8;  // a blend may ask above the one-size bound
     BOOST_CHECK_NO_THROW(p.validate());
+    p.size_modes = {{1.0, 0.5, 1.0}, {1.0, 0.5, 3.0}};  // one size, two densities
+    BOOST_CHECK_THROW(p.validate(), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(densities_are_relative_to_species_one) {
+    PourParams p = bimodal(1002);
+    p.size_modes = {{1.0, 0.5}, {0.5, 0.5, 2.0}};  // species 1 without one: density 1
+    p.fraction_basis = sgmp::FractionBasis::Volume;
+    BOOST_TEST(p.species()[1].density == 2.0 * p.density);
+    p.size_modes = {{1.0, 0.5, 2.0}, {0.5, 0.5}};  // species 2 without one: species 1's
+    BOOST_TEST(p.species()[1].density == p.density);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -12,6 +12,7 @@
 #include "sgmp/metrics/kd_columns.hpp"
 #include "sgmp/metrics/pair_kernels.hpp"
 #include "sgmp/metrics/parallel.hpp"
+#include "sgmp/pack/size_classes.hpp"
 
 namespace sgmp::metrics {
 namespace {
@@ -131,10 +132,10 @@ struct Setup {
     BinSetup kernel;       // of count_bins
     bool equal;            // every radius is `radius`
     double radius;
-    /// A wide blend (r_max > 2·r_min) gathers contacts and bonds from its small spheres
-    /// (r ≤ r_max / 2) and its large ones apart, each within its own reach (close_for).
+    /// A wide blend (size_classes.hpp) gathers contacts and bonds from its small spheres
+    /// and its large ones apart, each within its own reach (close_for).
     bool split_sizes = false;
-    double small_radius = 0.0;  // r_max / 2 when split_sizes
+    double small_radius = 0.0;  // the largest small radius when split_sizes
     double q6_factor = 0.0;     // q6_cutoff
     double max_tolerance_d = 0.0;
 
@@ -180,12 +181,9 @@ struct Setup {
         close_squared = close * close;
         q6_factor = options.q6_cutoff;
         max_tolerance_d = max_threshold;
-        double min_radius = max_radius;
-        for (const Particle& p : particles) {
-            min_radius = std::min(min_radius, p.radius);
-        }
-        split_sizes = max_radius > 2.0 * min_radius;
-        small_radius = 0.5 * max_radius;
+        const SizeClasses sizes = size_classes(particles);  // size_classes.hpp
+        split_sizes = sizes.wide();
+        small_radius = sizes.small_max_radius;
         kernel.reach_squared = reach_squared;
         kernel.per_width = per_width;
         kernel.bins = static_cast<std::uint32_t>(bins);
@@ -467,7 +465,7 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
             std::vector<Index> large;
             double large_radius = 0.0;
             for (const Index i : *members) {
-                const bool is_large = particles[i].radius > s.small_radius;
+                const bool is_large = particles[i].radius > s.small_radius;  // large()
                 (is_large ? large : small).push_back(i);
                 large_radius =
                     is_large ? std::max(large_radius, particles[i].radius) : large_radius;

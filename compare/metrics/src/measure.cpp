@@ -101,17 +101,10 @@ double pair_reach(const MeasureOptions& o, double d, double max_radius) {
 }
 
 /// The pack with periodic sides as the pair passes see it: the particles, then their
-/// images within `reach` of a lateral face (periodic_images.hpp). One period of images
-/// is enough only when the reach is at most a period.
+/// images within `reach` of a lateral face (periodic_images.hpp; several periods away when
+/// the reach is wider than the cell, as for a small pack's g(r) range).
 std::vector<Particle> with_images(const std::vector<Particle>& particles,
-                                  const Container& container, double reach, double d) {
-    const double period =
-        std::min(container.x_max - container.x_min, container.z_max - container.z_min);
-    if (reach > period) {
-        throw ParameterError("gr_range", format_number(reach / d) + " d of reach",
-                             "must not exceed the periodic cell's shorter side, " +
-                                 format_number(period / d) + " d");
-    }
+                                  const Container& container, double reach) {
     return with_periodic_images(particles, container, reach).particles;
 }
 
@@ -265,7 +258,7 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     const double reach = pair_reach(options, d, m.max_radius);
     std::vector<Particle> imaged;
     if (m.container.periodic) {
-        imaged = with_images(particles, m.container, reach, d);
+        imaged = with_images(particles, m.container, reach);
     }
     const std::vector<Particle>& field = m.container.periodic ? imaged : particles;
 

@@ -378,7 +378,10 @@ double PackSummary::scalar(const std::string& name) const {
             return value;
         }
     }
-    return std::numeric_limits<double>::quiet_NaN();
+    if (is_species_metric(name)) {  // a blend's value this pack lacks: not measured
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+    throw std::logic_error("no scalar metric named " + name);
 }
 
 const MetricRow& Comparison::row(const std::string& name) const {

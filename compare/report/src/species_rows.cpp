@@ -41,6 +41,10 @@ bool held_by_all(const std::string& name, const std::vector<const PackSummary*>&
 
 }  // namespace
 
+bool is_species_metric(const std::string& name) {
+    return name.rfind("species_", 0) == 0 || name == kMixing;
+}
+
 void add_species_scalars(const metrics::Measurement& m, PackSummary& s) {
     if (!m.species) {
         return;

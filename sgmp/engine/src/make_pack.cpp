@@ -1,5 +1,7 @@
 #include "sgmp/engine/make_pack.hpp"
 
+#include "sgmp/pack/size_classes.hpp"
+
 #include "sgmp/engine/equilibrium_certificate.hpp"
 
 #include <algorithm>
@@ -126,14 +128,9 @@ void deposit(std::vector<Particle>& particles, const PackRequest& request,
              const ProgressCallback& progress, PackStats& local) {
     // A wide blend (r_max > 2 r_min) keeps its small spheres in a grid of their own
     // (protocol.hpp), for the contact model none, whose rests need no further grid query.
-    double r_min = r_max;
-    double small_max = 0.0;
-    for (const Particle& p : particles) {
-        r_min = std::min(r_min, p.radius);
-        small_max = p.radius <= 0.5 * r_max ? std::max(small_max, p.radius) : small_max;
-    }
-    const bool split = r_max > 2.0 * r_min && request.protocol.contact == ContactModel::None;
-    Protocol protocol(container, request.protocol, r_max, split ? small_max : 0.0);
+    const SizeClasses sizes = size_classes(particles);  // size_classes.hpp
+    const bool split = sizes.wide() && request.protocol.contact == ContactModel::None;
+    Protocol protocol(container, request.protocol, r_max, split ? sizes.small_max_radius : 0.0);
     const std::size_t report_every = 1000;
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const DropOutcome outcome = protocol.drop(particles[i], rng);

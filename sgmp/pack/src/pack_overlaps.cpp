@@ -1,6 +1,9 @@
 #include "sgmp/pack/pack_overlaps.hpp"
 
+#include "sgmp/pack/size_classes.hpp"
+
 #include <algorithm>
+#include <cmath>
 
 namespace sgmp {
 
@@ -13,31 +16,39 @@ double max_radius(const std::vector<Particle>& particles) {
 }
 
 OverlapSearch::OverlapSearch(const std::vector<Particle>& particles) : particles_(particles) {
-    r_max_ = max_radius(particles);
-    if (particles.size() < 2 || !(r_max_ > 0.0)) {
+    const SizeClasses sizes = size_classes(particles);
+    const double r_max = sizes.max_radius;
+    if (particles.size() < 2 || !(r_max > 0.0)) {
         return;
     }
-    double r_min = r_max_;
-    double r_small = 0.0;  // the largest radius ≤ r_max / 2
-    for (const Particle& p : particles) {
-        r_min = std::min(r_min, p.radius);
-        if (p.radius <= 0.5 * r_max_) {
-            r_small = std::max(r_small, p.radius);
-        }
-    }
-    double reach = 2.0 * r_max_;
-    if (r_max_ > 2.0 * r_min) {  // a wide blend: cells for the small spheres
-        reach = 2.0 * r_small;
-        is_large_.assign(particles.size(), 0);
-        for (std::size_t i = 0; i < particles.size(); ++i) {
-            if (particles[i].radius > 0.5 * r_max_) {
-                large_.push_back(i);
-                is_large_[i] = 1;
-            }
-        }
-    }
-    reach_squared_ = reach * reach;
+    // A wide blend: cells for the small spheres (size_classes.hpp).
+    const double reach = sizes.wide() ? 2.0 * sizes.small_max_radius : 2.0 * r_max;
     grid_.emplace(centers_of(particles), reach);
+    if (!sizes.wide()) {
+        return;
+    }
+    const double reach_squared = reach * reach;
+    std::vector<char> large(particles.size(), 0);
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        large[i] = sizes.large(particles[i].radius) ? 1 : 0;
+    }
+    for (std::size_t l = 0; l < particles.size(); ++l) {
+        if (large[l] == 0) {
+            continue;
+        }
+        const Particle& a = particles[l];
+        grid_->for_each_near(a.center, a.radius + r_max, [&](std::size_t k, double q) {
+            if (q < reach_squared || a.radius + particles[k].radius - std::sqrt(q) <= 0.0) {
+                return;  // the grid's own pass has it, or no overlap
+            }
+            if (k > l) {
+                beyond_.emplace_back(l, k);
+            } else if (k < l && large[k] == 0) {
+                beyond_.emplace_back(k, l);  // a large pair is met from its first member
+            }
+        });
+    }
+    std::sort(beyond_.begin(), beyond_.end());
 }
 
 OverlapCount count_overlaps(const std::vector<Particle>& particles, const Container& container,

@@ -7,13 +7,16 @@ std::vector<Vec3> periodic_image_centers(const Vec3& c, const Container& contain
     if (!container.periodic) {
         return images;
     }
+    // k periods away (k ≥ 1) while the image lies within `margin` of the cell: one period
+    // for any margin up to the period, more for a wider one.
     const auto shifts = [&](double v, double lo, double hi) {
+        const double period = hi - lo;
         std::vector<double> s{0.0};
-        if (v - lo < margin) {
-            s.push_back(hi - lo);
+        for (int k = 1; v - lo < margin - (k - 1) * period; ++k) {
+            s.push_back(k * period);
         }
-        if (hi - v < margin) {
-            s.push_back(lo - hi);
+        for (int k = 1; hi - v < margin - (k - 1) * period; ++k) {
+            s.push_back(-k * period);
         }
         return s;
     };

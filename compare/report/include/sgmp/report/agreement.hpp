@@ -95,8 +95,8 @@ struct PackSummary {
     /// "species_2:z_mean_tol_1e-3"; empty for equal spheres.
     std::vector<std::pair<std::string, double>> species_scalars;
 
-    /// The scalar metric `name`: a scalar rule's, else a per-species value, else NaN (not
-    /// measured).
+    /// The scalar metric `name`: a scalar rule's, else a per-species value (NaN when this
+    /// pack lacks it); throws std::logic_error for any other name.
     [[nodiscard]] double scalar(const std::string& name) const;
     /// False for a pack known only by its scalar metrics (a batch summary row,
     /// precomputed.hpp); a scalar it lacks is NaN. Metrics a pack lacks are not judged.

@@ -14,6 +14,9 @@
 
 namespace sgmp::report {
 
+/// True for the names of the per-species rows (species_I:…, mixing_deviation_max).
+bool is_species_metric(const std::string& name);
+
 /// Adds a blend's per-species values to `summary.species_scalars` (none for one species).
 void add_species_scalars(const metrics::Measurement& measurement, PackSummary& summary);
 

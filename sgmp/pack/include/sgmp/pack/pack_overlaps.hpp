@@ -50,36 +50,20 @@ class OverlapSearch {
         };
         grid_->for_each_pair_from(first, last,
                                   [&](std::size_t i, std::size_t j, double) { report(i, j); });
-        if (large_.empty()) {
-            return;
-        }
-        std::vector<std::pair<std::size_t, std::size_t>> beyond;
-        for (const std::size_t l : large_) {
-            const Particle& a = particles_[l];
-            grid_->for_each_near(a.center, a.radius + r_max_, [&](std::size_t k, double q) {
-                if (q < reach_squared_) {
-                    return;  // the grid's own pass has it
-                }
-                if (k > l && l >= first && l < last) {
-                    beyond.emplace_back(l, k);
-                } else if (k < l && k >= first && k < last && is_large_[k] == 0) {
-                    beyond.emplace_back(k, l);  // a large pair is met from its first member
-                }
-            });
-        }
-        std::sort(beyond.begin(), beyond.end());
-        for (const auto& [i, j] : beyond) {
-            report(i, j);
+        const auto from = std::lower_bound(beyond_.begin(), beyond_.end(),
+                                           std::pair<std::size_t, std::size_t>{first, 0});
+        for (auto it = from; it != beyond_.end() && it->first < last; ++it) {
+            report(it->first, it->second);
         }
     }
 
   private:
     const std::vector<Particle>& particles_;
     std::optional<CellGrid> grid_;
-    std::vector<std::size_t> large_;  ///< a wide blend's spheres of r > r_max / 2
-    std::vector<char> is_large_;
-    double r_max_ = 0.0;
-    double reach_squared_ = 0.0;  ///< of the grid
+    /// A wide blend's overlapping pairs with a large sphere (r > r_max / 2) farther apart
+    /// than the grid's reach, (i, j) with i < j, sorted: found once, when the search is
+    /// built (few: a settled pack has few overlaps).
+    std::vector<std::pair<std::size_t, std::size_t>> beyond_;
 };
 
 /// Calls on_pair(i, j, depth) for every overlapping pair i < j (indices into

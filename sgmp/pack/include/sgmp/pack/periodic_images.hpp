@@ -21,7 +21,8 @@ struct ImagedParticles {
 
 /// The images of one centre c, in the order (x shift, then z shift) each of 0, +period
 /// (c within `margin` of the low face), −period (within `margin` of the high face), leaving
-/// out c itself; none without periodic sides.
+/// out c itself; none without periodic sides. A margin wider than a period adds the images
+/// k periods away while they lie within it (+2·period, … after +period; likewise below).
 std::vector<Vec3> periodic_image_centers(const Vec3& c, const Container& container, double margin);
 
 /// The list above; without periodic sides, the particles alone.

@@ -177,15 +177,13 @@ std::string pour_script(const PourParams& p, double start_top) {
         {"hard_particles", p.youngs_modulus > 1e9 ? "hard_particles  yes" : "# E <= 1e9 Pa"},
     };
     values["insertion"] = insertion(p, seeds);
-    // With periodic sides a sphere at the cloud's high face would meet the images of those
-    // at its low face, which insert/pack does not check: the cloud keeps d_max back from
-    // the high faces (cloud_top counts the same box).
-    const double back = periodic ? p.largest_diameter() : 0.0;
-    values["cloud_x_max"] = format_number(Container{}.x_max - back);
-    values["cloud_z_max"] = format_number(Container{}.z_max - back);
-    values["cloud_note"] = periodic ? "periodic: the cloud keeps d_max back from the high x and z "
-                                      "faces (no sphere meets an image)"
-                                    : "the container's footprint";
+    // With periodic sides too the cloud fills the footprint: insert/pack keeps every sphere
+    // wholly inside it (all_in), so two spheres at opposite faces are at least r_i + r_j
+    // apart through the face as well.
+    values["cloud_x_max"] = format_number(Container{}.x_max);
+    values["cloud_z_max"] = format_number(Container{}.z_max);
+    values["cloud_note"] =
+        "the container's footprint (periodic too: all_in keeps spheres off the faces)";
     const std::string& start_template =
         embedded_template(p.arrangement ? "start-arrangement.in" : "start-cloud.in");
     values["start"] = fill_template(start_template, values);

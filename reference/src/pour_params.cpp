@@ -69,9 +69,8 @@ double PourParams::cloud_top() const {
     }
     const double d = largest;
     const Container container;
-    const double back = sides == Sides::Periodic ? d : 0.0;  // input_script.cpp
-    const double width = container.x_max - container.x_min - d - back;
-    const double depth = container.z_max - container.z_min - d - back;
+    const double width = container.x_max - container.x_min - d;
+    const double depth = container.z_max - container.z_min - d;
     return container.floor + d + solid / (cloud_fraction * width * depth);
 }
 

@@ -9,8 +9,7 @@
 /// particles. The starting cloud fills the container's footprint from the floor up to a
 /// height h at solid fraction `cloud_fraction`:
 ///     Σ N_i (π/6) d_i³ = cloud_fraction · (1.25 − d_max)² · (h − d_max)
-/// (the box the centres of the largest spheres may take); with periodic sides the cloud
-/// keeps d_max back from the high faces, so its sides are 1.25 − 2·d_max.
+/// (the box the centres of the largest spheres may take), with walls or periodic sides.
 
 #include <cstddef>
 #include <cstdint>

@@ -22,9 +22,14 @@ std::vector<double> sphere_contact_numbers(const std::vector<Particle>& input,
     }
     const double d = 2.0 * radius_sum / static_cast<double>(input.size());
     const double gap = gap_over_d * d;
-    // Images across periodic faces are neighbours, never spheres of their own.
+    // Images across periodic faces are neighbours, never spheres of their own (a file's
+    // centres may lie a period out: wrapped first).
+    std::vector<Particle> wrapped = input;
+    for (Particle& p : wrapped) {
+        p.center = container.wrapped(p.center);
+    }
     const std::vector<Particle> particles =
-        with_periodic_images(input, container, 2.0 * r_max + gap).particles;
+        with_periodic_images(wrapped, container, 2.0 * r_max + gap).particles;
     const NeighbourIndex index(particles);
     std::vector<Index> found;
     for (std::size_t i = 0; i < input.size(); ++i) {
@@ -49,7 +54,11 @@ std::vector<double> sphere_local_phi(const std::vector<Particle>& particles,
     VoronoiOptions options;
     options.keep_local = true;
     const Box everything = container.box_up_to(top + 1.0);
-    return voronoi_local_phi(particles, container, everything, options).local;
+    std::vector<Particle> wrapped = particles;  // a period out: back into the cell
+    for (Particle& p : wrapped) {
+        p.center = container.wrapped(p.center);
+    }
+    return voronoi_local_phi(wrapped, container, everything, options).local;
 }
 
 }  // namespace sgmp::metrics

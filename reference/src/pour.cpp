@@ -347,7 +347,7 @@ Pack read_final(const fs::path& dump, const PourParams& p) {
         }
         ++found[k];
         particle.radius = species[k].diameter / 2.0;
-        particle.species = p.is_blend() ? static_cast<int>(k + 1) : 0;
+        particle.species = species.size() > 1 ? static_cast<int>(k + 1) : 0;  // as sgmp pack
         particle.center /= kMetresPerUnit;  // metres to project units
     }
     for (std::size_t k = 0; k < species.size(); ++k) {

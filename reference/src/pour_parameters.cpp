@@ -1,5 +1,7 @@
 #include "sgmp/reference/pour_parameters.hpp"
 
+#include "sgmp/pack/size_mode_rows.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -93,44 +95,18 @@ std::vector<Row> count_and_identity() {
 /// A row choosing a value of a name table (walls/periodic, number/volume/mass).
 template <class Member, class Table>
 Row choice(std::string name, Member member, Table table, std::string help) {
-    Row row;
-    row.name = std::move(name);
-    row.group = "identity";
-    row.kind = ValueKind::Choice;
-    row.help = std::move(help);
-    row.rule = "must be one of " + table().choices();
-    row.parse = [member, table](PourParams& p, std::string_view text) {
-        const auto value = table().parse(text);
-        if (value) {
-            member(p) = *value;
-        }
-        return value.has_value();
-    };
-    row.format = [member, table](const PourParams& p) {
-        return std::string(table().name(member(p)));
-    };
-    return row;
+    return choice_row<PourParams, PourCheckContext>(std::move(name), "identity", member, table,
+                                                    std::move(help));
 }
 
 /// The sizes of a blend, as `sgmp pack` takes them (size_modes.hpp), and the sides.
 void add_sizes_and_sides(std::vector<Row>& rows) {
-    Row modes;
-    modes.name = "size_modes";
-    modes.group = "identity";
-    modes.kind = ValueKind::List;
-    modes.help =
+    Row modes = size_modes_row<PourParams, PourCheckContext>(
+        "identity",
         "Particle sizes as relative-diameter:fraction[:density] items, as sgmp pack takes them "
         "(species 1, 2, ... in this order; fractions in --fraction-basis; densities relative, "
-        "species 1 at --density); the pour holds the same counts and diameters as the pack";
-    modes.rule = "must be positive diameter:fraction[:density] items, e.g. 1:0.5,0.5:0.5";
-    modes.parse = [](PourParams& p, std::string_view text) {
-        auto parsed = parse_size_modes(text);
-        if (parsed) {
-            p.size_modes = std::move(*parsed);
-        }
-        return parsed.has_value();
-    };
-    modes.format = [](const PourParams& p) { return size_modes_to_string(p.size_modes); };
+        "species 1 at --density); the pour holds the same counts and diameters as the pack",
+        [](auto& p) -> auto& { return p.size_modes; });
     modes.recorded = [](const PourParams& p) { return p.is_blend(); };
     modes.check = [](const PourParams& p, const PourCheckContext&) {
         if (p.size_modes.empty()) {
@@ -154,30 +130,20 @@ void add_sizes_and_sides(std::vector<Row>& rows) {
         }
     };
     rows.push_back(std::move(modes));
-    Row distribution;
-    distribution.name = "size_distribution";
-    distribution.group = "identity";
-    distribution.kind = ValueKind::Text;
-    distribution.help =
+    Row distribution = size_distribution_row<PourParams, PourCheckContext>(
+        "identity",
         "Size distribution as sgmp pack takes it: a CSV file diameter,fraction[,density] or "
-        "lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]]";
-    distribution.rule = "must be lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]]";
-    // The text form only: a file is read by the front end (parse_size_distribution_csv).
-    distribution.parse = [](PourParams& p, std::string_view text) {
-        if (text.empty()) {  // unset: the sizes are --size-modes'
+        "lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]]",
+        [](auto& p) -> auto& { return p.size_modes; },
+        [](auto& p) -> auto& { return p.size_distribution; });
+    // Unset (empty) reads back as the sizes of --size-modes.
+    distribution.parse = [lognormal = distribution.parse](PourParams& p, std::string_view text) {
+        if (text.empty()) {
             p.size_distribution.clear();
             return true;
         }
-        if (!is_lognormal(text)) {
-            return false;
-        }
-        p.size_modes = lognormal_modes(text);
-        p.size_distribution = std::string(text);
-        return true;
+        return lognormal(p, text);
     };
-    distribution.format = [](const PourParams& p) { return p.size_distribution; };
-    distribution.recorded = [](const PourParams& p) { return !p.size_distribution.empty(); };
-    distribution.unset_by_default = true;
     rows.push_back(std::move(distribution));
     Row basis = choice(
         "fraction_basis", [](auto& p) -> auto& { return p.fraction_basis; },

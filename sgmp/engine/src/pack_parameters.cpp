@@ -1,5 +1,7 @@
 #include "sgmp/engine/pack_parameters.hpp"
 
+#include "sgmp/pack/size_mode_rows.hpp"
+
 #include "sgmp/engine/hard_sphere_settle.hpp"
 
 #include <algorithm>
@@ -32,26 +34,11 @@ Row whole(std::string name, std::string group, Member member, std::string help, 
                                                     std::move(help), std::move(check));
 }
 
-/// A member holding one name of a name table `table()`.
+/// A member holding one name of a name table `table()` (parameter_table.hpp).
 template <class Member, class Table>
 Row choice(std::string name, std::string group, Member member, Table table, std::string help) {
-    Row row;
-    row.name = std::move(name);
-    row.group = std::move(group);
-    row.kind = ValueKind::Choice;
-    row.help = std::move(help);
-    row.rule = "must be one of " + table().choices();
-    row.parse = [member, table](PackRequest& r, std::string_view text) {
-        const auto value = table().parse(text);
-        if (value) {
-            member(r) = *value;
-        }
-        return value.has_value();
-    };
-    row.format = [member, table](const PackRequest& r) {
-        return std::string(table().name(member(r)));
-    };
-    return row;
+    return choice_row<PackRequest, PackCheckContext>(std::move(name), std::move(group), member,
+                                                     table, std::move(help));
 }
 
 bool relaxed(const PackRequest& r) {
@@ -200,50 +187,23 @@ std::vector<Row> count_and_request_rows() {
     rows.push_back(std::move(arrangement));
     rows.push_back(seed_row<PackRequest, PackCheckContext>(
         "request", "random seed (colours, loose-random positions, random choices)"));
-    Row modes;
-    modes.name = "size_modes";
-    modes.group = "request";
-    modes.kind = ValueKind::List;
-    modes.help =
+    Row modes = size_modes_row<PackRequest, PackCheckContext>(
+        "request",
         "particle sizes as relative-diameter:fraction[:density] items, e.g. 1:0.7,0.5:0.3 "
         "(species 1, 2, ... in this order; fractions in --fraction-basis); the scale s solves "
-        "(N/3)(pi/6) sum n_i (a_i s)^3 = phi* with number fractions n_i";
-    modes.rule = "must be positive diameter:fraction[:density] items, e.g. 1:0.7,0.5:0.3";
-    modes.parse = [](PackRequest& r, std::string_view text) {
-        auto parsed = parse_size_modes(text);
-        if (parsed) {
-            r.size_modes = std::move(*parsed);
-        }
-        return parsed.has_value();
-    };
-    modes.format = [](const PackRequest& r) { return size_modes_to_string(r.size_modes); };
+        "(N/3)(pi/6) sum n_i (a_i s)^3 = phi* with number fractions n_i",
+        [](auto& r) -> auto& { return r.size_modes; });
     modes.check = check_size_modes;
     rows.push_back(std::move(modes));
-    Row distribution;
-    distribution.name = "size_distribution";
-    distribution.group = "request";
-    distribution.kind = ValueKind::Text;
-    distribution.help =
+    rows.push_back(size_distribution_row<PackRequest, PackCheckContext>(
+        "request",
         "size distribution as a CSV file: header diameter,fraction[,density], one row per "
         "species (diameters in any unit; species 1, 2, ... in file order); or "
         "lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]]: ln D normal with that median and sd, cut "
         "at the quantiles QLO, QHI (default 0.01, 0.99) into CLASSES (default 10) species of "
-        "equal fraction, each of its class's median diameter";
-    distribution.rule = "must be lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]]";
-    // The text form only: a file is opened by the front end, which gives its text to
-    // parse_size_distribution_csv (algorithm code opens no file).
-    distribution.parse = [](PackRequest& r, std::string_view text) {
-        if (!is_lognormal(text)) {
-            return false;
-        }
-        r.size_modes = lognormal_modes(text);
-        r.size_distribution = std::string(text);
-        return true;
-    };
-    distribution.format = [](const PackRequest& r) { return r.size_distribution; };
-    distribution.recorded = [](const PackRequest& r) { return !r.size_distribution.empty(); };
-    distribution.unset_by_default = true;
-    rows.push_back(std::move(distribution));
+        "equal fraction, each of its class's median diameter",
+        [](auto& r) -> auto& { return r.size_modes; },
+        [](auto& r) -> auto& { return r.size_distribution; }));
     Row basis = choice(
         "fraction_basis", "request", [](auto& r) -> auto& { return r.fraction_basis; },
         [] { return fraction_bases(); },

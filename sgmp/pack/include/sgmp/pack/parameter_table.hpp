@@ -206,6 +206,28 @@ ParameterRow<Request, Context> whole_row(
     return row;
 }
 
+/// A row of a member holding one name of a name table `table()` (name_table.hpp), e.g. the
+/// sides or a fraction basis.
+template <class Request, class Context, class Member, class Table>
+ParameterRow<Request, Context> choice_row(std::string name, std::string group, Member member,
+                                          Table table, std::string help) {
+    ParameterRow<Request, Context> row;
+    row.name = std::move(name);
+    row.group = std::move(group);
+    row.kind = ValueKind::Choice;
+    row.help = std::move(help);
+    row.rule = "must be one of " + table().choices();
+    row.parse = [member, table](Request& r, std::string_view text) {
+        const auto value = table().parse(text);
+        if (value) {
+            member(r) = *value;
+        }
+        return value.has_value();
+    };
+    row.format = [member, table](const Request& r) { return std::string(table().name(member(r))); };
+    return row;
+}
+
 /// A row of a seed (`std::uint64_t seed` of the request): decimal digits from 0 to 2⁶⁴ − 1,
 /// refused rather than wrapped (seed_rule).
 template <class Request, class Context>

@@ -12,6 +12,7 @@
 
 #include "sgmp/cli/parameter_options.hpp"
 #include "sgmp/cli/run_main.hpp"
+#include "sgmp/cli/size_distribution_file.hpp"
 #include "sgmp/engine/arrangement.hpp"
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/pack/atomic_file.hpp"
@@ -60,26 +61,9 @@ void read_size_distribution(const PourOptions& o, PourParams& p) {
         }
         return;
     }
-    std::ifstream in(path, std::ios::binary);
-    if (!std::filesystem::is_regular_file(path) || !in) {
-        throw cli::UsageError("--size-distribution " + path + ": must name a readable file");
-    }
-    std::ostringstream text;
-    text << in.rdbuf();
-    try {
-        p.size_modes = parse_size_distribution_csv(text.str(), path);
-    } catch (const InputError& e) {
-        throw cli::UsageError(std::string("--size-distribution ") + e.what());
-    }
+    p.size_modes = cli::read_size_distribution_file(path);
     p.size_distribution = path;
-    double total = 0.0;
-    for (const SizeMode& m : p.size_modes) {
-        total += m.fraction;
-    }
-    if (std::abs(total - 1.0) > 1e-9) {
-        std::cerr << "sgmp-reference: warning: --size-distribution " << printable(path)
-                  << ": fractions sum to " << format_number(total) << "; normalised to 1\n";
-    }
+    cli::warn_unnormalised("sgmp-reference", path, p.size_modes);
 }
 
 }  // namespace

@@ -22,6 +22,7 @@
 #include "sgmp/cli/parameter_options.hpp"
 #include "sgmp/cli/progress_line.hpp"
 #include "sgmp/cli/run_main.hpp"
+#include "sgmp/cli/size_distribution_file.hpp"
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/engine/pack_parameters.hpp"
 #include "sgmp/pack/atomic_file.hpp"
@@ -106,33 +107,8 @@ void read_size_distribution(const Options& o, PackRequest& request) {
         set_pack_parameter(request, "size_distribution", path);
         return;
     }
-    std::ifstream in(path, std::ios::binary);
-    if (!std::filesystem::is_regular_file(path) || !in) {
-        throw UsageError("--size-distribution " + path + ": must name a readable file");
-    }
-    std::ostringstream text;
-    text << in.rdbuf();
-    try {
-        request.size_modes = parse_size_distribution_csv(text.str(), path);
-    } catch (const InputError& e) {
-        throw UsageError(std::string("--size-distribution ") + e.what());
-    }
+    request.size_modes = cli::read_size_distribution_file(path);
     request.size_distribution = path;
-}
-
-/// Fractions of a valid distribution file that do not sum to 1 are normalised (the engine
-/// does); the user is told, in one line.
-void warn_unnormalised(const PackRequest& request) {
-    double total = 0.0;
-    for (const SizeMode& m : request.size_modes) {
-        total += m.fraction;
-    }
-    if (!request.size_distribution.empty() && std::abs(total - 1.0) > 1e-9) {
-        std::fprintf(stderr,
-                     "sgmp: warning: --size-distribution %s: fractions sum to %s; normalised "
-                     "to 1\n",
-                     request.size_distribution.c_str(), format_number(total).c_str());
-    }
 }
 
 PackRequest to_request(const Options& o) {
@@ -142,7 +118,9 @@ PackRequest to_request(const Options& o) {
         read_size_distribution(o, request);
     }
     validate(request);
-    warn_unnormalised(request);
+    if (!request.size_distribution.empty()) {  // fractions not summing to 1: normalised
+        cli::warn_unnormalised("sgmp", request.size_distribution, request.size_modes);
+    }
     return request;
 }
 

@@ -1,0 +1,23 @@
+#pragma once
+/// @file size_distribution_file.hpp
+/// `--size-distribution FILE` of the front ends that take one (`sgmp pack`, `sgmp-reference
+/// pour`): the file read and parsed (parse_size_distribution_csv), a bad file a usage error
+/// naming file:line, and the one-line warning when its fractions do not sum to 1 (they are
+/// normalised). A lognormal:… text is no file: the callers give it to their parameter row.
+#include <string>
+#include <vector>
+
+#include "sgmp/pack/size_modes.hpp"
+
+namespace sgmp::cli {
+
+/// The modes of the CSV file at `path`. Throws UsageError ("--size-distribution PATH: …")
+/// for a file that cannot be read or does not parse.
+std::vector<SizeMode> read_size_distribution_file(const std::string& path);
+
+/// Prints "PROGRAM: warning: --size-distribution PATH: fractions sum to S; normalised to 1"
+/// to stderr when the fractions of `modes` do not sum to 1 (within 10⁻⁹).
+void warn_unnormalised(const std::string& program, const std::string& path,
+                       const std::vector<SizeMode>& modes);
+
+}  // namespace sgmp::cli

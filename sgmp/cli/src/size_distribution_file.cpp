@@ -1,0 +1,41 @@
+#include "sgmp/cli/size_distribution_file.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "sgmp/cli/run_main.hpp"
+#include "sgmp/pack/input_error.hpp"
+#include "sgmp/pack/metadata.hpp"
+
+namespace sgmp::cli {
+
+std::vector<SizeMode> read_size_distribution_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!std::filesystem::is_regular_file(path) || !in) {
+        throw UsageError("--size-distribution " + path + ": must name a readable file");
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    try {
+        return parse_size_distribution_csv(text.str(), path);
+    } catch (const InputError& e) {
+        throw UsageError(std::string("--size-distribution ") + e.what());
+    }
+}
+
+void warn_unnormalised(const std::string& program, const std::string& path,
+                       const std::vector<SizeMode>& modes) {
+    double total = 0.0;
+    for (const SizeMode& m : modes) {
+        total += m.fraction;
+    }
+    if (std::abs(total - 1.0) > 1e-9) {
+        std::cerr << program << ": warning: --size-distribution " << printable(path)
+                  << ": fractions sum to " << format_number(total) << "; normalised to 1\n";
+    }
+}
+
+}  // namespace sgmp::cli

@@ -167,12 +167,9 @@ void add_sizes_and_sides(std::vector<Row>& rows) {
         for (const PourSpecies& s : p.species()) {
             largest = std::max(largest, s.diameter);
         }
-        const double cell = kContainerSide;
-        if (largest > cell / 4.0) {
-            throw ParameterError("sides", "periodic",
-                                 "needs the largest sphere (d = " + format_number(largest) +
-                                     ") to fit the periodic cell (" + format_number(cell) +
-                                     ") at least 4 times across; use more spheres");
+        const std::string rule = periodic_cell_rule(largest, kContainerSide);
+        if (!rule.empty()) {
+            throw ParameterError("sides", "periodic", rule);
         }
         if (p.arrangement) {
             throw ParameterError("sides", "periodic",

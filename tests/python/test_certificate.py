@@ -27,23 +27,47 @@ def read_xyz(path):
     return header, rows[:, :3], rows[:, 3]
 
 
-def balance_matrix(centres, radii, d, tolerance):
+def contact_pairs(centres, radii, reach, periodic=False):
+    """Pairs i < j closer than `reach` between centres, each with c_i - c_j: the
+    minimum-image separation across the x and z faces of the 1.25-wide cell when periodic
+    (scipy's periodic kd-tree; y is given a period far beyond the pack)."""
+    if not periodic:
+        return [(i, j, centres[i] - centres[j])
+                for i, j in sorted(cKDTree(centres).query_pairs(reach))]
+    box = np.array([2 * HALF, 1e9, 2 * HALF])
+    shifted = centres + np.array([HALF, HALF, HALF])
+    tree = cKDTree(np.mod(shifted, box), boxsize=box)
+    out = []
+    for i, j in sorted(tree.query_pairs(reach)):
+        delta = shifted[i] - shifted[j]
+        delta -= box * np.round(delta / box)
+        out.append((i, j, delta))
+    return out
+
+
+def walls_of(periodic):
+    """(axis, plane, sign) of the floor and, between walls, the four sides."""
+    floor = [(1, -HALF, 1.0)]
+    return floor if periodic else floor + [(0, -HALF, 1.0), (0, HALF, -1.0), (2, -HALF, 1.0),
+                                           (2, HALF, -1.0)]
+
+
+def balance_matrix(centres, radii, d, tolerance, periodic=False):
     """Columns: one unit normal force per contact (gap <= tolerance*d); rows: 3 per sphere."""
     n = len(radii)
     rows, cols, vals = [], [], []
     column = 0
-    for i, j in sorted(cKDTree(centres).query_pairs(2 * radii.max() + tolerance * d)):
-        gap = np.linalg.norm(centres[i] - centres[j]) - radii[i] - radii[j]
+    for i, j, delta in contact_pairs(centres, radii, 2 * radii.max() + tolerance * d, periodic):
+        gap = np.linalg.norm(delta) - radii[i] - radii[j]
         if gap <= tolerance * d:
-            normal = (centres[i] - centres[j]) / np.linalg.norm(centres[i] - centres[j])
+            normal = delta / np.linalg.norm(delta)
             for a in range(3):
                 rows += [3 * i + a, 3 * j + a]
                 cols += [column, column]
                 vals += [normal[a], -normal[a]]
             column += 1
-    walls = [(1, -HALF, 1.0), (0, -HALF, 1.0), (0, HALF, -1.0), (2, -HALF, 1.0), (2, HALF, -1.0)]
     for i in range(n):
-        for axis, plane, sign in walls:
+        for axis, plane, sign in walls_of(periodic):
             gap = sign * (centres[i, axis] - plane) - radii[i]
             if gap <= tolerance * d:
                 rows.append(3 * i + axis)
@@ -130,19 +154,18 @@ def pyramid(normal, mu):
             for k in range(8)]
 
 
-def frictional_balance(centres, radii, d, tolerance, mu):
+def frictional_balance(centres, radii, d, tolerance, mu, periodic=False):
     """Columns: one per pyramid edge of each contact; rows: force (3) and torque over d (3)
     per sphere, the contact at the surface point c - r*n of the sphere pushed along n."""
     n = len(radii)
     rows, cols, vals = [], [], []
     contacts = []
-    for i, j in sorted(cKDTree(centres).query_pairs(2 * radii.max() + tolerance * d)):
-        distance = np.linalg.norm(centres[i] - centres[j])
+    for i, j, delta in contact_pairs(centres, radii, 2 * radii.max() + tolerance * d, periodic):
+        distance = np.linalg.norm(delta)
         if distance - radii[i] - radii[j] <= tolerance * d:
-            contacts.append((i, j, (centres[i] - centres[j]) / distance))
-    walls = [(1, -HALF, 1.0), (0, -HALF, 1.0), (0, HALF, -1.0), (2, -HALF, 1.0), (2, HALF, -1.0)]
+            contacts.append((i, j, delta / distance))
     for i in range(n):
-        for axis, plane, sign in walls:
+        for axis, plane, sign in walls_of(periodic):
             if sign * (centres[i, axis] - plane) - radii[i] <= tolerance * d:
                 normal = np.zeros(3)
                 normal[axis] = sign
@@ -220,3 +243,65 @@ def test_highs_decides_the_triangle_by_its_friction():
     assert highs_worst_residual(a, b, 6) <= 1e-9
     a, b, _ = frictional_balance(centres, radii, d, 1e-6, 0.1)
     assert highs_worst_residual(a, b, 6) > 1e-3
+
+
+def crossing_pairs(centres, radii, d, tolerance):
+    """Contacts whose minimum image lies across an x or z face of the periodic cell."""
+    return sum(1 for i, j, delta in contact_pairs(centres, radii, 2 * radii.max() + tolerance * d,
+                                                  periodic=True)
+               if np.linalg.norm(delta) - radii[i] - radii[j] <= tolerance * d
+               and not np.allclose(delta, centres[i] - centres[j]))
+
+
+@pytest.mark.cli
+def test_highs_certifies_a_periodic_frictionless_blend(tmp_path):
+    # A bimodal blend (1 : 0.5, equal volumes) in the periodic cell: the certificate's
+    # contacts include the minimum-image pairs across the faces, and no side walls.
+    out = tmp_path / "periodic.xyz"
+    r = subprocess.run([str(SGMP), "pack", "--count", "600", "--arrangement", "loose-random",
+                        "--seed", "4", "--sides", "periodic", "--size-modes", "1:0.5,0.5:0.5",
+                        "--fraction-basis", "volume", "--relax", "frictionless",
+                        "--out", str(out)], capture_output=True, text=True, check=False)
+    assert r.returncode == 0, r.stderr
+    header, centres, radii = read_xyz(out)
+    assert header["sides"] == "periodic" and header["certified"] == "true"
+    d = float(header["diameter"])
+    tolerance = float(header["certificate_gap_tolerance"])
+    a, b = balance_matrix(centres, radii, d, tolerance, periodic=True)
+    assert a.shape[1] == int(header["certificate_contacts"])
+    across = crossing_pairs(centres, radii, d, tolerance)
+    print(f"{a.shape[1]} contacts, {across} across the faces")
+    assert across > 0
+    # Every centre inside the cell; no minimum-image pair overlaps beyond 10^-12 d.
+    assert np.all(np.abs(centres[:, [0, 2]]) <= HALF)
+    gaps = [np.linalg.norm(delta) - radii[i] - radii[j]
+            for i, j, delta in contact_pairs(centres, radii, 2 * radii.max(), periodic=True)]
+    assert min(gaps) >= -1e-12 * d
+    n_rows, n_cols = a.shape
+    from scipy.sparse import eye, hstack
+    a_eq = hstack([a, eye(n_rows), -eye(n_rows)]).tocsc()
+    lp = linprog(np.concatenate([np.zeros(n_cols), np.ones(2 * n_rows)]), A_eq=a_eq, b_eq=b,
+                 bounds=(0, None), method="highs")
+    assert lp.status == 0
+    s = lp.x[n_cols:n_cols + n_rows] - lp.x[n_cols + n_rows:]
+    assert np.linalg.norm(s.reshape(-1, 3), axis=1).max() <= float(
+        header["certificate_residual_tolerance"])
+
+
+@pytest.mark.cli
+def test_highs_certifies_a_periodic_frictional_pack(tmp_path):
+    # 60 spheres at phi target 0.3 (d = 0.306, under the cell's limit of 0.3125), mu = 0.5.
+    out = tmp_path / "periodic-frictional.xyz"
+    r = subprocess.run([str(SGMP), "pack", "--count", "60", "--phi-target", "0.3",
+                        "--arrangement", "loose-random", "--seed", "4", "--sides", "periodic",
+                        "--relax", "frictional", "--out", str(out)],
+                       capture_output=True, text=True, check=False)
+    assert r.returncode == 0, r.stderr
+    header, centres, radii = read_xyz(out)
+    d = float(header["diameter"])
+    tolerance = float(header["certificate_gap_tolerance"])
+    a, b, contacts = frictional_balance(centres, radii, d, tolerance, 0.5, periodic=True)
+    assert contacts == int(header["certificate_contacts"])
+    assert crossing_pairs(centres, radii, d, tolerance) > 0
+    assert header["certified"] == "true"
+    assert highs_worst_residual(a, b, 6) <= float(header["certificate_residual_tolerance"])

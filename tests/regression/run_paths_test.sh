@@ -37,7 +37,7 @@ scripts/run --blends bimodal --counts 1002 --seeds 1 --modes "loose-random loose
 [[ -f "$out/blends/bimodal/report/report.md" ]] || fail "no blend report"
 blend_manifest="$out/blends/bimodal/manifest.csv"
 [[ $(grep -c '^candidate,loose-random,1002,1,' "$blend_manifest") == 1 ]] || fail "no blend candidate"
-[[ $(grep -c '^candidate,loose-random+relax' "$blend_manifest") == 0 ]] || fail "a relaxed blend mode"
+[[ $(grep -c '^candidate,loose-random+relax,1002,1,' "$blend_manifest") == 1 ]] || fail "no relaxed blend candidate"
 [[ $(grep -c '^reference,DEM bimodal mu=0.5,1002,' "$blend_manifest") == 5 ]] || fail "not 5 DEM pours"
 # Per-species rows (species_rows.hpp) with their declared margins; none for equal spheres.
 blend_csv="$out/blends/bimodal/report/report.csv"
@@ -46,6 +46,9 @@ for row in 'species_1:z_mean_tol_1e-2,contacts/particle' 'species_2:voronoi_phi_
     grep -q ",DEM bimodal mu=0.5,$row," "$blend_csv" || fail "no row $row in the blend report"
 done
 ! grep -q 'species_' "$out/report/report.csv" || fail "species rows for equal spheres"
+relaxed_blend=$(ls "$out"/packs/sgmp-*-"$engine"/blends/bimodal/loose-random+relax/n1002-seed1.xyz)
+"$build/compare/sgmp-compare" header "$relaxed_blend" sides certified | tr '\n' ' ' \
+    | grep -q '^periodic true $' || fail "the relaxed blend pack is not a certified periodic pack"
 blend_pack=$(ls "$out"/packs/sgmp-*-"$engine"/blends/bimodal/loose-random/n1002-seed1.xyz)
 "$build/compare/sgmp-compare" header "$blend_pack" sides size_modes | tr '\n' ' ' \
     | grep -q '^periodic 1:0.5,0.5:0.5 $' || fail "the blend pack is not periodic bimodal"

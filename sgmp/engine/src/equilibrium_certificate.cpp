@@ -18,6 +18,7 @@
 #include "sgmp/engine/coulomb_pyramid.hpp"
 #include "sgmp/pack/cell_grid.hpp"
 #include "sgmp/pack/pack_overlaps.hpp"
+#include "sgmp/pack/periodic_images.hpp"
 
 namespace sgmp::engine {
 namespace {
@@ -40,15 +41,23 @@ std::vector<Contact> find_contacts(const std::vector<Particle>& particles, const
     deepest = 0.0;
     const double r_max = max_radius(particles);
     if (particles.size() >= 2 && r_max > 0.0) {
-        const CellGrid grid(centers_of(particles), 2.0 * r_max + tolerance);
-        grid.for_each_pair([&](std::size_t i, std::size_t j, double r2) {
+        // With periodic sides, pairs with the images across the faces are the minimum-image
+        // pairs (periodic_images.hpp): the pair (i, image of k) counts once, when i < k.
+        const double reach = 2.0 * r_max + tolerance;
+        const ImagedParticles imaged = with_periodic_images(particles, box, reach);
+        const std::vector<Particle>& all = imaged.particles;
+        const CellGrid grid(centers_of(all), reach);
+        grid.for_each_pair_from(0, imaged.originals, [&](std::size_t i, std::size_t j, double r2) {
+            const std::size_t k = imaged.source[j];
+            if (j >= imaged.originals && !(i < k)) {
+                return;
+            }
             const double distance = std::sqrt(r2);
-            const double gap = distance - particles[i].radius - particles[j].radius;
+            const double gap = distance - all[i].radius - all[j].radius;
             if (gap <= tolerance && distance > 0.0) {
                 deepest = std::max(deepest, -gap);
-                contacts.push_back({i, j, false,
-                                    (particles[i].center - particles[j].center) / distance,
-                                    Partner::Sphere});
+                contacts.push_back(
+                    {i, k, false, (all[i].center - all[j].center) / distance, Partner::Sphere});
             }
         });
     }
@@ -308,6 +317,15 @@ std::uint64_t contact_key(std::size_t first, std::size_t second, Partner partner
 }
 
 std::array<WallGap, 5> wall_gaps(const Vec3& c, double r, const Container& box) {
+    if (box.periodic) {  // no walls: the lateral gaps never close
+        return {{
+            {c.y() - r - box.floor, Vec3(0.0, 1.0, 0.0), Partner::Floor},
+            {INFINITY, Vec3(1.0, 0.0, 0.0), Partner::XMin},
+            {INFINITY, Vec3(-1.0, 0.0, 0.0), Partner::XMax},
+            {INFINITY, Vec3(0.0, 0.0, 1.0), Partner::ZMin},
+            {INFINITY, Vec3(0.0, 0.0, -1.0), Partner::ZMax},
+        }};
+    }
     return {{
         {c.y() - r - box.floor, Vec3(0.0, 1.0, 0.0), Partner::Floor},
         {c.x() - r - box.x_min, Vec3(1.0, 0.0, 0.0), Partner::XMin},

@@ -47,7 +47,9 @@ void add_pair_forces(State& s, double k, double kt, double mu) {
         std::size_t slot = s.neighbours.first_slot(i);
         for (const std::uint32_t j : s.neighbours.of(i)) {
             Triple& xi = s.pair_spring[slot++];
-            const double dx = p[j].x - p[i].x, dy = p[j].y - p[i].y, dz = p[j].z - p[i].z;
+            double dx = p[j].x - p[i].x, dz = p[j].z - p[i].z;
+            const double dy = p[j].y - p[i].y;
+            s.sides.to_nearest_image(dx, dz);
             const double reach = p[i].r + p[j].r;
             const double d2 = dx * dx + dy * dy + dz * dz;
             if (d2 >= reach * reach) {
@@ -82,7 +84,7 @@ void add_wall_forces(State& s, const Container& box, double k, double kt, double
                                  box.floor + r - p[i].y};
         static constexpr Triple kNormal[5] = {
             {-1.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, 0.0, -1.0}, {0.0, 0.0, 1.0}, {0.0, -1.0, 0.0}};
-        for (int w = 0; w < 5; ++w) {
+        for (int w = box.periodic ? 4 : 0; w < 5; ++w) {  // periodic sides: the floor alone
             Triple& xi = s.wall_spring[5 * i + static_cast<std::size_t>(w)];
             if (depth[w] <= 0.0) {
                 xi = Triple{};

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "sgmp/engine/settled_grid.hpp"
+#include "sgmp/pack/periodic_images.hpp"
 
 namespace sgmp::engine {
 
@@ -21,9 +22,14 @@ std::vector<std::size_t> by_height(const std::vector<Particle>& particles) {
     return order;
 }
 
+/// c between the walls (wrapped into the cell with periodic sides) and above the floor.
 Vec3 inside(Vec3 c, double r, const Container& box) {
-    c.x() = std::clamp(c.x(), box.x_min + r, box.x_max - r);
-    c.z() = std::clamp(c.z(), box.z_min + r, box.z_max - r);
+    if (box.periodic) {
+        c = box.wrapped(c);
+    } else {
+        c.x() = std::clamp(c.x(), box.x_min + r, box.x_max - r);
+        c.z() = std::clamp(c.z(), box.z_min + r, box.z_max - r);
+    }
     c.y() = std::max(c.y(), box.floor + r);
     return c;
 }
@@ -108,6 +114,11 @@ FinishStats finish_as_hard_spheres(std::vector<Particle>& particles, const Conta
         stats.lifted += lifted ? 1 : 0;
         p.center = c;
         placed.insert(Sphere{c.x(), c.y(), c.z(), p.radius});
+        // With periodic sides, its images across the faces too, as far as a later sphere's
+        // searches reach from inside the cell (1.5·r + r_max, at most 2.5·r_max).
+        for (const Vec3& image : periodic_image_centers(c, container, 3.0 * r_max)) {
+            placed.insert(Sphere{image.x(), image.y(), image.z(), p.radius});
+        }
     }
     return stats;
 }

@@ -132,7 +132,10 @@ Step build_step(const std::vector<Ball>& balls, const NeighbourList& list, const
     std::vector<char> turns(n, 0);  // spheres with a frictional contact may turn
     for (std::size_t i = 0; i < n; ++i) {
         for (const std::uint32_t j : list.of(i)) {
-            const Vec3 d(balls[j].x - balls[i].x, balls[j].y - balls[i].y, balls[j].z - balls[i].z);
+            double dx = balls[j].x - balls[i].x;
+            double dz = balls[j].z - balls[i].z;
+            box.to_nearest_image(dx, dz);
+            const Vec3 d(dx, balls[j].y - balls[i].y, dz);
             const double dist = d.norm();
             const double gap = dist - balls[i].r - balls[j].r;
             if (gap >= cutoff || dist == 0.0) {
@@ -159,9 +162,11 @@ Step build_step(const std::vector<Ball>& balls, const NeighbourList& list, const
     for (std::size_t i = 0; i < n; ++i) {
         const Ball& b = balls[i];
         const std::size_t c = columns * i;
-        clamp(c, box.x_min + b.r - b.x, box.x_max - b.r - b.x);
+        if (!box.periodic) {
+            clamp(c, box.x_min + b.r - b.x, box.x_max - b.r - b.x);
+            clamp(c + 2, box.z_min + b.r - b.z, box.z_max - b.r - b.z);
+        }
         clamp(c + 1, box.floor + b.r - b.y, 1e300);
-        clamp(c + 2, box.z_min + b.r - b.z, box.z_max - b.r - b.z);
         st.objective[c + 1] = weight[i];
         if (!options.friction) {
             continue;
@@ -367,7 +372,7 @@ SettleStats settle_hard_spheres(std::vector<Particle>& particles, const Containe
     std::vector<double> weight(n);
     const Container box{container.x_min / diameter, container.x_max / diameter,
                         container.z_min / diameter, container.z_max / diameter,
-                        container.floor / diameter};
+                        container.floor / diameter, container.periodic};
     for (std::size_t i = 0; i < n; ++i) {
         const Particle& p = particles[i];
         balls[i] = {p.center.x() / diameter, p.center.y() / diameter, p.center.z() / diameter,
@@ -383,7 +388,7 @@ SettleStats settle_hard_spheres(std::vector<Particle>& particles, const Containe
     ClpSimplex model;
     model.setLogLevel(0);
     while (stats.iterations < options.max_iterations) {
-        list.build(balls, 2.0 * std::sqrt(3.0) * trust);
+        list.build(balls, 2.0 * std::sqrt(3.0) * trust, box);
         const Step built = build_step(balls, list, box, trust, weight, options);
         const Step st = penalty > 0.0 ? split_moves(built, penalty, weight, columns) : built;
         std::vector<double> u(columns * n);
@@ -451,8 +456,8 @@ SettleStats settle_hard_spheres(std::vector<Particle>& particles, const Containe
         const double dy = balls[i].y - start[i].y;
         const double dz = balls[i].z - start[i].z;
         stats.move_max = std::max(stats.move_max, std::sqrt(dx * dx + dy * dy + dz * dz));
-        particles[i].center =
-            Vec3(balls[i].x * diameter, balls[i].y * diameter, balls[i].z * diameter);
+        particles[i].center = container.wrapped(
+            Vec3(balls[i].x * diameter, balls[i].y * diameter, balls[i].z * diameter));
     }
     return stats;
 }

@@ -224,11 +224,11 @@ void validate(const PackRequest& request) {
                                  " it gives at phi_target " + format_number(request.phi_target) +
                                  " does not fit the 1.25-wide container");
     }
-    if (request.sides == Sides::Periodic && !(4.0 * sizes.largest <= kContainerSide)) {
-        throw ParameterError("sides", "periodic",
-                             "the largest diameter " + format_number(sizes.largest) +
-                                 " must fit the 1.25-wide periodic cell at least 4 times across "
-                                 "(at most 0.3125; more particles or a smaller size ratio)");
+    if (request.sides == Sides::Periodic) {
+        const std::string rule = periodic_cell_rule(sizes.largest, kContainerSide);
+        if (!rule.empty()) {
+            throw ParameterError("sides", "periodic", rule);
+        }
     }
     check_pack_parameters(request, "protocol", {sizes.smallest});
     check_pack_parameters(request, "relax", {sizes.smallest});

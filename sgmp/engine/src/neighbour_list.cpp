@@ -8,14 +8,35 @@ namespace sgmp::engine {
 
 namespace {
 
-/// Cells per axis and their side along one axis of the bounding box [lo, hi].
+/// Cells per axis and their side along one axis of the bounding box [lo, hi]; a periodic
+/// axis covers one period [lo, lo + cells·side) and wraps.
 struct Axis {
     double lo = 0.0;
     double side = 1.0;
     int cells = 1;
+    bool periodic = false;
     [[nodiscard]] int index(double v) const {
         const double c = std::floor((v - lo) / side);
+        if (periodic) {
+            const int k = static_cast<int>(std::fmod(c, static_cast<double>(cells)));
+            return k < 0 ? k + cells : k;
+        }
         return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(cells - 1)));
+    }
+    /// The distinct cells next to cell c and c itself: at most three, wrapped when periodic
+    /// (every cell when a period holds fewer than three).
+    [[nodiscard]] std::array<int, 3> around(int c, int& count) const {
+        if (periodic && cells < 3) {
+            count = cells;
+            return {0, 1, 2};
+        }
+        if (periodic) {
+            count = 3;
+            return {(c + cells - 1) % cells, c, (c + 1) % cells};
+        }
+        const int lo_cell = std::max(c - 1, 0);
+        count = std::min(c + 1, cells - 1) - lo_cell + 1;
+        return {lo_cell, lo_cell + 1, lo_cell + 2};
     }
 };
 
@@ -40,9 +61,17 @@ Axis axis_over(const std::vector<Ball>& balls, double Ball::*coordinate, double 
     return make_axis(lo, hi, min_side, max_cells);
 }
 
+/// A periodic axis over the period [lo, hi): as many cells of side ≥ min_side as fit.
+Axis periodic_axis(double lo, double hi, double min_side) {
+    Axis axis = make_axis(lo, hi, min_side, 4096);
+    axis.side = (hi - lo) / axis.cells;
+    axis.periodic = true;
+    return axis;
+}
+
 }  // namespace
 
-void NeighbourList::build(const std::vector<Ball>& s, double skin) {
+void NeighbourList::build(const std::vector<Ball>& s, double skin, const Container& sides) {
     const std::size_t n = s.size();
     offsets_.assign(n + 1, 0);
     neighbours_.clear();
@@ -54,8 +83,10 @@ void NeighbourList::build(const std::vector<Ball>& s, double skin) {
         r_max = std::max(r_max, b.r);
     }
     const double min_side = 2.0 * r_max + skin;
-    const Axis ax = axis_over(s, &Ball::x, min_side, 4096);
-    const Axis az = axis_over(s, &Ball::z, min_side, 4096);
+    const Axis ax = sides.periodic ? periodic_axis(sides.x_min, sides.x_max, min_side)
+                                   : axis_over(s, &Ball::x, min_side, 4096);
+    const Axis az = sides.periodic ? periodic_axis(sides.z_min, sides.z_max, min_side)
+                                   : axis_over(s, &Ball::z, min_side, 4096);
     // At most four cells per sphere, so the cell array never outgrows the spheres' (a tall,
     // thin pile gets taller cells).
     const double layers = std::ceil(4.0 * static_cast<double>(n) / (ax.cells * az.cells));
@@ -79,21 +110,24 @@ void NeighbourList::build(const std::vector<Ball>& s, double skin) {
         by_cell_[fill[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
     }
     for (std::size_t i = 0; i < n; ++i) {
-        const int cx = ax.index(s[i].x);
+        int count_x = 0;
+        int count_z = 0;
+        const std::array<int, 3> xs = ax.around(ax.index(s[i].x), count_x);
+        const std::array<int, 3> zs = az.around(az.index(s[i].z), count_z);
         const int cy = ay.index(s[i].y);
-        const int cz = az.index(s[i].z);
         for (int iy = std::max(cy - 1, 0); iy <= std::min(cy + 1, ay.cells - 1); ++iy) {
-            for (int iz = std::max(cz - 1, 0); iz <= std::min(cz + 1, az.cells - 1); ++iz) {
-                for (int ix = std::max(cx - 1, 0); ix <= std::min(cx + 1, ax.cells - 1); ++ix) {
-                    const std::uint32_t c = cell(ix, iy, iz);
+            for (int kz = 0; kz < count_z; ++kz) {
+                for (int kx = 0; kx < count_x; ++kx) {
+                    const std::uint32_t c = cell(xs[kx], iy, zs[kz]);
                     for (std::uint32_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
                         const std::uint32_t j = by_cell_[k];
                         if (j <= i) {
                             continue;
                         }
-                        const double dx = s[j].x - s[i].x;
+                        double dx = s[j].x - s[i].x;
                         const double dy = s[j].y - s[i].y;
-                        const double dz = s[j].z - s[i].z;
+                        double dz = s[j].z - s[i].z;
+                        sides.to_nearest_image(dx, dz);
                         const double reach = s[i].r + s[j].r + skin;
                         if (dx * dx + dy * dy + dz * dz < reach * reach) {
                             neighbours_.push_back(j);

@@ -219,16 +219,8 @@ std::vector<Row> count_and_request_rows() {
     Row sides = choice(
         "sides", "request", [](auto& r) -> auto& { return r.sides; }, [] { return sides_names(); },
         "the container's lateral sides: walls (the thesis') or periodic (x and z periodic, the "
-        "floor kept; the largest sphere must fit the 1.25-wide cell 4 times across; no --relax "
-        "yet)");
+        "floor kept; the largest sphere must fit the 1.25-wide cell 4 times across)");
     sides.recorded = [](const PackRequest& r) { return r.sides != Sides::Walls; };
-    sides.check = [](const PackRequest& r, const PackCheckContext&) {
-        if (r.sides == Sides::Periodic && r.relax.mode != RelaxMode::None) {
-            refuse("relax", std::string(to_string(r.relax.mode)),
-                   "the relaxations need walls; periodic sides (--sides periodic) are for "
-                   "deposited packs only, for now");
-        }
-    };
     rows.push_back(std::move(sides));
     return rows;
 }

@@ -90,7 +90,7 @@ void rebuild_neighbours(State& s) {
     if (s.frictional) {
         std::swap(s.previous, s.neighbours);
     }
-    s.neighbours.build(s.spheres, s.skin);
+    s.neighbours.build(s.spheres, s.skin, s.sides);
     if (s.frictional) {
         carry_springs(s);
     }
@@ -125,7 +125,9 @@ inline void add_pair_forces(State& s, double k, std::size_t i) {
     const double xi = p[i].x, yi = p[i].y, zi = p[i].z, ri = p[i].r;
     double fxi = 0.0, fyi = 0.0, fzi = 0.0;
     for (const std::uint32_t j : s.neighbours.of(i)) {
-        const double dx = p[j].x - xi, dy = p[j].y - yi, dz = p[j].z - zi;
+        double dx = p[j].x - xi, dz = p[j].z - zi;
+        const double dy = p[j].y - yi;
+        s.sides.to_nearest_image(dx, dz);
         const double reach = ri + p[j].r;
         const double d2 = dx * dx + dy * dy + dz * dz;
         if (d2 >= reach * reach) {
@@ -145,13 +147,16 @@ inline void add_pair_forces(State& s, double k, std::size_t i) {
     s.f[i].z += fzi;
 }
 
-/// Adds the walls' and the floor's normal forces to s.f[i], then sphere i's terms to `sums`.
+/// Adds the walls' (none with periodic sides) and the floor's normal forces to s.f[i], then
+/// sphere i's terms to `sums`.
 inline void add_walls_and_sum(State& s, const Container& box, double k, std::size_t i,
                               ForceSums& sums) {
     const Ball& b = s.spheres[i];
     Triple& f = s.f[i];
-    f.x += wall_force(box.x_min + b.r - b.x, k) - wall_force(b.x + b.r - box.x_max, k);
-    f.z += wall_force(box.z_min + b.r - b.z, k) - wall_force(b.z + b.r - box.z_max, k);
+    if (!box.periodic) {
+        f.x += wall_force(box.x_min + b.r - b.x, k) - wall_force(b.x + b.r - box.x_max, k);
+        f.z += wall_force(box.z_min + b.r - b.z, k) - wall_force(b.z + b.r - box.z_max, k);
+    }
     f.y += wall_force(box.floor + b.r - b.y, k);
     const double f2 = f.x * f.x + f.y * f.y + f.z * f.z;
     sums.force_squared += f2;
@@ -311,11 +316,15 @@ double deepest_overlap(const State& s, const Container& box, double scale) {
     double deepest = 0.0;
     for (std::size_t i = 0; i < p.size(); ++i) {
         const double r = scale * p[i].r;
-        deepest =
-            std::max({deepest, box.x_min + r - p[i].x, p[i].x + r - box.x_max,
-                      box.z_min + r - p[i].z, p[i].z + r - box.z_max, box.floor + r - p[i].y});
+        deepest = std::max(deepest, box.floor + r - p[i].y);
+        if (!box.periodic) {
+            deepest = std::max({deepest, box.x_min + r - p[i].x, p[i].x + r - box.x_max,
+                                box.z_min + r - p[i].z, p[i].z + r - box.z_max});
+        }
         for (const std::uint32_t j : s.neighbours.of(i)) {
-            const double dx = p[j].x - p[i].x, dy = p[j].y - p[i].y, dz = p[j].z - p[i].z;
+            double dx = p[j].x - p[i].x, dz = p[j].z - p[i].z;
+            const double dy = p[j].y - p[i].y;
+            box.to_nearest_image(dx, dz);
             deepest =
                 std::max(deepest, r + scale * p[j].r - std::sqrt(dx * dx + dy * dy + dz * dz));
         }
@@ -427,6 +436,7 @@ void relax_soft(std::vector<Particle>& particles, const Container& container,
                 const RelaxParams& params, double diameter, RelaxStats& stats,
                 const RelaxProgressCallback& progress) {
     State s = make_state(particles, diameter, params.shell);
+    s.sides = container;
     rebuild_neighbours(s);
     if (params.mode == RelaxMode::Frictional) {
         enable_friction(s, params.tangential_ratio, params.friction);
@@ -476,7 +486,8 @@ void relax_soft(std::vector<Particle>& particles, const Container& container,
         std::max(kClearMinSteps, std::lround(kClearCrossings * height / d_min)));
     stats.overlap_max = deepest_overlap(s, container, 1.0) / diameter;  // of the soft spheres
     for (std::size_t k = 0; k < s.particle.size(); ++k) {
-        particles[s.particle[k]].center = Vec3(s.spheres[k].x, s.spheres[k].y, s.spheres[k].z);
+        particles[s.particle[k]].center =
+            container.wrapped(Vec3(s.spheres[k].x, s.spheres[k].y, s.spheres[k].z));
     }
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "sgmp/engine/neighbour_list.hpp"
+#include "sgmp/pack/geometry.hpp"
 
 namespace sgmp::engine {
 
@@ -27,6 +28,8 @@ struct State {
     std::vector<std::uint32_t> particle;  ///< index in the caller's vector
     NeighbourList neighbours;
     double skin = 0.0;
+    /// The container: its `periodic` flag and periods decide the pairs' nearest images.
+    Container sides;
 
     // Frictional relaxation only (all empty otherwise). Rotations are kept in rolling
     // coordinates q = r·θ (a length), so their generalised force is torque/r = n × F_t and

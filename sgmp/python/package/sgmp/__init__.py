@@ -102,7 +102,7 @@ def pack(count, arrangement, seed=None, *, phi_target=None, size_modes=None,
       species) or 'lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]]' (not with size_modes)
     - fraction_basis: what the fractions mean: 'number', 'volume' or 'mass'
     - sides: 'walls' (the thesis' container) or 'periodic' (x and z periodic, the floor
-      kept; deposited packs only, for now)
+      kept)
     - circle_factor, sweep_positions, sweep_stages ('8,120,720' or a list), lower_neighbours,
       gap ('largest'|'random'), fall, fall_step, contact, momentum, walls, stall_moves,
       max_moves: the protocol (see `sgmp pack --help`)

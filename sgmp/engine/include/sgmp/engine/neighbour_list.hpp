@@ -5,11 +5,15 @@
 /// has moved more than skin/2 since, every touching pair is in the list. Built through a
 /// cell list over the spheres' bounding box (cells of side ≥ 2·r_max + skin, counting sort,
 /// the 27 cells around each sphere), in O(N); the scan order is fixed, so the same positions
-/// give the same list.
+/// give the same list. With periodic sides (Container::periodic) the cells wrap in x and z
+/// and pairs are minimum-image pairs (Container::to_nearest_image), so the pair loops must
+/// take the nearest image of each listed pair's separation too.
 #include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
+
+#include "sgmp/pack/geometry.hpp"
 
 namespace sgmp::engine {
 
@@ -23,8 +27,9 @@ struct Ball {
 
 class NeighbourList {
   public:
-    /// Rebuilds the list for the spheres' present positions.
-    void build(const std::vector<Ball>& balls, double skin);
+    /// Rebuilds the list for the spheres' present positions; only `sides.periodic` and, when
+    /// set, its periods are read (the cell must be over twice 2·r_max + skin wide).
+    void build(const std::vector<Ball>& balls, double skin, const Container& sides = {});
 
     /// The neighbours j > i of sphere i.
     [[nodiscard]] std::span<const std::uint32_t> of(std::size_t i) const {

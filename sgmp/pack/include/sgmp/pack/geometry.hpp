@@ -3,6 +3,7 @@
 /// The testbed of the thesis (chapter 3): the unit control volume centred at the origin
 /// inside a 1.25-wide open-topped container, and the sizing rule for monodisperse packs.
 
+#include <cmath>
 #include <cstddef>
 #include <string>
 
@@ -61,6 +62,17 @@ struct Container {
     /// The centre moved by whole periods into [x_min, x_max) × [z_min, z_max) when periodic;
     /// unchanged otherwise.
     [[nodiscard]] Vec3 wrapped(const Vec3& center) const;
+    /// Moves the lateral parts (dx, dz) of a separation of two centres by whole periods to
+    /// the nearest image, |dx| ≤ period/2 (likewise z), when periodic; leaves them otherwise.
+    /// The minimum-image pair is the pair when the cell is over twice the pair's reach.
+    void to_nearest_image(double& dx, double& dz) const {
+        if (periodic) {
+            const double lx = x_max - x_min;
+            const double lz = z_max - z_min;
+            dx -= lx * std::nearbyint(dx / lx);
+            dz -= lz * std::nearbyint(dz / lz);
+        }
+    }
     /// The container as a box reaching up to `top`.
     [[nodiscard]] Box box_up_to(double top) const;
 };

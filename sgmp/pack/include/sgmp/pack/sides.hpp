@@ -6,6 +6,7 @@
 /// a sphere near one face meets the images of the spheres near the opposite face, shifted
 /// by one period, and every centre is wrapped into the cell when it settles.
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "sgmp/pack/name_table.hpp"
@@ -18,5 +19,14 @@ enum class Sides { Walls, Periodic };
 const NameTable<Sides, 2>& sides_names();
 std::string_view to_string(Sides sides);
 std::optional<Sides> parse_sides(std::string_view text);
+
+/// How many times across the periodic cell the largest sphere must fit. Every pair search
+/// in the cell (reach ≤ 2·r_max plus a skin below r_max) then reaches less than half a
+/// period, so the nearest image of a pair is the pair, and each pair is met once.
+inline constexpr double kPeriodicCellDiameters = 4.0;
+
+/// The rule a largest diameter breaks in the periodic cell of side `cell` (the text after
+/// "--sides periodic: "), or an empty string when it fits kPeriodicCellDiameters times.
+std::string periodic_cell_rule(double largest_diameter, double cell);
 
 }  // namespace sgmp

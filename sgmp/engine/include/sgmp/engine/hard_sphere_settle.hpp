@@ -25,7 +25,8 @@
 /// Trust region: doubled (up to `trust_max`) while more than 2 % of the spheres move the
 /// full s vertically (a collective fall), divided by 4 when a step lowers the energy by
 /// less than 10⁻⁴·s m·g (the energy's slope along the best step, which vanishes at an
-/// equilibrium); the settling ends when s falls below
+/// equilibrium), and doubled after 8 steps in a row that did neither (a steady creep);
+/// the settling ends when s falls below
 /// `trust_min`, or after `max_iterations`. The LP is COIN-OR CLP's: the first by the primal
 /// simplex from the feasible point Δ = 0 (a values pass), each later one by the dual simplex
 /// warm-started from the previous basis (pairs keyed by their sphere indices), on one

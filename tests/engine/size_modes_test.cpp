@@ -2,6 +2,7 @@
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <numbers>
+#include <numeric>
 #include <vector>
 
 #include "refusal.hpp"
@@ -78,6 +79,42 @@ BOOST_AUTO_TEST_CASE(the_scale_fills_a_third_into_the_control_volume) {
     const double volume =
         300.0 * std::numbers::pi / 6.0 * (0.7 * s * s * s + 0.3 * std::pow(0.5 * s, 3));
     BOOST_TEST(volume == 0.6, tt::tolerance(1e-13));
+}
+
+BOOST_AUTO_TEST_CASE(a_stratified_order_keeps_every_prefix_within_one_particle) {
+    // Brute force over every prefix k: |p_i(k) - k·n_i/N| < 1 for each species i, and the
+    // sequence holds exactly n_i of each (integers compared as k·n_i - p_i·N against N).
+    for (const std::vector<std::size_t>& counts : std::vector<std::vector<std::size_t>>{
+             {333, 2667}, {82, 1762, 8156}, {1, 1, 1}, {7, 0, 5}, {1, 999}, {500, 300, 200, 1}}) {
+        const std::vector<std::size_t> sequence = stratified_sequence(counts);
+        const long long total = std::accumulate(counts.begin(), counts.end(), 0LL);
+        BOOST_TEST(static_cast<long long>(sequence.size()) == total);
+        std::vector<long long> placed(counts.size(), 0);
+        long long worst = 0;  // max over k, i of |k·n_i - p_i·N|, must stay below N
+        for (std::size_t k = 1; k <= sequence.size(); ++k) {
+            ++placed[sequence[k - 1]];
+            for (std::size_t i = 0; i < counts.size(); ++i) {
+                const long long gap =
+                    static_cast<long long>(k) * static_cast<long long>(counts[i]) -
+                    placed[i] * total;
+                worst = std::max(worst, gap < 0 ? -gap : gap);
+            }
+        }
+        BOOST_TEST(worst < total);
+        for (std::size_t i = 0; i < counts.size(); ++i) {
+            BOOST_TEST(placed[i] == static_cast<long long>(counts[i]));
+        }
+    }
+}
+
+BOOST_AUTO_TEST_CASE(a_stratified_draw_uses_no_random_numbers) {
+    const std::vector<SizeMode> modes = {SizeMode{1.0, 0.1}, SizeMode{0.5, 0.9}};
+    Random a(3);
+    Random b(3);
+    const DrawnSizes drawn = draw_sizes(1000, 0.63, modes, a, DropOrder::Stratified);
+    BOOST_TEST(a.raw() == b.raw());
+    BOOST_TEST(std::count(drawn.species.begin(), drawn.species.end(), 1) == 100);
+    BOOST_TEST(drawn.species[0] == 2);  // deficits 0.1 and 0.9 at k = 1
 }
 
 BOOST_AUTO_TEST_CASE(diameters_follow_the_fractions_in_random_order) {

@@ -47,7 +47,8 @@ Sizes sizes_of(const PackRequest& request) {
 }
 
 std::vector<Particle> starting_particles(const PackRequest& request, Random& rng) {
-    const DrawnSizes drawn = draw_sizes(request.count, request.phi_target, modes_of(request), rng);
+    const DrawnSizes drawn =
+        draw_sizes(request.count, request.phi_target, modes_of(request), rng, request.drop_order);
     std::vector<Particle> particles = make_arrangement(request.arrangement, drawn.diameters, rng);
     for (std::size_t i = 0; i < particles.size(); ++i) {
         particles[i].species = drawn.species[i];  // the arrangement keeps the drop order

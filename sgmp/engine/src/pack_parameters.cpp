@@ -216,6 +216,14 @@ std::vector<Row> count_and_request_rows() {
         (void)number_fractions(r.size_modes, r.fraction_basis);  // mass needs every density
     };
     rows.push_back(std::move(basis));
+    Row order = choice(
+        "drop_order", "request", [](auto& r) -> auto& { return r.drop_order; },
+        [] { return drop_orders(); },
+        "the order a blend's particles drop in: stratified (each species within one particle of "
+        "its share in every run of drops from the first, so every height gets the blend) or "
+        "shuffled (a random permutation)");
+    order.recorded = [](const PackRequest& r) { return r.size_modes.size() > 1; };
+    rows.push_back(std::move(order));
     Row sides = choice(
         "sides", "request", [](auto& r) -> auto& { return r.sides; }, [] { return sides_names(); },
         "the container's lateral sides: walls (the thesis') or periodic (x and z periodic, the "

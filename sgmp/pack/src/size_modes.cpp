@@ -318,7 +318,7 @@ std::vector<std::size_t> mode_counts(std::size_t count, const std::vector<SizeMo
 }
 
 DrawnSizes draw_sizes(std::size_t count, double phi_target, const std::vector<SizeMode>& modes,
-                      Random& rng) {
+                      Random& rng, DropOrder order) {
     const double scale = diameter_scale(count, phi_target, modes);
     DrawnSizes drawn;
     if (is_monodisperse(modes)) {
@@ -330,6 +330,13 @@ DrawnSizes draw_sizes(std::size_t count, double phi_target, const std::vector<Si
     drawn.diameters.reserve(count);
     drawn.species.reserve(count);
     const bool blend = modes.size() > 1;
+    if (order == DropOrder::Stratified) {
+        for (const std::size_t i : stratified_sequence(counts)) {
+            drawn.diameters.push_back(modes[i].relative_diameter * scale);
+            drawn.species.push_back(blend ? static_cast<int>(i) + 1 : 0);
+        }
+        return drawn;
+    }
     for (std::size_t i = 0; i < modes.size(); ++i) {
         drawn.diameters.insert(drawn.diameters.end(), counts[i],
                                modes[i].relative_diameter * scale);

@@ -81,7 +81,8 @@ def _given(options):
 
 
 def pack(count, arrangement, seed=None, *, phi_target=None, size_modes=None,
-         size_distribution=None, fraction_basis=None, sides=None, circle_factor=None, sweep_positions=None, sweep_stages=None,
+         size_distribution=None, fraction_basis=None, drop_order=None, sides=None,
+         circle_factor=None, sweep_positions=None, sweep_stages=None,
          lower_neighbours=None, gap=None, fall=None, fall_step=None, contact=None,
          momentum=None, walls=None, stall_moves=None, max_moves=None, relax=None,
          relax_stiffness=None, relax_stiffness_factor=None, relax_stages=None,
@@ -101,6 +102,8 @@ def pack(count, arrangement, seed=None, *, phi_target=None, size_modes=None,
     - size_distribution: a CSV file (header diameter,fraction[,density], one row per
       species) or 'lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]]' (not with size_modes)
     - fraction_basis: what the fractions mean: 'number', 'volume' or 'mass'
+    - drop_order: a blend's drop order: 'stratified' (the default: each species at its
+      share in every run of drops) or 'shuffled'
     - sides: 'walls' (the thesis' container) or 'periodic' (x and z periodic, the floor
       kept)
     - circle_factor, sweep_positions, sweep_stages ('8,120,720' or a list), lower_neighbours,
@@ -120,7 +123,8 @@ def pack(count, arrangement, seed=None, *, phi_target=None, size_modes=None,
     """
     return _sgmp.pack(count, arrangement, seed, progress, **_given(dict(
         phi_target=phi_target, size_modes=size_modes, size_distribution=size_distribution,
-        fraction_basis=fraction_basis, sides=sides, circle_factor=circle_factor,
+        fraction_basis=fraction_basis, drop_order=drop_order, sides=sides,
+        circle_factor=circle_factor,
         sweep_positions=sweep_positions,
         sweep_stages=sweep_stages, lower_neighbours=lower_neighbours, gap=gap, fall=fall,
         fall_step=fall_step, contact=contact, momentum=momentum, walls=walls,
@@ -133,12 +137,12 @@ def pack(count, arrangement, seed=None, *, phi_target=None, size_modes=None,
 
 
 def arrange(count, arrangement, seed=None, *, phi_target=None, size_modes=None,
-            size_distribution=None, fraction_basis=None, sides=None):
+            size_distribution=None, fraction_basis=None, drop_order=None, sides=None):
     """The starting arrangement itself (as `sgmp arrange`): `count` spheres of
     `arrangement` before the protocol; options as sgmp.pack."""
     return _sgmp.arrange(count, arrangement, seed, **_given(dict(
         phi_target=phi_target, size_modes=size_modes, size_distribution=size_distribution,
-        fraction_basis=fraction_basis, sides=sides)))
+        fraction_basis=fraction_basis, drop_order=drop_order, sides=sides)))
 
 
 def _options_of_the_extension() -> Optional[list]:

@@ -39,6 +39,9 @@ struct PackRequest {
     FractionBasis fraction_basis = FractionBasis::Number;
     /// Where the modes came from (a size-distribution file's name), for the header only.
     std::string size_distribution;
+    /// The order a blend's particles drop in (drop_order.hpp): stratified, so every height
+    /// of the deposit gets the blend's composition.
+    DropOrder drop_order = DropOrder::Stratified;
     /// Relaxation after deposition (relax.hpp); none by default.
     RelaxParams relax;
     /// The container's lateral sides (sides.hpp): the thesis' walls by default.

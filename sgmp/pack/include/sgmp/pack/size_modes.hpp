@@ -16,6 +16,7 @@
 #include <string_view>
 #include <vector>
 
+#include "sgmp/pack/drop_order.hpp"
 #include "sgmp/pack/name_table.hpp"
 #include "sgmp/pack/random.hpp"
 
@@ -87,11 +88,11 @@ struct DrawnSizes {
     std::vector<int> species;  ///< mode index + 1; all 0 for a single mode
 };
 
-/// Diameters of the N particles in drop order: mode_counts of each mode, order shuffled
-/// (Fisher–Yates with `rng`). A monodisperse list draws nothing from `rng`. `modes` hold
-/// number fractions.
+/// Diameters of the N particles in drop order: mode_counts of each mode, in `order`
+/// (drop_order.hpp; shuffled by Fisher–Yates with `rng`, stratified without it). A
+/// monodisperse list draws nothing from `rng`. `modes` hold number fractions.
 DrawnSizes draw_sizes(std::size_t count, double phi_target, const std::vector<SizeMode>& modes,
-                      Random& rng);
+                      Random& rng, DropOrder order = DropOrder::Shuffled);
 
 /// The diameters of draw_sizes alone.
 std::vector<double> draw_diameters(std::size_t count, double phi_target,

@@ -9,6 +9,7 @@
 #include "sgmp/report/crossval_render.hpp"
 #include "sgmp/report/manifest.hpp"
 #include "sgmp/report/report_render.hpp"
+#include "sgmp/report/species_matrix.hpp"
 #include "sgmp/report/thesis_table.hpp"
 #include "test_support.hpp"
 
@@ -358,4 +359,44 @@ BOOST_AUTO_TEST_CASE(the_terminal_headline_fits_120_columns) {
     for (const auto& reference : cv.references) {
         BOOST_TEST(text.find("] " + reference) != std::string::npos, reference);
     }
+}
+
+BOOST_AUTO_TEST_CASE(the_species_matrix_marks_each_species_row_and_counts_agreement) {
+    // Hand-built: one mode against two classes at one count; the first comparison holds two
+    // per-species rows (agree, differ) beside a whole-pack row, the second one of them
+    // (inconclusive). Packs of equal spheres (no species rows) get no section.
+    const auto row = [](const std::string& name, Verdict verdict) {
+        MetricRow m;
+        m.name = name;
+        m.label = name;
+        m.unit = "ratio";
+        m.verdict = verdict;
+        return m;
+    };
+    CrossValidation cv;
+    cv.candidates = {"loose-random"};
+    cv.references = {"DEM a", "DEM b"};
+    cv.counts = {1002};
+    HeadlineRow headline;
+    headline.group = "loose-random";
+    headline.count = 1002;
+    headline.against.resize(2);
+    headline.against[0].rows = {row("phi", Verdict::Differ),
+                                row("species_1:voronoi_phi_mean", Verdict::Agree),
+                                row("mixing_deviation_max", Verdict::Differ)};
+    headline.against[1].rows = {row("phi", Verdict::Agree),
+                                row("species_1:voronoi_phi_mean", Verdict::Inconclusive)};
+    cv.rows = {headline};
+    std::ostringstream md;
+    species_matrix_markdown(md, cv);
+    const std::string text = md.str();
+    BOOST_TEST(text.find("## Per-species verdict matrix") != std::string::npos);
+    BOOST_TEST(text.find("| loose-random | DEM a | ✓ | ✗ | 1 of 2 |") != std::string::npos);
+    BOOST_TEST(text.find("| loose-random | DEM b | ◌ | · | 0 of 1 |") != std::string::npos);
+    BOOST_TEST(text.find("phi |") == std::string::npos);  // whole-pack rows stay out
+    cv.rows[0].against[0].rows = {row("phi", Verdict::Differ)};
+    cv.rows[0].against[1].rows = {row("phi", Verdict::Agree)};
+    std::ostringstream none;
+    species_matrix_markdown(none, cv);
+    BOOST_TEST(none.str().empty());
 }

@@ -35,6 +35,8 @@ scripts/run --blends bimodal --counts 1002 --seeds 1 --modes "loose-random loose
     --frictions 0.5 --out "$out" --build-dir "$build" --no-pictures >"$scratch/log" 2>&1 \
     || { cat "$scratch/log" >&2; fail "scripts/run --blends failed"; }
 [[ -f "$out/blends/bimodal/report/report.md" ]] || fail "no blend report"
+grep -q '^## Per-species verdict matrix' "$out/blends/bimodal/report/report.md" \
+    || fail "no per-species verdict matrix in the blend report"
 blend_manifest="$out/blends/bimodal/manifest.csv"
 [[ $(grep -c '^candidate,loose-random,1002,1,' "$blend_manifest") == 1 ]] || fail "no blend candidate"
 [[ $(grep -c '^candidate,loose-random+relax,1002,1,' "$blend_manifest") == 1 ]] || fail "no relaxed blend candidate"

@@ -8,6 +8,7 @@
 #include "sgmp/metrics/csv_text.hpp"
 #include "sgmp/metrics/metrics_output.hpp"
 #include "sgmp/report/report_render.hpp"
+#include "sgmp/report/species_matrix.hpp"
 
 namespace sgmp::report {
 
@@ -491,6 +492,7 @@ std::string render_crossval_markdown(const CrossValidation& cv) {
     std::ostringstream md;
     stand_in_markdown(md, cv);
     matrix_markdown(md, cv);
+    species_matrix_markdown(md, cv);
     headline_markdown(md, cv);
     thesis_markdown(md, cv);
     return md.str();

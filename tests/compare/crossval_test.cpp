@@ -5,6 +5,7 @@
 #include "sgmp/metrics/metrics_output.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/report/baseline.hpp"
+#include "sgmp/report/contact_windows.hpp"
 #include "sgmp/report/crossval.hpp"
 #include "sgmp/report/crossval_render.hpp"
 #include "sgmp/report/manifest.hpp"
@@ -399,4 +400,25 @@ BOOST_AUTO_TEST_CASE(the_species_matrix_marks_each_species_row_and_counts_agreem
     std::ostringstream none;
     species_matrix_markdown(none, cv);
     BOOST_TEST(none.str().empty());
+}
+
+BOOST_AUTO_TEST_CASE(contact_windows_cover_every_pair_type_of_a_blend_and_nothing_else) {
+    // Bimodal 1 : 0.5 at 1 : 8 in number: species diameters 1.8 and 0.9 number-mean d, so
+    // pair types touch at 1.8, 1.35 and 0.9 d; windows [0.98, 1.1]·σ of each.
+    const auto ranges = contact_ranges({1.8, 0.9}, 0.9, 1.8);
+    BOOST_TEST(ranges.size() == 3U);
+    BOOST_TEST(!outside_contact_windows(1.34, 1.36, ranges));  // the 1 : 0.5 peak
+    BOOST_TEST(!outside_contact_windows(1.96, 1.98, ranges));  // 1.1·1.8 = 1.98 reached
+    BOOST_TEST(outside_contact_windows(1.99, 2.01, ranges));
+    BOOST_TEST(outside_contact_windows(1.50, 1.52, ranges));
+    BOOST_TEST(!outside_contact_windows(1.755, 1.775, ranges));  // 0.98·1.8 = 1.764
+    BOOST_TEST(outside_contact_windows(1.74, 1.76, ranges));
+    // Equal spheres: none, so their g(r) test is the one of [1.1, 5]·d alone.
+    BOOST_TEST(contact_ranges({}, 1.0, 1.0).empty());
+    BOOST_TEST(contact_ranges({1.0}, 1.0, 1.0).empty());
+    // Sizes without species: the whole span.
+    const auto span = contact_ranges({}, 0.5, 2.0);
+    BOOST_TEST(span.size() == 1U);
+    BOOST_TEST(!outside_contact_windows(1.0, 1.02, span));
+    BOOST_TEST(outside_contact_windows(2.2, 2.22, span));
 }

@@ -88,10 +88,36 @@ std::vector<double> mean_values(const MetricRule& rule,
     return mean_curve(curves);
 }
 
+/// The contact ranges of every pack of a comparison (contact_windows.hpp).
+std::vector<ContactRange> ranges_of(const std::vector<const PackSummary*>& packs) {
+    std::vector<ContactRange> ranges;
+    for (const auto* p : packs) {
+        ranges.insert(ranges.end(), p->contact_ranges.begin(), p->contact_ranges.end());
+    }
+    return ranges;
+}
+
+/// Whether g(r)'s bin k is judged: r in [1.1·d, 5·d] and outside every contact window.
+bool judged_bin(const PackSummary& axis, std::size_t k, const std::vector<ContactRange>& ranges) {
+    const double r = axis.gr_r[k];
+    const double half = 0.5 * axis.gr_bin_width;
+    return r >= kGrCompareFrom && r <= kGrCompareTo &&
+           outside_contact_windows(r - half, r + half, ranges);
+}
+
 double distance_between(const MetricRule& rule, const PackSummary& axis, std::vector<double> a,
-                        std::vector<double> b) {
+                        std::vector<double> b, const std::vector<ContactRange>& ranges) {
     if (rule.name == "g_r") {
-        return l2_distance(axis.gr_r, a, b, axis.gr_bin_width, kGrCompareFrom, kGrCompareTo);
+        if (a.size() != axis.gr_r.size() || b.size() != axis.gr_r.size()) {
+            throw std::invalid_argument("curves to compare have different lengths");
+        }
+        double sum = 0.0;
+        for (std::size_t k = 0; k < a.size(); ++k) {
+            if (judged_bin(axis, k, ranges)) {
+                sum += (a[k] - b[k]) * (a[k] - b[k]) * axis.gr_bin_width;
+            }
+        }
+        return std::sqrt(sum);
     }
     const std::size_t n = std::max(a.size(), b.size());
     a.resize(n, 0.0);
@@ -103,13 +129,14 @@ double distance_between(const MetricRule& rule, const PackSummary& axis, std::ve
     return 0.5 * sum;
 }
 
-double mean_replicate_distance(const MetricRule& rule,
-                               const std::vector<const PackSummary*>& packs) {
+double mean_replicate_distance(const MetricRule& rule, const std::vector<const PackSummary*>& packs,
+                               const std::vector<ContactRange>& ranges) {
     double sum = 0.0;
     std::size_t pairs = 0;
     for (std::size_t i = 0; i < packs.size(); ++i) {
         for (std::size_t j = i + 1; j < packs.size(); ++j) {
-            sum += curve_distance(rule, *packs[i], *packs[j]);
+            sum += distance_between(rule, *packs[i], curve_values(rule, *packs[i]),
+                                    curve_values(rule, *packs[j]), ranges);
             ++pairs;
         }
     }
@@ -179,9 +206,11 @@ MetricRow judge_scalar(const MetricRule& rule, const std::vector<const PackSumma
     return row;
 }
 
-/// The curves of `packs` on the judged bins (g(r): r in [1.1·d, 5·d]), padded to one length.
+/// The curves of `packs` on the judged bins (g(r): r in [1.1·d, 5·d] outside the contact
+/// windows), padded to one length.
 std::vector<std::vector<double>> judged_bins(const MetricRule& rule,
-                                             const std::vector<const PackSummary*>& packs) {
+                                             const std::vector<const PackSummary*>& packs,
+                                             const std::vector<ContactRange>& ranges) {
     std::vector<std::vector<double>> curves;
     for (const auto* p : packs) {
         const auto values = curve_values(rule, *p);
@@ -191,7 +220,7 @@ std::vector<std::vector<double>> judged_bins(const MetricRule& rule,
         }
         std::vector<double> kept;
         for (std::size_t k = 0; k < values.size(); ++k) {
-            if (p->gr_r[k] >= kGrCompareFrom && p->gr_r[k] <= kGrCompareTo) {
+            if (judged_bin(*p, k, ranges)) {
                 kept.push_back(values[k]);
             }
         }
@@ -203,15 +232,19 @@ std::vector<std::vector<double>> judged_bins(const MetricRule& rule,
 MetricRow judge_curve(const MetricRule& rule, const std::vector<const PackSummary*>& a,
                       const std::vector<const PackSummary*>& b) {
     MetricRow row;
-    row.difference = distance_between(rule, *b.front(), mean_values(rule, a), mean_values(rule, b));
-    row.seed_spread = b.size() >= 2 ? mean_replicate_distance(rule, b) : 0.0;
+    auto both = a;
+    both.insert(both.end(), b.begin(), b.end());
+    const std::vector<ContactRange> ranges = ranges_of(both);
+    row.difference =
+        distance_between(rule, *b.front(), mean_values(rule, a), mean_values(rule, b), ranges);
+    row.seed_spread = b.size() >= 2 ? mean_replicate_distance(rule, b, ranges) : 0.0;
     if (b.size() < 2) {  // no reference scatter: the noise is unknown
         take(row, test_scalar({row.difference, 0.0, 1}, {0.0, 0.0, 1}, rule.margin));
         row.ci_low = 0.0;
         return row;
     }
-    const auto bins_a = judged_bins(rule, a);
-    const auto bins_b = judged_bins(rule, b);
+    const auto bins_a = judged_bins(rule, a, ranges);
+    const auto bins_b = judged_bins(rule, b, ranges);
     take(row, rule.name == "g_r"
                   ? test_l2_curves(bins_a, bins_b, b.front()->gr_bin_width, rule.margin)
                   : test_total_variation(row.difference, noise_variance(bins_a, bins_b),
@@ -399,7 +432,8 @@ std::size_t Comparison::count_of(Verdict verdict) const {
 }
 
 double curve_distance(const MetricRule& rule, const PackSummary& a, const PackSummary& b) {
-    return distance_between(rule, a, curve_values(rule, a), curve_values(rule, b));
+    return distance_between(rule, a, curve_values(rule, a), curve_values(rule, b),
+                            ranges_of({&a, &b}));
 }
 
 /// Whether every pack of `packs` holds `rule`'s metric (precomputed packs may not).
@@ -444,6 +478,14 @@ PackSummary summarise(const std::string& source, const Pack& pack, const Measure
     s.provenance = pack.metadata.entries();
     s.count = m.count;
     s.diameter = m.mean_diameter;
+    std::vector<double> species_diameters;
+    if (m.species) {
+        for (const auto& one : m.species->species) {
+            species_diameters.push_back(one.diameter_over_d);
+        }
+    }
+    s.contact_ranges = contact_ranges(species_diameters, 2.0 * m.min_radius / m.mean_diameter,
+                                      2.0 * m.max_radius / m.mean_diameter);
     const auto& c = m.local.coordination;
     const auto& names = coordination_tolerance_names();
     for (const auto& rule : metric_rules()) {

@@ -167,6 +167,21 @@ void check_schema_version(const nlohmann::ordered_json& j, const std::string& so
     }
 }
 
+/// The contact ranges (contact_windows.hpp) of a metrics.json: its species' diameters
+/// over d, else its radius span.
+std::vector<ContactRange> contact_ranges_of(const nlohmann::ordered_json& j, double diameter,
+                                            const std::string& source) {
+    std::vector<double> species_diameters;
+    if (j.contains("species") && j.at("species").is_object()) {
+        for (const auto& one : j.at("species").value("species", nlohmann::ordered_json::array())) {
+            species_diameters.push_back(number_at(one, "diameter_over_d", source));
+        }
+    }
+    const double smallest = j.contains("radius_min") ? number_at(j, "radius_min", source) : 0.0;
+    const double largest = j.contains("radius_max") ? number_at(j, "radius_max", source) : 0.0;
+    return contact_ranges(species_diameters, 2.0 * smallest / diameter, 2.0 * largest / diameter);
+}
+
 }  // namespace
 
 bool is_metrics_json(std::string_view path) {
@@ -199,6 +214,7 @@ PackSummary summary_from_measure(const std::string& source, const nlohmann::orde
     }
     s.count = count_of(number_at(j, "count", source), source, 0);
     s.diameter = number_at(j, "diameter", source);
+    s.contact_ranges = contact_ranges_of(j, s.diameter, source);
     for (const auto& rule : metric_rules()) {
         if (rule.kind == MetricKind::Scalar) {
             s.scalars.push_back(j.contains(rule.name) ? number_at(j, rule.name, source) : 0.0);

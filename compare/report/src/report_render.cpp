@@ -161,7 +161,9 @@ std::vector<std::string> rule_statements() {
         "|difference| / m. mdd: the true difference called differ with probability 80 %, "
         "m + (t_0.95 + t_0.80) SE.",
         "Curves: g(r) by the L2 distance sqrt(sum (g_a - g_b)^2 dr) of the mean curves over bin "
-        "centres in [1.1 d, 5 d] (the contact peak is judged by Z and P(Z)); P(Z) by the "
+        "centres in [1.1 d, 5 d] (the contact peak is judged by Z and P(Z)); for blends "
+        "also outside each pair type's contact peak, the bins meeting [0.98, 1.1] x "
+        "(D_I + D_J)/2 (each species' Z judges contact there); P(Z) by the "
         "total-variation distance (1/2) sum |p_a - p_b|. The interval of the true distance "
         "is distance -/+ q, q the 95 % quantile of the norm of the noise of the mean "
         "difference (per-bin variances over packs; L2: scaled chi-square, Satterthwaite; TV: "

@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "sgmp/metrics/measure.hpp"
+#include "sgmp/report/contact_windows.hpp"
 
 namespace sgmp::report {
 
@@ -94,6 +95,8 @@ struct PackSummary {
     /// A blend's per-species values by name (species_rows.hpp), e.g.
     /// "species_2:z_mean_tol_1e-3"; empty for equal spheres.
     std::vector<std::pair<std::string, double>> species_scalars;
+    /// Where its g(r) has contact peaks (contact_windows.hpp): none for equal spheres.
+    std::vector<ContactRange> contact_ranges;
 
     /// The scalar metric `name`: a scalar rule's, else a per-species value (NaN when this
     /// pack lacks it); throws std::logic_error for any other name.

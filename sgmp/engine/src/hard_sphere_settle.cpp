@@ -387,7 +387,18 @@ SettleStats settle_hard_spheres(std::vector<Particle>& particles, const Containe
     const std::vector<Ball> start = balls;
     const std::size_t columns = columns_per_sphere(options);
     const double penalty = options.friction ? kNeutralPenalty : 0.0;
-    double trust = options.trust_start;
+    // With periodic sides a pair's rows come from its nearest image alone, so no other image
+    // may come within a step's reach 2·r_max + 2√3·s: s stays below (period/2 − 2·r_max)/(2√3).
+    double trust_max = options.trust_max;
+    if (box.periodic) {
+        double r_max = 0.0;
+        for (const Ball& b : balls) {
+            r_max = std::max(r_max, b.r);
+        }
+        const double period = std::min(box.x_max - box.x_min, box.z_max - box.z_min);
+        trust_max = std::min(trust_max, (0.5 * period - 2.0 * r_max) / (2.0 * std::sqrt(3.0)));
+    }
+    double trust = std::min(options.trust_start, trust_max);
     int steady = 0;  // steps in a row at this trust region (kSteadySteps)
     NeighbourList list;
     Basis basis;
@@ -444,13 +455,13 @@ SettleStats settle_hard_spheres(std::vector<Particle>& particles, const Containe
         if (still) {
             // No move lowers the energy by more than it costs: the end.
         } else if (static_cast<double>(falling) > kSlidingShare * static_cast<double>(n)) {
-            trust = std::min(2.0 * trust, options.trust_max);
+            trust = std::min(2.0 * trust, trust_max);
             steady = 0;
         } else if (drop < kStallRate * trust) {
             trust /= 4.0;
             steady = 0;
         } else if (++steady >= kSteadySteps) {
-            trust = std::min(2.0 * trust, options.trust_max);
+            trust = std::min(2.0 * trust, trust_max);
             steady = 0;
         }
         if (options.progress) {

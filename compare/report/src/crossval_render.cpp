@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "matrix_table.hpp"
 #include "sgmp/metrics/csv_text.hpp"
 #include "sgmp/metrics/metrics_output.hpp"
 #include "sgmp/report/report_render.hpp"
@@ -269,21 +270,13 @@ void matrix_markdown(std::ostringstream& md, const CrossValidation& cv) {
           "control volume; Z at gap tolerance δ; the split ratio g(√3·d)/g(2·d); the Voronoi "
           "local φ, mean and sd; Q6 global and local; g(r) beyond contact; P(Z) at δ; and how "
           "many of the judged metrics agree. Rules at the end of the page.\n\n";
-    md << "| SGMP mode | DEM class |";
+    std::vector<std::string> labels;
     for (const auto* rule : judged) {
-        md << " " << rule->short_label << " |";
+        labels.emplace_back(rule->short_label);
     }
-    md << " agree |\n| --- | --- |";
-    for (std::size_t i = 0; i <= judged.size(); ++i) {
-        md << " --- |";
-    }
-    md << "\n";
+    detail::matrix_header(md, labels);
     for (const std::size_t n : cv.counts) {
-        md << "| **N = " << n << "** | |";
-        for (std::size_t i = 0; i <= judged.size(); ++i) {
-            md << " |";
-        }
-        md << "\n";
+        detail::count_header_row(md, n, judged.size());
         for (const auto& candidate : cv.candidates) {
             for (std::size_t r = 0; r < cv.references.size(); ++r) {
                 if (!compared_at(cv, candidate, r, n)) {
@@ -296,10 +289,7 @@ void matrix_markdown(std::ostringstream& md, const CrossValidation& cv) {
                     at.add(v);
                     md << " " << verdict_mark(v) << " |";
                 }
-                md << " "
-                   << (at.judged() ? std::to_string(at.agree) + " of " + std::to_string(at.judged())
-                                   : std::string("·"))
-                   << " |\n";
+                md << " " << detail::agree_cell(at.agree, at.judged()) << " |\n";
             }
         }
     }

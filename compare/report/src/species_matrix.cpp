@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "matrix_table.hpp"
 #include "sgmp/report/crossval_render.hpp"
 #include "sgmp/report/species_rows.hpp"
 
@@ -49,21 +50,14 @@ void species_matrix_markdown(std::ostringstream& md, const CrossValidation& cv) 
     for (std::size_t c = 0; c < columns.size(); ++c) {
         md << "- " << c + 1 << ": " << columns[c]->label << " (" << columns[c]->unit << ")\n";
     }
-    md << "\n| SGMP mode | DEM class |";
+    std::vector<std::string> numbers;
     for (std::size_t c = 0; c < columns.size(); ++c) {
-        md << " " << c + 1 << " |";
-    }
-    md << " agree |\n| --- | --- |";
-    for (std::size_t c = 0; c <= columns.size(); ++c) {
-        md << " --- |";
+        numbers.push_back(std::to_string(c + 1));
     }
     md << "\n";
+    detail::matrix_header(md, numbers);
     for (const std::size_t n : cv.counts) {
-        md << "| **N = " << n << "** | |";
-        for (std::size_t c = 0; c <= columns.size(); ++c) {
-            md << " |";
-        }
-        md << "\n";
+        detail::count_header_row(md, n, columns.size());
         for (const HeadlineRow& row : cv.rows) {
             if (row.count != n) {
                 continue;
@@ -83,10 +77,7 @@ void species_matrix_markdown(std::ostringstream& md, const CrossValidation& cv) 
                     judged += v == Verdict::Info ? 0 : 1;
                     md << " " << verdict_mark(v) << " |";
                 }
-                md << " "
-                   << (judged > 0 ? std::to_string(agree) + " of " + std::to_string(judged)
-                                  : std::string("·"))
-                   << " |\n";
+                md << " " << detail::agree_cell(agree, judged) << " |\n";
             }
         }
     }

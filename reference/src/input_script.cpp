@@ -46,10 +46,12 @@ std::string fill_template(const std::string& text,
     }
 }
 
-double domain_top(double start_top, double diameter) {
-    // Spheres thrown up in the first collisions rarely rise more than a few diameters;
-    // a sphere leaving the box would stop the run ("lost atoms"), never pass silently.
-    return start_top + 0.25 * (start_top + 0.625) + 4.0 * diameter;
+double domain_top(double start_top, double diameter, bool blend) {
+    // Equal spheres thrown up in the first collisions rarely rise more than a few
+    // diameters; a sphere leaving the box stops the run ("lost atoms"), never passes
+    // silently.
+    const double headroom = blend ? 1.0 : 0.25;
+    return start_top + headroom * (start_top + 0.625) + 4.0 * diameter;
 }
 
 std::string processor_grid(const PourParams& p) {
@@ -167,7 +169,7 @@ std::string pour_script(const PourParams& p, double start_top) {
         {"max_time", format_number(p.max_time)},
         {"cloud_fraction", format_number(p.cloud_fraction)},
         {"start_top", format_number(start_top)},
-        {"domain_top", format_number(domain_top(start_top, d))},
+        {"domain_top", format_number(domain_top(start_top, d, p.is_blend()))},
         {"processor_grid", processor_grid(p)},
         {"seed_template", std::to_string(seeds.particle_template)},
         {"seed_distribution", std::to_string(seeds.distribution)},

@@ -447,7 +447,7 @@ PourResult pour(const PourRequest& request, const PourObserver& observer) {
     write_text(work.path() / "in.pour", pour_script(p, start_top));
     if (request.start) {
         write_text(work.path() / "start.data",
-                   start_data(p, *start, domain_top(start_top, p.diameter())));
+                   start_data(p, *start, domain_top(start_top, p.diameter(), p.is_blend())));
     }
 
     RunWatch watch;

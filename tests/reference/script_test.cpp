@@ -217,6 +217,23 @@ BOOST_AUTO_TEST_CASE(periodic_sides_have_no_side_walls) {
     BOOST_TEST(walls.find("xplane 0.625") != std::string::npos);
 }
 
+BOOST_AUTO_TEST_CASE(a_blend_gets_a_full_drop_height_of_headroom) {
+    // Equal spheres: start_top + (start_top + 0.625) / 4 + 4 d, as the stored main set was
+    // poured; a blend: start_top + (start_top + 0.625) + 4 d, since fines squeezed out
+    // between coarse spheres fly higher than they fell.
+    PourParams equal;
+    equal.count = 1002;
+    const double top = equal.cloud_top();
+    BOOST_TEST(number(script_variable(pour_script(equal, top), "domain_top")) ==
+                   top + 0.25 * (top + 0.625) + 4.0 * equal.diameter(),
+               boost::test_tools::tolerance(1e-14));
+    const PourParams blend = bimodal(1002);
+    const double blend_top = blend.cloud_top();
+    BOOST_TEST(number(script_variable(pour_script(blend, blend_top), "domain_top")) ==
+                   2.0 * blend_top + 0.625 + 4.0 * blend.diameter(),
+               boost::test_tools::tolerance(1e-14));
+}
+
 BOOST_AUTO_TEST_CASE(equal_spheres_keep_one_insertion) {
     PourParams p;
     p.count = 150;

@@ -169,6 +169,12 @@ BOOST_AUTO_TEST_CASE(headline_carries_verdicts_and_the_thesis_beside_us) {
                md);
     BOOST_TEST(md.find("(17 of 19 tests differ family-wise); stands in at 0 of 1 counts") !=
                std::string::npos);
+    BOOST_TEST(md.find("; 500× faster than the DEM pour at N = 150.") != std::string::npos);
+    CrossValidation slow = cv;  // a mode slower than the pour is said to be slower
+    BOOST_TEST_REQUIRE(!slow.stand_ins.empty());
+    slow.stand_ins[0].speedup = 0.25;
+    BOOST_TEST(render_crossval_markdown(slow).find("; 4× slower than the DEM pour at N = 150.") !=
+               std::string::npos);
     BOOST_TEST(md.find("| single-column | DEM mu=0.5 | ✓ | ✗ |") != std::string::npos);
     BOOST_TEST(md.find("| 150 | single-column | 0.003 | 0.6000 | 5.00 | 5.00 | 5.000 | ✓✗✗✗✗✓ | "
                        "0.8 | 500× |") != std::string::npos);

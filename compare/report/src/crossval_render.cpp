@@ -42,6 +42,14 @@ std::string speed(const std::optional<double>& factor) {
     return *factor >= 100.0 ? fixed(*factor, 0) + "×" : sig(*factor) + "×";
 }
 
+/// "k× faster than" or, below 1, "1/k× slower than": a reader compares times that way.
+std::string pace_against_pour(const std::optional<double>& speedup) {
+    if (speedup && *speedup > 0.0 && *speedup < 1.0) {
+        return speed(1.0 / *speedup) + " slower than";
+    }
+    return speed(speedup) + " faster than";
+}
+
 /// One line of a stand-in record: the answer and its strength.
 std::string stand_in_sentence(const StandIn& s) {
     const std::size_t judged = s.agree + s.differ + s.inconclusive;
@@ -148,8 +156,8 @@ void stand_in_markdown(std::ostringstream& md, const CrossValidation& cv) {
             md << "\n  - **" << s->candidate << "**" << (cv.tuned(s->candidate) ? " (tuned)" : "")
                << " " << stand_in_sentence(*s);
             if (s->speedup_count > 0) {
-                md << "; " << speed(s->speedup)
-                   << " faster than the DEM pour at N = " << s->speedup_count;
+                md << "; " << pace_against_pour(s->speedup)
+                   << " the DEM pour at N = " << s->speedup_count;
             }
             md << ".";
         }

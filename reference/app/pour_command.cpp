@@ -63,7 +63,7 @@ void read_size_distribution(const PourOptions& o, PourParams& p) {
     }
     p.size_modes = cli::read_size_distribution_file(path);
     p.size_distribution = path;
-    cli::warn_unnormalised("sgmp-reference", path, p.size_modes);
+    cli::warn_unnormalised("sgmp-reference", "--size-distribution " + path, p.size_modes);
 }
 
 }  // namespace

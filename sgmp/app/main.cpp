@@ -32,6 +32,7 @@
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/pack/pack_overlaps.hpp"
 #include "sgmp/pack/parameter_error.hpp"
+#include "sgmp/pack/size_modes.hpp"
 #include "sgmp/pack/sphere_box_volume.hpp"
 #include "sgmp/pack/version.hpp"
 
@@ -118,8 +119,13 @@ PackRequest to_request(const Options& o) {
         read_size_distribution(o, request);
     }
     validate(request);
-    if (!request.size_distribution.empty()) {  // fractions not summing to 1: normalised
-        cli::warn_unnormalised("sgmp", request.size_distribution, request.size_modes);
+    // Fractions not summing to 1 are normalised, and the user is told.
+    if (!request.size_distribution.empty()) {
+        cli::warn_unnormalised("sgmp", "--size-distribution " + request.size_distribution,
+                               request.size_modes);
+    } else if (o.size_modes_option != nullptr && o.size_modes_option->count() > 0) {
+        cli::warn_unnormalised("sgmp", "--size-modes " + size_modes_to_string(request.size_modes),
+                               request.size_modes);
     }
     return request;
 }

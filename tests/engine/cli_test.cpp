@@ -37,6 +37,17 @@ void expect_refused(const Scratch& s, const std::string& args, const std::string
     BOOST_TEST(!fs::exists(s.path("p.xyz")));
 }
 
+/// A bad input file: one line naming file:line and the rule, exit 1, no pack.
+void expect_bad_file(const Scratch& s, const std::string& args, const std::string& expected) {
+    const Run r =
+        s.run("pack --arrangement small-dense --seed 1 --out '" + s.path("p.xyz") + "' " + args);
+    BOOST_TEST_INFO("args: " << args << "; stderr: " << r.err);
+    BOOST_TEST(r.status == 1);
+    BOOST_TEST(r.err.find("sgmp: " + expected) == 0u);
+    BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    BOOST_TEST(!fs::exists(s.path("p.xyz")));
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(cli)
@@ -93,14 +104,21 @@ BOOST_AUTO_TEST_CASE(size_distribution_files_are_read_and_checked) {
     BOOST_TEST(ok.status == 0, ok.err);
     BOOST_TEST(ok.err.find("sgmp: warning: --size-distribution") == 0u);
     BOOST_TEST(ok.err.find("fractions sum to 0.68; normalised to 1\n") != std::string::npos);
+    const Run modes = s.run("pack --arrangement loose-random --count 600 --out '" +
+                            s.path("m.xyz") + "' --size-modes 1:0.3,0.5:0.3");
+    BOOST_TEST(modes.status == 0, modes.err);
+    BOOST_TEST(modes.err.find("sgmp: warning: --size-modes 1:0.3,0.5:0.3: fractions sum to 0.6; "
+                              "normalised to 1\n") == 0u);
     const std::string pack = sgmp::testing::read_bytes(s.path("b.xyz"));
     BOOST_TEST(pack.find(":species_id:I:1 ") != std::string::npos);
     BOOST_TEST(pack.find(" fraction_basis=mass ") != std::string::npos);
     BOOST_TEST(pack.find(" species_mass_fractions=") != std::string::npos);
-    expect_refused(s, write("colour.csv", "diameter,fraction,colour\n1,1,2\n"),
-                   "--size-distribution " + s.path("colour.csv") + ":1: unknown column 'colour'");
-    expect_refused(s, write("neg.csv", "diameter,fraction\n1,-1\n1,2\n"),
-                   "--size-distribution " + s.path("neg.csv") + ":2: fraction -1");
+    expect_bad_file(s, write("colour.csv", "diameter,fraction,colour\n1,1,2\n"),
+                    "--size-distribution " + s.path("colour.csv") + ":1: unknown column 'colour'");
+    expect_bad_file(s, write("neg.csv", "diameter,fraction\n1,-1\n1,2\n"),
+                    "--size-distribution " + s.path("neg.csv") + ":2: fraction -1");
+    expect_refused(s, "--count 100 --size-distribution '" + s.path("missing.csv") + "'",
+                   "--size-distribution " + s.path("missing.csv") + ": must name a readable file");
     expect_refused(s, write("nod.csv", "diameter,fraction\n1,1\n0.5,1\n") + "--fraction-basis mass",
                    "--fraction-basis mass: needs a density for every species");
     expect_refused(s, blend + "--size-modes 1:1",

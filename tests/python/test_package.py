@@ -74,8 +74,13 @@ def test_unknown_and_bad_options_raise_one_line_value_errors():
 def test_size_distributions_from_a_file_or_lognormal(tmp_path):
     table = tmp_path / "blend.csv"
     table.write_text("diameter,fraction,density\n10,0.51,1.95\n5,0.17,1.95\n6,0.18,2.7\n")
-    p = sgmp.pack(2000, "loose-random", seed=1, size_distribution=str(table),
-                  fraction_basis="mass")
+    # Mass fractions 0.86 in all (the rest binder): normalised, with a UserWarning as the
+    # command line's warning line.
+    with pytest.warns(UserWarning, match=r"fractions sum to 0\.86\d*; normalised to 1$"):
+        p = sgmp.pack(2000, "loose-random", seed=1, size_distribution=str(table),
+                      fraction_basis="mass")
+    with pytest.warns(UserWarning, match="^size_modes = 1:0.3,0.5:0.3: fractions sum to 0.6"):
+        sgmp.pack(50, "loose-random", size_modes="1:0.3,0.5:0.3")
     assert p.header["size_distribution"] == str(table)
     assert len(p.header["species_counts"]) == 3 and set(np.unique(p.species)) == {1, 2, 3}
     q = sgmp.pack(400, "loose-random", seed=1, size_distribution="lognormal:200:0.3:4",

@@ -1,10 +1,10 @@
 #include "sgmp/cli/size_distribution_file.hpp"
 
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 
 #include "sgmp/cli/run_main.hpp"
 #include "sgmp/pack/input_error.hpp"
@@ -21,20 +21,16 @@ std::vector<SizeMode> read_size_distribution_file(const std::string& path) {
     text << in.rdbuf();
     try {
         return parse_size_distribution_csv(text.str(), path);
-    } catch (const InputError& e) {
-        throw UsageError(std::string("--size-distribution ") + e.what());
+    } catch (const InputError& e) {  // a bad input file: exit 1 (docs/command-line.md)
+        throw std::runtime_error(std::string("--size-distribution ") + e.what());
     }
 }
 
-void warn_unnormalised(const std::string& program, const std::string& path,
+void warn_unnormalised(const std::string& program, const std::string& option,
                        const std::vector<SizeMode>& modes) {
-    double total = 0.0;
-    for (const SizeMode& m : modes) {
-        total += m.fraction;
-    }
-    if (std::abs(total - 1.0) > 1e-9) {
-        std::cerr << program << ": warning: --size-distribution " << printable(path)
-                  << ": fractions sum to " << format_number(total) << "; normalised to 1\n";
+    if (const auto total = unnormalised_total(modes)) {
+        std::cerr << program << ": warning: " << printable(option) << ": fractions sum to "
+                  << format_number(*total) << "; normalised to 1\n";
     }
 }
 

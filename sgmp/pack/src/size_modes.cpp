@@ -283,6 +283,14 @@ bool is_monodisperse(const std::vector<SizeMode>& modes) {
     return modes.size() == 1 && modes.front().relative_diameter == 1.0;
 }
 
+std::optional<double> unnormalised_total(const std::vector<SizeMode>& modes) {
+    double total = 0.0;
+    for (const SizeMode& m : modes) {
+        total += m.fraction;
+    }
+    return std::abs(total - 1.0) > 1e-9 ? std::optional<double>(total) : std::nullopt;
+}
+
 double diameter_scale(std::size_t count, double phi_target, const std::vector<SizeMode>& modes) {
     double total = 0.0;
     double moment = 0.0;

@@ -18,6 +18,7 @@
 #include "bindings.hpp"
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/engine/pack_parameters.hpp"
+#include "sgmp/pack/metadata.hpp"
 #include "sgmp/pack/option_rules.hpp"
 #include "sgmp/pack/parameter_error.hpp"
 #include "sgmp/pack/size_modes.hpp"
@@ -145,6 +146,20 @@ PackRequest request_of(const py::handle& count, const py::handle& arrangement,
         }
     }
     engine::validate(request);  // ParameterError naming the keyword
+    // Fractions not summing to 1 are normalised, with a UserWarning as the command line's.
+    const char* given = options.contains("size_distribution") ? "size_distribution"
+                        : options.contains("size_modes")      ? "size_modes"
+                                                              : nullptr;
+    if (given != nullptr) {
+        if (const auto total = unnormalised_total(request.size_modes)) {
+            const std::string text =
+                std::string(given) + " = " + py::str(options[given]).cast<std::string>() +
+                ": fractions sum to " + format_number(*total) + "; normalised to 1";
+            if (PyErr_WarnEx(PyExc_UserWarning, text.c_str(), 1) != 0) {
+                throw py::error_already_set();  // warnings turned into errors
+            }
+        }
+    }
     return request;
 }
 

@@ -11,13 +11,16 @@
 
 namespace sgmp::cli {
 
-/// The modes of the CSV file at `path`. Throws UsageError ("--size-distribution PATH: …")
-/// for a file that cannot be read or does not parse.
+/// The modes of the CSV file at `path`. Throws UsageError ("--size-distribution PATH: …",
+/// exit 2) for a path that names no readable file, std::runtime_error
+/// ("--size-distribution PATH:LINE: …", exit 1: a bad input file) for one that does not
+/// parse.
 std::vector<SizeMode> read_size_distribution_file(const std::string& path);
 
-/// Prints "PROGRAM: warning: --size-distribution PATH: fractions sum to S; normalised to 1"
-/// to stderr when the fractions of `modes` do not sum to 1 (within 10⁻⁹).
-void warn_unnormalised(const std::string& program, const std::string& path,
+/// Prints "PROGRAM: warning: OPTION: fractions sum to S; normalised to 1" to stderr when
+/// the fractions of `modes` do not sum to 1 (unnormalised_total, size_modes.hpp); OPTION
+/// is the option as typed, e.g. "--size-distribution blend.csv".
+void warn_unnormalised(const std::string& program, const std::string& option,
                        const std::vector<SizeMode>& modes);
 
 }  // namespace sgmp::cli

@@ -75,6 +75,10 @@ std::vector<SizeMode> number_fractions(const std::vector<SizeMode>& modes, Fract
 /// True for the single mode of relative size 1.
 bool is_monodisperse(const std::vector<SizeMode>& modes);
 
+/// Σ f_i when it differs from 1 by more than 10⁻⁹ (the fractions are then normalised, and
+/// the front ends say so), nullopt otherwise.
+std::optional<double> unnormalised_total(const std::vector<SizeMode>& modes);
+
 /// The scale s: (N/3)·(π/6)·Σ f_i (a_i s)³ = φ* with fractions normalised.
 double diameter_scale(std::size_t count, double phi_target, const std::vector<SizeMode>& modes);
 

@@ -6,20 +6,37 @@
 
 namespace sgmp::app {
 
+namespace {
+
+/// The key with every '_' as '-': headers write snake_case, options kebab-case.
+std::string kebab(std::string name) {
+    std::replace(name.begin(), name.end(), '_', '-');
+    return name;
+}
+
+}  // namespace
+
 std::vector<std::string> config_arguments(std::istream& in, const std::string& command) {
+    const std::vector<CLI::ConfigItem> items = CLI::ConfigTOML().from_config(in);
+    // A blend's header records its distribution and the modes read from it: the
+    // distribution is the request, the modes its record.
+    const bool has_distribution = std::any_of(items.begin(), items.end(), [](const auto& item) {
+        return kebab(item.name) == "size-distribution";
+    });
     std::vector<std::string> injected;
-    for (const CLI::ConfigItem& item : CLI::ConfigTOML().from_config(in)) {
+    for (const CLI::ConfigItem& item : items) {
         if (item.name == "++" || item.name == "--") {
             continue;  // section markers
+        }
+        if (has_distribution && kebab(item.name) == "size-modes") {
+            continue;
         }
         if (!item.parents.empty() && item.parents != std::vector<std::string>{command}) {
             throw std::invalid_argument("key '" + item.fullname() + "' belongs to no option of '" +
                                         command + "'");
         }
         // Pack headers record parameters in snake_case: accept those names too.
-        std::string name = item.name;
-        std::replace(name.begin(), name.end(), '_', '-');
-        const std::string option = "--" + name;
+        const std::string option = "--" + kebab(item.name);
         if (item.inputs.size() == 1 && (item.inputs[0] == "true" || item.inputs[0] == "false")) {
             if (item.inputs[0] == "true") {
                 injected.push_back(option);  // a flag

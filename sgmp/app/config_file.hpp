@@ -2,7 +2,9 @@
 // `sgmp pack --config FILE`: the file's `key = value` lines (TOML/INI, keys named as the
 // long options — `phi-target` or, as pack headers write it, `phi_target` — optionally in
 // a [pack] / [arrange] section) become options placed before the command line's own, so
-// options typed on the command line win.
+// options typed on the command line win. With `size_distribution` present, a
+// `size_modes` key (a blend's header records both) is the distribution's record and is
+// left out.
 
 #include <istream>
 #include <string>

@@ -309,6 +309,27 @@ BOOST_AUTO_TEST_CASE(a_config_file_repeats_a_run_and_the_command_line_wins) {
     BOOST_TEST(e.metadata.get("phi_target").value_or("") == "0.6");
     BOOST_TEST(e.metadata.get("fall_step").value_or("") == "0.002");
     BOOST_TEST(e.metadata.get("sweep_stages").value_or("") == "8,120");
+    // A blend's header records its distribution file and the modes read from it; a
+    // config copied from it repeats the pack (the modes are the file's record).
+    std::ofstream(s.path("blend.csv")) << "diameter,fraction\n1,0.5\n0.5,0.5\n";
+    const Run f =
+        s.run("pack --count 300 --arrangement loose-random --seed 2 --out '" + s.path("f.xyz") +
+              "' --size-distribution '" + s.path("blend.csv") + "' --fraction-basis volume");
+    BOOST_TEST_REQUIRE(f.status == 0, f.err);
+    const auto first = sgmp::read_pack_file(s.path("f.xyz"));
+    std::ofstream(s.path("blend.toml"))
+        << "count = 300\narrangement = \"loose-random\"\nseed = 2\nsize_modes = \""
+        << first.metadata.get("size_modes").value_or("") << "\"\nsize_distribution = \""
+        << s.path("blend.csv") << "\"\nfraction_basis = \"volume\"\n";
+    const Run g =
+        s.run("pack --config '" + s.path("blend.toml") + "' --out '" + s.path("g.xyz") + "'");
+    BOOST_TEST_REQUIRE(g.status == 0, g.err);
+    const auto again = sgmp::read_pack_file(s.path("g.xyz"));
+    BOOST_TEST_REQUIRE(again.particles.size() == first.particles.size());
+    for (std::size_t i = 0; i < first.particles.size(); ++i) {
+        BOOST_TEST(again.particles[i].center.x() == first.particles[i].center.x());
+        BOOST_TEST(again.particles[i].radius == first.particles[i].radius);
+    }
 }
 
 BOOST_AUTO_TEST_CASE(arrange_writes_the_starting_positions) {

@@ -126,6 +126,34 @@ def test_periodic_phi_z_and_voronoi_volume_a_second_way(tmp_path, seed, count):
 
 
 @pytest.mark.cli
+def test_periodic_g_r_counts_every_image_within_its_range(tmp_path):
+    # N = 150: d = 0.29, so g(r)'s range of 5 d (1.44) exceeds the period 1.25 and a pair
+    # meets several images of the same partner, as in the infinite periodic pack. Brute
+    # force over every image shift up to 3 periods: the same pair count in every bin.
+    path = pack(tmp_path, "g", "--count", "150", "--seed", "3")
+    header, table = read_xyz(path)
+    x_min, x_max, z_min, z_max, _ = container_of(header)
+    centres, radii = table[:, 1:4], table[:, 4]
+    d = 2.0 * radii.mean()
+    measure(tmp_path, path, "m")
+    g = np.genfromtxt(tmp_path / "m" / "g.g_r.csv", comments="#", names=True, delimiter=",")
+    upper = g["r_hi_over_d"] * d
+    assert upper[-1] > (x_max - x_min) / 2.0
+    counts = np.zeros(len(g))
+    for i in np.flatnonzero(np.abs(centres[:, 1]) <= 0.5):  # the region's origins
+        for kx in range(-3, 4):
+            for kz in range(-3, 4):
+                shift = np.array([kx * (x_max - x_min), 0.0, kz * (z_max - z_min)])
+                dist = np.linalg.norm(centres - centres[i] + shift, axis=1)
+                if kx == 0 and kz == 0:
+                    dist[i] = np.inf  # not itself
+                dist = dist[dist < upper[-1]]
+                np.add.at(counts, np.searchsorted(upper, dist, side="right"), 1)
+    # Integer counts: equal exactly.
+    assert np.array_equal(counts, g["pairs"])
+
+
+@pytest.mark.cli
 def test_periodic_metrics_do_not_move_with_the_pack(tmp_path):
     path = pack(tmp_path, "p", "--count", "1500", "--seed", "3",
                 "--size-modes", "1:0.5,0.6:0.5")

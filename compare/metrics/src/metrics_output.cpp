@@ -185,7 +185,9 @@ Json metrics_json(const Measurement& m, const Json& prov) {
          "delta + 0.0857 S delta^2, null outside the formula's range (delta <= 0.4, "
          "-2 <= S <= 4)"},
         {"sides",
-         "walls, or periodic: x and z periodic (minimum-image pairs; g(r) shells and Voronoi "
+         "walls, or periodic: x and z periodic (pairs through every periodic image within "
+         "reach: the nearest one for contacts, and every image within g(r)'s range, as in "
+         "the infinite periodic pack, also beyond half the period; g(r) shells and Voronoi "
          "cells cut by the floor and the top alone; default region the whole cell across)"}};
     j["sides"] = m.container.periodic ? "periodic" : "walls";
     j["overlaps_detail"] = Json{{"floor_over_d", m.overlaps.floor},

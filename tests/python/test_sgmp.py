@@ -100,6 +100,34 @@ def test_measure_equals_sgmp_compare_measure(tmp_path):
     assert np.array_equal(m["p_z"][:, 1 + m["p_z_tolerances"].index("1e-3")], p_z["p_tol_1e3"])
     # P(Z) sums to 1 at every tolerance (each origin has one Z).
     assert np.allclose(m["p_z"][:, 1:].sum(axis=0), 1.0, rtol=0, atol=1e-12)
+    assert "g_r_partial" not in m and "phi_y_species" not in m  # one species
+
+
+@pytest.mark.cli
+def test_measure_of_a_blend_gives_the_partial_curves_of_sgmp_compare(tmp_path):
+    path = tmp_path / "b.xyz"
+    sgmp.write(sgmp.pack(count=800, arrangement="loose-random", seed=2, sides="periodic",
+                         size_modes="1:0.5,0.5:0.5", fraction_basis="volume"), path)
+    r = run(COMPARE, "measure", path, "--out", tmp_path / "m")
+    assert r.returncode == 0, r.stderr
+    expected = json.loads((tmp_path / "m" / "b.metrics.json").read_text())
+    g = np.genfromtxt(tmp_path / "m" / "b.g_r.csv", delimiter=",", comments="#", names=True)
+    m = sgmp.measure(sgmp.read(path))
+    pairs = {pair["column"]: pair for pair in expected["species"]["pairs"]}
+    assert sorted(m["g_r_partial"]) == sorted(pairs) == ["g_1_1", "g_1_2", "g_2_2"]
+    for name, curve in m["g_r_partial"].items():
+        assert np.array_equal(curve[:, 1], g[name])  # the CSV's column, exactly
+        # Centred on the pair type's own bins: the common centres plus its offset.
+        assert np.allclose(curve[:, 0], g["r_over_d"] + pairs[name]["bin_offset_over_d"],
+                           rtol=0, atol=1e-12)
+    phi_y = np.genfromtxt(tmp_path / "m" / "b.phi_y.csv", delimiter=",", comments="#",
+                          names=True)
+    assert sorted(m["phi_y_species"]) == ["phi_1", "phi_2"]
+    for name, profile in m["phi_y_species"].items():
+        assert np.array_equal(profile[:, 1], phi_y[name])
+    # The species' profiles add up to the pack's (to rounding of a two-term sum).
+    total = m["phi_y_species"]["phi_1"][:, 1] + m["phi_y_species"]["phi_2"][:, 1]
+    assert np.allclose(total, m["phi_y"][:, 1], rtol=1e-12, atol=1e-15)
 
 
 @pytest.mark.parametrize(
@@ -151,7 +179,8 @@ def test_read_write_round_trip(tmp_path):
         assert np.array_equal(q.radii, p.radii)
         assert np.array_equal(q.bins, p.bins) and np.array_equal(q.ids, p.ids)
         assert q.header == p.header
-    with pytest.raises(OSError, match="exists"):
+    # FileExistsError (an OSError), worded for Python: force=True, not --force.
+    with pytest.raises(FileExistsError, match="p.xyz: exists; pass force=True to replace it$"):
         sgmp.write(p, tmp_path / "p.xyz")
     sgmp.write(p, tmp_path / "p.xyz", force=True)
     # A pack made from arrays, written and read back.

@@ -149,7 +149,7 @@ std::string as_output(std::string message, const fs::path& temporary, const fs::
 }  // namespace
 
 FileExists::FileExists(const fs::path& path)
-    : std::runtime_error(path.string() + ": exists; pass --force to replace it") {}
+    : std::runtime_error(path.string() + ": exists; pass --force to replace it"), path_(path) {}
 
 std::size_t remove_stale_temporaries(const fs::path& directory) {
     std::size_t removed = 0;

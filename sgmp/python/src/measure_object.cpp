@@ -99,6 +99,26 @@ py::dict measure(const py::object& pack_object, const std::optional<std::vector<
         y_mid.push_back(0.5 * (m.phi_profile.y_lo[k] + m.phi_profile.y_hi[k]));
     }
     out["phi_y"] = table({&y_mid, &m.phi_profile.phi});
+    if (m.species) {  // a blend: g_r.csv's g_I_J and phi_y.csv's phi_I, on their own centres
+        py::dict partial;
+        for (const metrics::SpeciesPair& pair : m.species->pairs) {
+            std::vector<double> r(rdf.r_over_d.size());
+            for (std::size_t k = 0; k < r.size(); ++k) {
+                r[k] = rdf.r_over_d[k] + pair.bin_offset_over_d;
+            }
+            const std::string name = "g_" + std::to_string(pair.i) + "_" + std::to_string(pair.j);
+            partial[name.c_str()] = table({&r, &pair.g});
+        }
+        out["g_r_partial"] = partial;
+    }
+    if (!m.phi_profile_by_species.empty()) {
+        py::dict by_species;
+        for (const auto& profile : m.phi_profile_by_species) {
+            const std::string name = "phi_" + std::to_string(profile.species);
+            by_species[name.c_str()] = table({&y_mid, &profile.phi});
+        }
+        out["phi_y_species"] = by_species;
+    }
     out["p_z"] = p_z(m);
     out["p_z_tolerances"] = metrics::coordination_tolerance_names();
     return out;
@@ -119,7 +139,9 @@ void bind_measure(py::module_& m) {
           "zhi], default the control volume). Returns the dict of its metrics.json (phi, "
           "overlaps, z_mean_tol_*, split_ratio, q6_*, voronoi_phi_*, ...) plus the curves as "
           "numpy arrays: g_r (rows r/d, g), phi_y (rows y_mid, phi), p_z (rows z, then P(Z) "
-          "at each tolerance of p_z_tolerances).");
+          "at each tolerance of p_z_tolerances); for a blend also g_r_partial (per pair type "
+          "'g_I_J', I <= J: rows r/d at that pair type's bin centres, g_IJ) and phi_y_species "
+          "(per species 'phi_I': rows y_mid, phi_I).");
 }
 
 }  // namespace sgmp::python

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "bindings.hpp"
+#include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/metadata.hpp"
 #include "sgmp/pack/output_frame.hpp"
@@ -106,6 +107,9 @@ PYBIND11_MODULE(_sgmp, m) {
             }
         } catch (const sgmp::InputError& e) {
             PyErr_SetString(PyExc_ValueError, e.what());
+        } catch (const sgmp::FileExists& e) {  // Python's spelling of --force
+            const std::string text = e.path().string() + ": exists; pass force=True to replace it";
+            PyErr_SetString(PyExc_FileExistsError, text.c_str());
         } catch (const std::invalid_argument& e) {
             PyErr_SetString(PyExc_ValueError, e.what());
         } catch (const std::runtime_error& e) {

@@ -22,6 +22,11 @@ namespace sgmp {
 class FileExists : public std::runtime_error {
   public:
     explicit FileExists(const std::filesystem::path& path);
+    /// The file that exists (a front end words the refusal in its own terms).
+    [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+
+  private:
+    std::filesystem::path path_;
 };
 
 /// Fails unless `target` can be written: its parent directory exists (or can be created)

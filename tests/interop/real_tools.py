@@ -105,6 +105,31 @@ write_dump all custom lammps.dump id type radius x y z modify sort id format flo
     return types, out
 
 
+def check_periodic_lammps():
+    """A periodic blend, as .data: LAMMPS runs it with the boundary the file's comment
+    line names (x and z periodic; x and y when written z up), keeps every atom, and its
+    box has those flags."""
+    run(SGMP, "pack", "--count", "600", "--arrangement", "loose-random", "--seed", "3",
+        "--sides", "periodic", "--size-modes", "1:0.5,0.5:0.5", "--fraction-basis", "volume",
+        "--out", "periodic.xyz")
+    for name, up, flags in (("periodic.data", "y", "pp ff pp"), ("periodic-z.data", "z", "pp pp ff")):
+        run(SGMP, "convert", "periodic.xyz", name, "--up", up)
+        with open(os.path.join(SCRATCH, name)) as f:
+            boundary = next(l for l in f if l.startswith("# LAMMPS boundary ")).split()[3:]
+        check(" ".join(b + b for b in boundary) == flags,
+              f"{name}: the comment line names boundary {' '.join(boundary)}")
+        with open(os.path.join(SCRATCH, "in.periodic"), "w") as f:
+            f.write(f"units lj\natom_style sphere\nboundary {' '.join(boundary)}\n"
+                    f"read_data {name}\nrun 0\n"
+                    "write_dump all custom periodic.dump id x y z modify sort id\n")
+        run("lmp", "-in", "in.periodic", "-log", "none", "-screen", "none")
+        with open(os.path.join(SCRATCH, "periodic.dump")) as f:
+            lines = f.read().splitlines()
+        count = int(lines[lines.index("ITEM: NUMBER OF ATOMS") + 1])
+        check(count == 600, f"LAMMPS, periodic ({name}): {count} of 600 atoms kept")
+        check(f"ITEM: BOX BOUNDS {flags}" in lines, f"LAMMPS, periodic ({name}): box {flags}")
+
+
 def check_vtk(pack_rows, ending):
     """The legacy (.vtk, vtkPolyDataReader) or XML binary (.vtp, vtkXMLPolyDataReader)
     file and its container file, read by VTK itself."""
@@ -296,6 +321,7 @@ def main():
     check_vtk(rows, "vtp")
     check_ase(top)
     check_frame(rows, top)
+    check_periodic_lammps()
     check_csv()
     check_bad_input()
     # The same input gives the same bytes.

@@ -16,10 +16,11 @@ void write_dump_custom(std::ostream& out, const Pack& pack) {
     const Box box = container_box(pack);
     out << "ITEM: TIMESTEP\n" << (step >= 0 ? step : 0) << '\n';
     out << "ITEM: NUMBER OF ATOMS\n" << pack.particles.size() << '\n';
-    // LAMMPS' boundary flags: periodic sides are x and z, or x and y when written z up.
-    const bool periodic = container_of(pack).periodic;
-    const bool z_up = pack.metadata.get("up_axis").value_or("y") == "z";
-    out << "ITEM: BOX BOUNDS " << (!periodic ? "ff ff ff" : z_up ? "pp pp ff" : "pp ff pp") << "\n";
+    out << "ITEM: BOX BOUNDS";
+    for (const bool periodic : periodic_axes(pack)) {  // LAMMPS' boundary flags
+        out << (periodic ? " pp" : " ff");
+    }
+    out << "\n";
     for (int k = 0; k < 3; ++k) {
         out << format_number(box.lo[k]) << ' ' << format_number(box.hi[k]) << '\n';
     }

@@ -36,7 +36,12 @@ void write_lammps_data(std::ostream& out, const Pack& pack) {
         pack.metadata.get_number("particle_density").value_or(kLammpsDataDensity);
     const std::string unit = pack.metadata.get("length_unit").value_or("control-volume sides");
     out << "# density " << format_number(density)
-        << ": mass = density * (pi/6) * diameter^3, lengths in " << unit << "\n\n";
+        << ": mass = density * (pi/6) * diameter^3, lengths in " << unit << '\n';
+    out << "# LAMMPS boundary";
+    for (const bool periodic : periodic_axes(pack)) {
+        out << (periodic ? " p" : " f");
+    }
+    out << "\n\n";
     out << pack.particles.size() << " atoms\n" << types.count << " atom types\n\n";
     const char* axes[3] = {"x", "y", "z"};
     for (int k = 0; k < 3; ++k) {

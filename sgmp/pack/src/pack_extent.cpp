@@ -49,4 +49,12 @@ Box container_box(const Pack& pack) {
     return box;
 }
 
+std::array<bool, 3> periodic_axes(const Pack& pack) {
+    if (!container_of(pack).periodic) {
+        return {false, false, false};
+    }
+    const bool z_up = pack.metadata.get("up_axis").value_or("y") == "z";
+    return {true, z_up, !z_up};
+}
+
 }  // namespace sgmp

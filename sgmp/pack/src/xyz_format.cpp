@@ -466,10 +466,13 @@ std::string lattice_text(const Box& box) {
 
 /// The `pbc` of a pack: periodic sides are x and z, or x and y when written z up.
 std::string pbc_text(const Pack& pack) {
-    if (!container_of(pack).periodic) {
-        return "F F F";
+    const auto axes = periodic_axes(pack);
+    std::string text;
+    for (const bool periodic : axes) {
+        text += text.empty() ? "" : " ";
+        text += periodic ? "T" : "F";
     }
-    return pack.metadata.get("up_axis").value_or("y") == "z" ? "T T F" : "T F T";
+    return text;
 }
 
 /// The cell written as Lattice and Origin: the container from the floor to the top (not

@@ -4,6 +4,8 @@
 /// and its top, the height of the highest sphere's top, y_top = max_i (y_i + r_i). Writers
 /// of other formats use these for box bounds and cells.
 
+#include <array>
+
 #include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/pack.hpp"
 
@@ -25,5 +27,10 @@ double top_of(const Pack& pack, const Container& container);
 /// frame (output_frame.hpp) has its written box in the `box` key; that box is returned.
 /// Throws std::invalid_argument for a malformed `box`.
 Box container_box(const Pack& pack);
+
+/// Which written axes (x, y, z) are periodic: x and z for periodic sides, x and y for a
+/// pack written z up (`up_axis=z`), none with walls. LAMMPS' `boundary` flags, extended
+/// XYZ's `pbc` and a dump's BOX BOUNDS follow from it.
+std::array<bool, 3> periodic_axes(const Pack& pack);
 
 }  // namespace sgmp

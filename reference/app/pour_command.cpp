@@ -169,7 +169,7 @@ int report_run_failure(const std::exception& error, bool interrupted) {
     std::cerr << "sgmp-reference: " << printable(cli::failure_message(error)) << '\n';
     if (const auto* pour_error = dynamic_cast<const PourError*>(&error);
         pour_error != nullptr && !pour_error->log_tail().empty()) {
-        std::cerr << "--- last lines of LIGGGHTS output ---\n";
+        std::cerr << "--- last lines of its output ---\n";
         for (const auto& line : pour_error->log_tail()) {
             std::cerr << "  " << printable(line) << '\n';
         }

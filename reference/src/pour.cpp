@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -217,6 +218,25 @@ std::string ratio_text(double ratio) {
     return format_number(ratio);
 }
 
+/// The line that says why: LIGGGHTS' first ERROR, else an output line with a letter in it
+/// (a launcher's banner of dashes says nothing): the first such line of a launcher that
+/// never started LIGGGHTS (its message leads), the last of LIGGGHTS; else "no output".
+std::string failure_reason(const RunWatch& watch, bool launcher) {
+    if (!watch.log.first_error.empty()) {
+        return watch.log.first_error;
+    }
+    const auto says = [](const std::string& line) {
+        return std::any_of(line.begin(), line.end(),
+                           [](unsigned char c) { return std::isalpha(c) != 0; });
+    };
+    if (launcher) {
+        const auto line = std::find_if(watch.tail.begin(), watch.tail.end(), says);
+        return line != watch.tail.end() ? *line : "no output";
+    }
+    const auto line = std::find_if(watch.tail.rbegin(), watch.tail.rend(), says);
+    return line != watch.tail.rend() ? *line : "no output";
+}
+
 void check_run(const ChildResult& run, const RunWatch& watch, const PourRequest& request) {
     const PourParams& p = request.parameters;
     if (watch.short_insertion) {
@@ -239,12 +259,15 @@ void check_run(const ChildResult& run, const RunWatch& watch, const PourRequest&
             break;
     }
     if (run.exit_code != 0) {
-        const std::string reason = !watch.log.first_error.empty() ? watch.log.first_error
-                                   : watch.tail.empty()           ? "no output"
-                                                                  : watch.tail.back();
-        throw PourError(
-            "liggghts failed (exit code " + std::to_string(run.exit_code) + "): " + reason,
-            watch.tail_lines());
+        // Under a launcher the child is the launcher: a failure before LIGGGHTS wrote its
+        // log (a refused start, as Open MPI's as root) is the launcher's.
+        const bool started = !watch.log.liggghts_version.empty();  // its banner was seen
+        const bool launcher = p.ranks > 1 && !started;
+        const std::string who = launcher ? "the launcher '" + request.launcher + "' (--launcher)"
+                                         : std::string("liggghts");
+        throw PourError(who + " failed (exit code " + std::to_string(run.exit_code) +
+                            "): " + failure_reason(watch, launcher),
+                        watch.tail_lines());
     }
     if (!watch.log.inserted || static_cast<std::size_t>(*watch.log.inserted) != p.count) {
         throw PourError("LIGGGHTS did not report the " + std::to_string(p.count) +

@@ -384,8 +384,13 @@ int run_sweep(const Settings& s, const World& world) {
         mine += line;
     }
     const std::vector<std::string> texts = world.gather(mine);
+    const std::vector<std::string> reused_by_rank = world.gather(std::to_string(reused.load()));
     if (world.rank() != 0) {
         return 0;
+    }
+    std::size_t reused_in_all = 0;
+    for (const std::string& count : reused_by_rank) {
+        reused_in_all += std::stoul(count);
     }
     std::vector<SummaryTable> tables;
     for (std::size_t r = 0; r < texts.size(); ++r) {
@@ -397,7 +402,7 @@ int run_sweep(const Settings& s, const World& world) {
     std::printf(
         "sgmp: batch of %zu packs (%zu reused) on %zu rank(s) x %u thread(s), %.3f s, "
         "%.1f packs/s on rank 0 -> %s\n",
-        plan.job_count() / shard.count, reused.load(), world.size(), threads, elapsed,
+        plan.job_count() / shard.count, reused_in_all, world.size(), threads, elapsed,
         elapsed > 0.0 ? static_cast<double>(jobs.size()) / elapsed : 0.0, s.summary.c_str());
     return 0;
 }

@@ -6,14 +6,17 @@
 // `size_modes` key (a blend's header records both) is the distribution's record and is
 // left out.
 
+#include <functional>
 #include <istream>
 #include <string>
 #include <vector>
 
 namespace sgmp::app {
 
-/// The command-line arguments a config file stands for. Throws std::invalid_argument
-/// (a key in a section other than `command`'s) or CLI::ParseError (malformed TOML).
-std::vector<std::string> config_arguments(std::istream& in, const std::string& command);
+/// The command-line arguments a config file stands for. `known("--option")` tells an
+/// option of the command. Throws std::invalid_argument (a key in a section other than
+/// `command`'s, or a key naming no option) or CLI::ParseError (malformed TOML).
+std::vector<std::string> config_arguments(std::istream& in, const std::string& command,
+                                          const std::function<bool(const std::string&)>& known);
 
 }  // namespace sgmp::app

@@ -131,7 +131,7 @@ PackRequest to_request(const Options& o) {
 }
 
 /// `--config FILE` (config_file.hpp): its options are placed before the command line's.
-std::vector<std::string> expand_config(std::vector<std::string> args) {
+std::vector<std::string> expand_config(std::vector<std::string> args, const CLI::App& app) {
     for (std::size_t i = 0; i < args.size(); ++i) {
         std::string path;
         if (args[i] == "--config" && i + 1 < args.size()) {
@@ -146,7 +146,17 @@ std::vector<std::string> expand_config(std::vector<std::string> args) {
         }
         std::ifstream in(path);
         try {
-            const auto injected = sgmp::app::config_arguments(in, args.front());
+            // A key that names no option of the command is refused here, naming the file.
+            const CLI::App* command = nullptr;
+            try {
+                command = app.get_subcommand(args.front());
+            } catch (const CLI::OptionNotFound&) {
+                // not a command: CLI11 says so when it parses
+            }
+            const auto known = [command](const std::string& option) {
+                return command == nullptr || command->get_option_no_throw(option) != nullptr;
+            };
+            const auto injected = sgmp::app::config_arguments(in, args.front(), known);
             args.insert(args.begin() + 1, injected.begin(), injected.end());
         } catch (const std::invalid_argument& e) {
             throw UsageError("--config " + path + ": " + e.what());
@@ -265,7 +275,7 @@ int main(int argc, char** argv) {
     sgmp::app::BatchCommand batch(app);
     const auto parse = [&] {
         std::vector<std::string> args(argv + 1, argv + argc);
-        args = expand_config(std::move(args));
+        args = expand_config(std::move(args), app);
         std::reverse(args.begin(), args.end());  // CLI11 takes the arguments reversed
         app.parse(args);
     };

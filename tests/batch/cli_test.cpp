@@ -343,6 +343,14 @@ BOOST_AUTO_TEST_CASE(mpi_ranks_equal_the_serial_run) {
     BOOST_TEST(r.out.find("on 2 rank(s)") != std::string::npos, r.out);
     expect_same_packs(s, "serial", "mpi");
     BOOST_TEST(untimed(s.path("mpi/summary.csv")) == untimed(s.path("serial/summary.csv")));
+    // Resumed on 2 ranks, every pack is reused, and the count says so for all ranks.
+    const Run again = s.batch(kSweep + " --measure --skip-existing", "mpi", mpirun);
+    BOOST_REQUIRE_MESSAGE(again.status == 0, again.err);
+    const auto packs = again.out.find("batch of ");
+    BOOST_REQUIRE(packs != std::string::npos);
+    const std::string total =
+        again.out.substr(packs + 9, again.out.find(' ', packs + 9) - packs - 9);
+    BOOST_TEST(again.out.find("(" + total + " reused)") != std::string::npos, again.out);
 }
 
 namespace {

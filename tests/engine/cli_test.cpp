@@ -309,6 +309,14 @@ BOOST_AUTO_TEST_CASE(a_config_file_repeats_a_run_and_the_command_line_wins) {
     BOOST_TEST(e.metadata.get("phi_target").value_or("") == "0.6");
     BOOST_TEST(e.metadata.get("fall_step").value_or("") == "0.002");
     BOOST_TEST(e.metadata.get("sweep_stages").value_or("") == "8,120");
+    // A key naming no option: one line naming the file and the key, nothing written.
+    std::ofstream(s.path("bogus.toml")) << "count = 120\nbogus_key = 3\n";
+    const Run bogus =
+        s.run("pack --config '" + s.path("bogus.toml") + "' --out '" + s.path("x.xyz") + "'");
+    BOOST_TEST(bogus.status == 2);
+    BOOST_TEST(bogus.err == "sgmp: --config " + s.path("bogus.toml") +
+                                ": key 'bogus_key' names no option of 'pack' (--bogus-key)\n");
+    BOOST_TEST(!fs::exists(s.path("x.xyz")));
     // A blend's header records its distribution file and the modes read from it; a
     // config copied from it repeats the pack (the modes are the file's record).
     std::ofstream(s.path("blend.csv")) << "diameter,fraction\n1,0.5\n0.5,0.5\n";

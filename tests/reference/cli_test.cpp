@@ -251,7 +251,7 @@ BOOST_AUTO_TEST_CASE(a_liggghts_error_is_shown_with_the_log_tail) {
     BOOST_TEST(first_line(run.stderr_text) ==
                "sgmp-reference: liggghts failed (exit code 1): ERROR: Illegal fix wall/gran "
                "command (./src/fix_wall_gran.cpp:123)");
-    BOOST_TEST(run.stderr_text.find("--- last lines of LIGGGHTS output ---") != std::string::npos);
+    BOOST_TEST(run.stderr_text.find("--- last lines of its output ---") != std::string::npos);
     BOOST_TEST(!fs::exists(fake.out));
     BOOST_TEST(fs::exists(work / "in.pour"));  // kept for inspection
 }
@@ -456,6 +456,21 @@ BOOST_AUTO_TEST_CASE(every_launcher_runs_the_pour) {
         fs::remove(log);
         fs::remove_all(fake.dir / "work");
     }
+    // A launcher that refuses to start LIGGGHTS (as Open MPI's does as root) is named, with
+    // its first line that says something (not the banner of dashes).
+    write_script(fake.dir / "bin" / "refuse",
+                 "#!/bin/sh\necho '-------------'\necho 'refuse has detected an attempt to "
+                 "run as root.'\necho 'Running as root is *strongly* discouraged.'\n"
+                 "echo '-------------'\nexit 1\n");
+    fs::remove(fake.out);  // the cases above wrote it
+    const ProgramRun refused =
+        fake.pour({"--quiet", "--force", "--ranks", "2", "--launcher", "refuse -n {np}"});
+    BOOST_TEST(refused.exit_code == 1);
+    BOOST_TEST(first_line(refused.stderr_text) ==
+                   "sgmp-reference: the launcher 'refuse -n {np}' (--launcher) failed (exit code "
+                   "1): refuse has detected an attempt to run as root.",
+               refused.stderr_text);
+    BOOST_TEST(!fs::exists(fake.out));
     // Bad launcher and grid: one line each, nothing written.
     const ProgramRun no_np =
         fake.pour({"--quiet", "--force", "--ranks", "2", "--launcher", "launch-it -n 2"});

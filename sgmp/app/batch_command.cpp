@@ -252,10 +252,15 @@ class ProgressLine {
     ProgressLine(std::size_t total, const World& world) : total_(total), world_(world) {}
     void operator()(std::size_t done, double seconds) const {
         const double rate = seconds > 0.0 ? static_cast<double>(done) / seconds : 0.0;
-        const double left = rate > 0.0 ? static_cast<double>(total_ - done) / rate : 0.0;
+        // No time left is guessed before the first pack is done.
+        char left[32] = "time left unknown yet";
+        if (rate > 0.0) {
+            std::snprintf(left, sizeof left, "%.0f s left",
+                          static_cast<double>(total_ - done) / rate);
+        }
         std::fprintf(
-            stderr, "sgmp batch: %zu / %zu packs%s (%.1f%%), %.1f packs/s, %.0f s left\n", done,
-            total_, world_.size() > 1 ? " on rank 0" : "",
+            stderr, "sgmp batch: %zu / %zu packs%s (%.1f%%), %.1f packs/s, %s\n", done, total_,
+            world_.size() > 1 ? " on rank 0" : "",
             total_ == 0 ? 100.0 : 100.0 * static_cast<double>(done) / static_cast<double>(total_),
             rate, left);
         std::fflush(stderr);

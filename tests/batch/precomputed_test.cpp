@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <filesystem>
@@ -137,6 +138,81 @@ BOOST_AUTO_TEST_CASE(reports_from_precomputed_metrics) {
     BOOST_TEST(slurp(dir / "bad-errors") ==
                "sgmp-compare: m/bad.metrics.json: 'p_z' entry '0' must be an array of numbers, "
                "not string\n");
+    fs::remove_all(dir);
+}
+
+// Contact metrics of SGMP rows against DEM pours: the summary's overlap_mean gives the
+// same "below overlap depth" as measuring the packs; a summary written before that column
+// leaves them unjudged ("overlap depth not known"). Both were judged, and differed, when
+// the depth was unknown.
+BOOST_AUTO_TEST_CASE(contact_metrics_from_batch_rows_follow_the_overlap_depth) {
+    const fs::path dir = fs::temp_directory_path() / ("sgmp-depth-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string in = "cd '" + dir.string() + "' && ";
+    const std::string sgmp = std::string("'") + SGMP_EXECUTABLE + "'";
+    const std::string compare = std::string("'") + SGMP_COMPARE_EXECUTABLE + "'";
+    const auto run = [&](const std::string& command) {
+        return std::system((in + command + " >/dev/null 2>>errors").c_str());
+    };
+    BOOST_REQUIRE(run(sgmp + " batch --seeds 1-3 --count 150 --arrangement loose-random "
+                             "--out-pattern 'packs/s{seed}.xyz' --measure --progress-seconds 0") ==
+                  0);
+    std::string dem;
+    std::string dem_metrics;
+    for (int seed = 1; seed <= 3; ++seed) {
+        const std::string stem = "n0150-mu0.5-seed" + std::to_string(seed);
+        dem += " '" + std::string(SGMP_SOURCE_DIR) + "/data/reference/" + stem + ".xyz.gz'";
+        dem_metrics += " m/" + stem + ".metrics.json";
+    }
+    BOOST_REQUIRE(run(compare + " measure" + dem + " --out m --no-voronoi") == 0);
+    const std::string a = " --a packs/s1.xyz packs/s2.xyz packs/s3.xyz --b" + dem_metrics;
+    BOOST_REQUIRE(run(compare + " report --no-voronoi --out packs-report" + a) == 0);
+    BOOST_REQUIRE(
+        run(compare + " report --no-voronoi --out rows-report --metrics summary.csv" + a) == 0);
+    // The summary of before: the same rows without the overlap_mean column.
+    std::istringstream summary(slurp(dir / "summary.csv"));
+    std::ofstream old(dir / "old.csv");
+    std::size_t column = 0;
+    for (std::string line; std::getline(summary, line);) {
+        std::vector<std::string> fields;
+        std::stringstream split(line);
+        for (std::string f; std::getline(split, f, ',');) {
+            fields.push_back(f);
+        }
+        if (line.rfind("job,", 0) == 0) {
+            column = static_cast<std::size_t>(
+                std::find(fields.begin(), fields.end(), "overlap_mean") - fields.begin());
+            BOOST_REQUIRE(column < fields.size());
+        }
+        if (line[0] != '#') {
+            fields.erase(fields.begin() + static_cast<std::ptrdiff_t>(column));
+        }
+        std::string kept;
+        for (const auto& f : fields) {
+            kept += (kept.empty() ? "" : ",") + f;
+        }
+        old << (line[0] == '#' ? line : kept) << "\n";
+    }
+    old.close();
+    BOOST_REQUIRE(run(compare + " report --no-voronoi --out old-report --metrics old.csv" + a) ==
+                  0);
+    const auto packs = rows_by_metric(dir / "packs-report/report.csv");
+    const auto rows = rows_by_metric(dir / "rows-report/report.csv");
+    const auto before = rows_by_metric(dir / "old-report/report.csv");
+    // Columns 16 and 19: tolerance_rule and verdict.
+    for (const char* metric : {"z_mean_tol_1e-6", "z_mean_tol_1e-3"}) {
+        BOOST_TEST(packs.at(metric).at(19) == "info", metric);  // SGMP 0 against DEM ~10⁻³ d
+        BOOST_TEST(packs.at(metric).at(16) == "below overlap depth", metric);
+        BOOST_TEST(rows.at(metric).at(19) == "info", metric);
+        BOOST_TEST(rows.at(metric).at(16) == "below overlap depth", metric);
+    }
+    BOOST_TEST(rows.at("z_mean_tol_1e-2") == packs.at("z_mean_tol_1e-2"));
+    for (const char* metric : {"z_mean_tol_1e-3", "z_mean_tol_1e-2"}) {
+        BOOST_TEST(before.at(metric).at(19) == "info", metric);
+        BOOST_TEST(before.at(metric).at(16) == "overlap depth not known", metric);
+    }
+    BOOST_TEST(slurp(dir / "errors").empty(), slurp(dir / "errors"));
     fs::remove_all(dir);
 }
 

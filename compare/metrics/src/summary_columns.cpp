@@ -29,6 +29,12 @@ const std::vector<SummaryColumn>& summary_columns() {
                      [](const Measurement& m, std::size_t) -> std::optional<double> {
                          return m.overlaps.pairs.max_over_d;
                      }});
+        // The overlap depth that decides which contact metrics are judged (a summary
+        // written before it was a column reads as not measured).
+        c.push_back({"overlap_mean", "overlap_mean_over_d", false, true,
+                     [](const Measurement& m, std::size_t) -> std::optional<double> {
+                         return m.overlaps.pairs.mean_over_d;
+                     }});
         c.push_back({"wall_overlaps", "wall_overlaps", true, false,
                      [](const Measurement& m, std::size_t) -> std::optional<double> {
                          return static_cast<double>(m.overlaps.walls.count);

@@ -462,9 +462,11 @@ MetricRow judge(const MetricRule& rule, const std::vector<const PackSummary*>& c
     if (!rule.judged) {
         row.verdict = Verdict::Info;
     } else if (rule.contact_tolerance) {
-        const double depths =
-            std::abs(overlap_depth(candidate) - overlap_depth(reference));  // NaN: judged
-        if (depths > kContactShiftShare * *rule.contact_tolerance) {
+        const double depths = std::abs(overlap_depth(candidate) - overlap_depth(reference));
+        if (std::isnan(depths)) {  // a summary without overlap depths: not judged
+            row.verdict = Verdict::Info;
+            row.tolerance_rule = "overlap depth not known";
+        } else if (depths > kContactShiftShare * *rule.contact_tolerance) {
             row.verdict = Verdict::Info;
             row.tolerance_rule = "below overlap depth";
         }

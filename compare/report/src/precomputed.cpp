@@ -308,8 +308,12 @@ std::vector<std::pair<std::string, PackSummary>> summaries_from_batch(std::strin
                 continue;
             }
             double v = kUnknown;
-            if (const SummaryColumn* column = summary_column_of(rule.name);
-                column != nullptr && !(column->optional && field(column->column).empty())) {
+            const SummaryColumn* column = summary_column_of(rule.name);
+            const bool absent =
+                column != nullptr && column->optional &&
+                (std::find(header.begin(), header.end(), column->column) == header.end() ||
+                 field(column->column).empty());
+            if (column != nullptr && !absent) {
                 v = measured(column->column);
             }
             s.scalars.push_back(v);

@@ -25,14 +25,14 @@ struct SummaryColumn {
     std::string column;  ///< the summary.csv header field
     std::string metric;  ///< the metrics.json (and metric_rules()) name of the same value
     bool integer;        ///< written as a whole number
-    bool optional;       ///< empty in a measured row when not asked for (Voronoi)
+    bool optional;       ///< may be empty or absent in a measured row (Voronoi not asked for)
     /// The value; nullopt when the measurement holds none (Voronoi not asked for).
     std::optional<double> (*value)(const Measurement& m, std::size_t tolerance);
     std::size_t tolerance = 0;  ///< index into coordination_tolerances() for Z columns
 };
 
-/// phi, z_<δ> for every coordination tolerance, overlaps, overlap_max, wall_overlaps,
-/// split_ratio, voronoi_phi_mean, in that order.
+/// phi, z_<δ> for every coordination tolerance, overlaps, overlap_max, overlap_mean,
+/// wall_overlaps, split_ratio, voronoi_phi_mean, in that order.
 const std::vector<SummaryColumn>& summary_columns();
 
 /// The header fields of summary_columns().

@@ -102,6 +102,10 @@ void apply(CommonOptions& o) {
     }
     validate(o.measure);
     set_thread_count(o.threads);
+    // A directory may be typed with a trailing slash ("--out report/").
+    while (o.out.size() > 1 && o.out.back() == '/') {
+        o.out.pop_back();
+    }
     try {
         check_writable(o.out, o.force);
     } catch (const std::runtime_error& error) {

@@ -223,7 +223,7 @@ CommandRunner register_crossval(CLI::App& app) {
                     "starting heights beside ours");
     cmd->add_option("--tuning", options->tuning,
                     "CSV 'group,parameter,value,reference,count,seeds,note' of candidate "
-                    "parameters tuned against reference packs (data/tuning.csv): listed on "
+                    "parameters tuned against reference packs (data/tuning/tuned_parameters.csv): listed on "
                     "every page; comparisons on the seeds they were tuned on are not judged");
     cmd->add_flag("--pictures,!--no-pictures", options->pictures,
                   "add pictures of packs rendered with POV-Ray: at N = 9000 (or the largest "

@@ -17,7 +17,8 @@ std::string kebab(std::string name) {
 }  // namespace
 
 std::vector<std::string> config_arguments(std::istream& in, const std::string& command,
-                                          const std::function<bool(const std::string&)>& known) {
+                                          const std::function<bool(const std::string&)>& known,
+                                          const std::function<bool(const std::string&)>& typed) {
     const std::vector<CLI::ConfigItem> items = CLI::ConfigTOML().from_config(in);
     // A blend's header records its distribution and the modes read from it: the
     // distribution is the request, the modes its record.
@@ -41,6 +42,9 @@ std::vector<std::string> config_arguments(std::istream& in, const std::string& c
         if (!known(option)) {
             throw std::invalid_argument("key '" + item.name + "' names no option of '" + command +
                                         "' (" + option + ")");
+        }
+        if (typed(option)) {
+            continue;  // the command line's value wins
         }
         if (item.inputs.size() == 1 && (item.inputs[0] == "true" || item.inputs[0] == "false")) {
             if (item.inputs[0] == "true") {

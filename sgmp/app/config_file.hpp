@@ -14,9 +14,12 @@
 namespace sgmp::app {
 
 /// The command-line arguments a config file stands for. `known("--option")` tells an
-/// option of the command. Throws std::invalid_argument (a key in a section other than
-/// `command`'s, or a key naming no option) or CLI::ParseError (malformed TOML).
+/// option of the command; a key whose option `typed` on the command line is left out, so
+/// the command line wins for lists too (a grid option's values would otherwise add up).
+/// Throws std::invalid_argument (a key in a section other than `command`'s, or a key
+/// naming no option) or CLI::ParseError (malformed TOML).
 std::vector<std::string> config_arguments(std::istream& in, const std::string& command,
-                                          const std::function<bool(const std::string&)>& known);
+                                          const std::function<bool(const std::string&)>& known,
+                                          const std::function<bool(const std::string&)>& typed);
 
 }  // namespace sgmp::app

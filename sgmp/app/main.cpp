@@ -156,7 +156,12 @@ std::vector<std::string> expand_config(std::vector<std::string> args, const CLI:
             const auto known = [command](const std::string& option) {
                 return command == nullptr || command->get_option_no_throw(option) != nullptr;
             };
-            const auto injected = sgmp::app::config_arguments(in, args.front(), known);
+            const auto typed = [&args](const std::string& option) {
+                return std::any_of(args.begin(), args.end(), [&](const std::string& a) {
+                    return a == option || a.rfind(option + "=", 0) == 0;
+                });
+            };
+            const auto injected = sgmp::app::config_arguments(in, args.front(), known, typed);
             args.insert(args.begin() + 1, injected.begin(), injected.end());
         } catch (const std::invalid_argument& e) {
             throw UsageError("--config " + path + ": " + e.what());

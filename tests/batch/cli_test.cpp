@@ -223,6 +223,13 @@ BOOST_AUTO_TEST_CASE(config_file_lists_equal_the_command_line) {
     BOOST_TEST(untimed(s.path("io/c.csv")) == untimed(s.path("io/l.csv")));
     BOOST_TEST(untimed(s.path("io/c.csv")).size() == 4u);
     BOOST_TEST(s.files() == (std::vector<std::string>{"c.csv", "l.csv", "sweep.toml"}));
+    // A list on the command line replaces the file's (they added up: 3 counts, 6 packs).
+    BOOST_REQUIRE(s.batch("--config sweep.toml --count 60 --no-packs --summary o.csv").status == 0);
+    BOOST_REQUIRE(s.batch("--seeds 1-2 --count 60 --arrangement small-dense --no-packs "
+                          "--summary m.csv --progress-seconds 0")
+                      .status == 0);
+    BOOST_TEST(untimed(s.path("io/o.csv")) == untimed(s.path("io/m.csv")));
+    BOOST_TEST(untimed(s.path("io/o.csv")).size() == 2u);
 }
 
 BOOST_AUTO_TEST_CASE(measured_rows_and_progress_lines) {

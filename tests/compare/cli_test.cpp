@@ -356,8 +356,12 @@ BOOST_AUTO_TEST_CASE(measure_and_report_write_complete_directories) {
           "\"region\"", "\"sgmp-compare\""}) {
         BOOST_TEST(text.find(key) != std::string::npos, key);
     }
+    // A directory typed with a trailing slash is the same directory.
+    BOOST_TEST(run("measure a.xyz --out m-slash/").status == 0);
+    BOOST_TEST(fs::exists(scratch() / "m-slash" / "a.metrics.json"));
     // Kept without --force, replaced with it; same inputs give the same bytes.
     BOOST_TEST(run("measure a.xyz --out m").status == 2);
+    BOOST_TEST(run("measure a.xyz --out m/").status == 2);
     BOOST_TEST(run("measure a.xyz b.xyz --out m2 --threads 1").status == 0);
     const std::string text2 = sgmp::testing::read_bytes(scratch() / "m2" / "a.metrics.json");
     BOOST_TEST(text2.find("\"phi\"") != std::string::npos);

@@ -61,19 +61,33 @@ std::map<std::string, std::vector<std::string>> rows_by_metric(const fs::path& p
     return rows;
 }
 
+/// A scratch directory in which commands run, their stderr appended to `errors`.
+struct Workspace {
+    fs::path dir;
+    std::string in;  ///< "cd DIR && "
+    std::string sgmp = std::string("'") + SGMP_EXECUTABLE + "'";
+    std::string compare = std::string("'") + SGMP_COMPARE_EXECUTABLE + "'";
+
+    explicit Workspace(const std::string& name)
+        : dir(fs::temp_directory_path() / (name + "-" + std::to_string(::getpid()))),
+          in("cd '" + dir.string() + "' && ") {
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    [[nodiscard]] int run(const std::string& command) const {
+        return std::system((in + command + " >/dev/null 2>>errors").c_str());
+    }
+};
+
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(reports_from_precomputed_metrics) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("sgmp-precomputed-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    const std::string in = "cd '" + dir.string() + "' && ";
-    const std::string sgmp = std::string("'") + SGMP_EXECUTABLE + "'";
-    const std::string compare = std::string("'") + SGMP_COMPARE_EXECUTABLE + "'";
-    const auto run = [&](const std::string& command) {
-        return std::system((in + command + " >/dev/null 2>>errors").c_str());
-    };
+    const Workspace w("sgmp-precomputed");
+    const fs::path& dir = w.dir;
+    const std::string& in = w.in;
+    const std::string& sgmp = w.sgmp;
+    const std::string& compare = w.compare;
+    const auto run = [&w](const std::string& command) { return w.run(command); };
     BOOST_REQUIRE(run(sgmp +
                       " batch --seeds 1-3 --count 250 --arrangement loose-random,small-dense "
                       "--out-pattern 'packs/{arrangement}-{seed}.xyz' --measure "
@@ -146,15 +160,11 @@ BOOST_AUTO_TEST_CASE(reports_from_precomputed_metrics) {
 // leaves them unjudged ("overlap depth not known"). Both were judged, and differed, when
 // the depth was unknown.
 BOOST_AUTO_TEST_CASE(contact_metrics_from_batch_rows_follow_the_overlap_depth) {
-    const fs::path dir = fs::temp_directory_path() / ("sgmp-depth-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    const std::string in = "cd '" + dir.string() + "' && ";
-    const std::string sgmp = std::string("'") + SGMP_EXECUTABLE + "'";
-    const std::string compare = std::string("'") + SGMP_COMPARE_EXECUTABLE + "'";
-    const auto run = [&](const std::string& command) {
-        return std::system((in + command + " >/dev/null 2>>errors").c_str());
-    };
+    const Workspace w("sgmp-depth");
+    const fs::path& dir = w.dir;
+    const std::string& sgmp = w.sgmp;
+    const std::string& compare = w.compare;
+    const auto run = [&w](const std::string& command) { return w.run(command); };
     BOOST_REQUIRE(run(sgmp + " batch --seeds 1-3 --count 150 --arrangement loose-random "
                              "--out-pattern 'packs/s{seed}.xyz' --measure --progress-seconds 0") ==
                   0);

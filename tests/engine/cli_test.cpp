@@ -26,26 +26,26 @@ struct Scratch : sgmp::testing::ProgramScratch {
               SGMP_EXECUTABLE) {}
 };
 
-/// A usage error: exit 2, one line on stderr starting with `expected`, no output file.
-void expect_refused(const Scratch& s, const std::string& args, const std::string& expected) {
+/// `sgmp pack ARGS` fails with `status`: one line starting "sgmp: EXPECTED", no pack.
+void expect_failure(const Scratch& s, const std::string& args, const std::string& expected,
+                    int status) {
     const Run r =
         s.run("pack --arrangement small-dense --seed 1 --out '" + s.path("p.xyz") + "' " + args);
     BOOST_TEST_INFO("args: " << args << "; stderr: " << r.err);
-    BOOST_TEST(r.status == 2);
+    BOOST_TEST(r.status == status);
     BOOST_TEST(r.err.find("sgmp: " + expected) == 0u);
     BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     BOOST_TEST(!fs::exists(s.path("p.xyz")));
 }
 
+/// A usage error: exit 2.
+void expect_refused(const Scratch& s, const std::string& args, const std::string& expected) {
+    expect_failure(s, args, expected, 2);
+}
+
 /// A bad input file: one line naming file:line and the rule, exit 1, no pack.
 void expect_bad_file(const Scratch& s, const std::string& args, const std::string& expected) {
-    const Run r =
-        s.run("pack --arrangement small-dense --seed 1 --out '" + s.path("p.xyz") + "' " + args);
-    BOOST_TEST_INFO("args: " << args << "; stderr: " << r.err);
-    BOOST_TEST(r.status == 1);
-    BOOST_TEST(r.err.find("sgmp: " + expected) == 0u);
-    BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-    BOOST_TEST(!fs::exists(s.path("p.xyz")));
+    expect_failure(s, args, expected, 1);
 }
 
 }  // namespace

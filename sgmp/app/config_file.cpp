@@ -21,16 +21,20 @@ std::vector<std::string> config_arguments(std::istream& in, const std::string& c
                                           const std::function<bool(const std::string&)>& typed) {
     const std::vector<CLI::ConfigItem> items = CLI::ConfigTOML().from_config(in);
     // A blend's header records its distribution and the modes read from it: the
-    // distribution is the request, the modes its record.
+    // distribution is the request, the modes its record. Sizes typed on the command line,
+    // in either form, replace both.
     const bool has_distribution = std::any_of(items.begin(), items.end(), [](const auto& item) {
         return kebab(item.name) == "size-distribution";
     });
+    const bool sizes_typed = typed("--size-modes") || typed("--size-distribution");
     std::vector<std::string> injected;
     for (const CLI::ConfigItem& item : items) {
         if (item.name == "++" || item.name == "--") {
             continue;  // section markers
         }
-        if (has_distribution && kebab(item.name) == "size-modes") {
+        const std::string key = kebab(item.name);
+        if ((has_distribution && key == "size-modes") ||
+            (sizes_typed && (key == "size-modes" || key == "size-distribution"))) {
             continue;
         }
         if (!item.parents.empty() && item.parents != std::vector<std::string>{command}) {

@@ -4,7 +4,7 @@
 // a [pack] / [arrange] section) become options placed before the command line's own, so
 // options typed on the command line win. With `size_distribution` present, a
 // `size_modes` key (a blend's header records both) is the distribution's record and is
-// left out.
+// left out; sizes typed on the command line in either form replace both keys.
 
 #include <functional>
 #include <istream>

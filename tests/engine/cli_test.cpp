@@ -332,6 +332,10 @@ BOOST_AUTO_TEST_CASE(a_config_file_repeats_a_run_and_the_command_line_wins) {
     const Run g =
         s.run("pack --config '" + s.path("blend.toml") + "' --out '" + s.path("g.xyz") + "'");
     BOOST_TEST_REQUIRE(g.status == 0, g.err);
+    // Sizes typed on the command line in the other form replace the file's.
+    const Run h = s.run("pack --config '" + s.path("blend.toml") + "' --size-modes 1:1 --out '" +
+                        s.path("h.xyz") + "'");
+    BOOST_TEST(h.status == 0, h.err);
     const auto again = sgmp::read_pack_file(s.path("g.xyz"));
     BOOST_TEST_REQUIRE(again.particles.size() == first.particles.size());
     for (std::size_t i = 0; i < first.particles.size(); ++i) {

@@ -51,7 +51,7 @@ void add_precomputed(CLI::App* command, CommonOptions& o) {
     command->add_option("--metrics", o.metrics,
                         "batch summaries (sgmp batch --measure) whose rows stand for the packs "
                         "they name: those packs are not read again (scalar metrics only; "
-                        "curves and Q6 are then not judged)");
+                        "curves and Q6 are then not measured: inconclusive)");
 }
 
 void add_common(CLI::App* command, CommonOptions& o) {

@@ -68,6 +68,13 @@ BOOST_AUTO_TEST_CASE(an_inconclusive_result_says_how_many_seeds_would_decide_it)
     // scipy: the smallest n a side with t.95(2n − 2)·SE_n < |0.15 − 0.3| is 8.
     BOOST_REQUIRE(r.seeds_to_decide.has_value());
     BOOST_TEST(*r.seeds_to_decide == 8u);
+    // 2 candidates of no scatter against 5 references: 3 a side would pool the sds
+    // half-and-half and look decisive; the count named is never below the 5 there are
+    // (scipy: 5 a side, t.95(8)·SE = 0.0083 < 0.015).
+    const auto few = test_scalar({0.015, 0.0, 2}, {0.0, 0.01, 5}, 0.03);
+    BOOST_TEST(static_cast<int>(few.decision) == static_cast<int>(Decision::Inconclusive));
+    BOOST_REQUIRE(few.seeds_to_decide.has_value());
+    BOOST_TEST(*few.seeds_to_decide == 5u);
 }
 
 BOOST_AUTO_TEST_CASE(too_few_packs_give_an_infinite_interval) {

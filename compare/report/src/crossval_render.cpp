@@ -135,7 +135,7 @@ void stand_in_markdown(std::ostringstream& md, const CrossValidation& cv) {
     md << "Every verdict is an equivalence test on a declared margin (rules at the end of the "
           "page). A mode *stands in* for a class when no test differs under Holm's procedure "
           "over every judged metric and count (family-wise error ≤ 5 %) and at every count at "
-          "least half the decidable metrics agree (those whose interval is narrower than the "
+          "least half the decidable metrics agree (those whose interval's half-width is below the "
           "margin, so agreement was reachable); it *differs* when Holm keeps a difference; "
           "otherwise it is *undecided*. A relaxed mode whose packs are not certified "
           "mechanical equilibria is *invalid* and not judged. Speed: the DEM pour's mean wall time "

@@ -94,6 +94,13 @@ struct TvNoise {
     }
 };
 
+/// The smallest n a side that seeds_to_decide may name: never fewer seeds than either
+/// group already has (a smaller set can look decisive only through the pooled sd's
+/// weights), and more than both when they are equal.
+std::size_t first_seeds_to_try(std::size_t n_a, std::size_t n_b) {
+    return std::max<std::size_t>(2, std::max(n_a, n_b) + (n_a == n_b ? 1 : 0));
+}
+
 EquivalenceResult undecidable(double estimate, double margin) {
     EquivalenceResult r;
     r.estimate = estimate;
@@ -141,8 +148,7 @@ EquivalenceResult test_scalar(const ScalarSample& candidate, const ScalarSample&
     }
     r.decision = decide(r.ci_low, r.ci_high, margin);
     if (r.decision == Decision::Inconclusive && excess != 0.0) {
-        for (std::size_t n = std::max<std::size_t>(2, std::min(candidate.n, reference.n) + 1);
-             n <= kMostSeeds; ++n) {
+        for (std::size_t n = first_seeds_to_try(candidate.n, reference.n); n <= kMostSeeds; ++n) {
             const Pooled wn = pooled(var_a, n, var_b, n);
             if (t_quantile(1.0 - kTestAlpha, wn.df) * wn.se < std::abs(excess)) {
                 r.seeds_to_decide = n;
@@ -503,7 +509,7 @@ EquivalenceResult test_l2_curves(const std::vector<std::vector<double>>& candida
                 bounds_of(law_of(variance, {c, c, f, f, false}, bin_width), u, margin, z);
             return bn.high < margin || bn.low > margin;
         };
-        std::size_t lo = std::max<std::size_t>(2, std::min(ga.size(), gb.size()) + 1);
+        std::size_t lo = first_seeds_to_try(ga.size(), gb.size());
         std::size_t hi = kMostSeeds;
         if (lo <= hi && decided(hi)) {
             while (lo < hi) {

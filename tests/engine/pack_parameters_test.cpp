@@ -110,4 +110,44 @@ BOOST_AUTO_TEST_CASE(the_header_records_each_row_as_formatted) {
     BOOST_TEST(!make_pack(plain).metadata.get("relax_stiffness").has_value());
 }
 
+BOOST_AUTO_TEST_CASE(each_relaxation_mode_has_its_own_stiffness_schedule_and_typed_values_win) {
+    // Unset schedule rows take the mode's defaults (relax_schedule); the row's text is the
+    // value the relaxation runs, so a header replayed as options gives the same request.
+    PackRequest frictionless;
+    set_pack_parameter(frictionless, "relax", "frictionless");
+    PackRequest frictional;
+    set_pack_parameter(frictional, "relax", "frictional");
+    const auto text = [](const PackRequest& r, const char* name) {
+        return find_pack_parameter(name)->format(r);
+    };
+    BOOST_TEST(text(frictionless, "relax_stiffness") == "20000");
+    BOOST_TEST(text(frictionless, "relax_stages") == "1");
+    BOOST_TEST(text(frictionless, "relax_time") == "200");
+    BOOST_TEST(text(frictional, "relax_stiffness") == "2000");
+    BOOST_TEST(text(frictional, "relax_stages") == "5");
+    BOOST_TEST(text(frictional, "relax_time") == "5");
+    set_pack_parameter(frictionless, "relax_stiffness", "3e3");
+    set_pack_parameter(frictionless, "relax_stages", "2");
+    BOOST_TEST(text(frictionless, "relax_stiffness") == "3000");
+    BOOST_TEST(text(frictionless, "relax_stages") == "2");
+    BOOST_TEST(text(frictionless, "relax_time") == "200");
+    PackRequest replayed;
+    for (const char* name : {"relax", "relax_stiffness", "relax_stages", "relax_time"}) {
+        set_pack_parameter(replayed, name, text(frictionless, name));
+    }
+    const RelaxSchedule a = relax_schedule(frictionless.relax);
+    const RelaxSchedule b = relax_schedule(replayed.relax);
+    BOOST_TEST(a.stiffness == b.stiffness);
+    BOOST_TEST(a.stages == b.stages);
+    BOOST_TEST(a.time == b.time);
+    // The rules apply to the schedule run: 10 stages from the default 2e4 would end at
+    // 2e13 m*g/d, beyond the 1e12 allowed.
+    frictionless.count = 100;
+    frictionless.relax.stiffness.reset();
+    set_pack_parameter(frictionless, "relax_stages", "10");
+    BOOST_CHECK_EXCEPTION(validate(frictionless), ParameterError, [](const ParameterError& e) {
+        return std::string(e.what()).find("10: the last stage's stiffness") != std::string::npos;
+    });
+}
+
 BOOST_AUTO_TEST_SUITE_END()

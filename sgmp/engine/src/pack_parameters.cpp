@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "sgmp/pack/option_rules.hpp"
@@ -139,14 +141,51 @@ void check_fall_step(const PackRequest& r, const PackCheckContext& context) {
 }
 
 void check_relax_stages(const PackRequest& r, const PackCheckContext&) {
-    const RelaxParams& x = r.relax;
+    const RelaxSchedule x = relax_schedule(r.relax);
     if (x.stages < 1 || x.stages > 10) {
         refuse("relax_stages", std::to_string(x.stages), "must be 1 to 10");
     }
-    if (!(x.stiffness * std::pow(x.stiffness_factor, x.stages - 1) <= 1e12)) {
+    if (!(x.stiffness * std::pow(r.relax.stiffness_factor, x.stages - 1) <= 1e12)) {
         refuse("relax_stages", std::to_string(x.stages),
                "the last stage's stiffness must not exceed 1e12 m*g/d");
     }
+}
+
+/// A row of the stiffness schedule (relax_schedule): unset by default, so that each mode
+/// runs its own; `set` stores a parsed value, and the header records the value the
+/// relaxation runs (`effective`).
+template <class T>
+Row scheduled(std::string name, std::function<void(RelaxParams&, T)> set,
+              std::function<T(const RelaxSchedule&)> effective, std::string help, Check check) {
+    Row row;
+    row.name = std::move(name);
+    row.group = "relax";
+    row.kind = std::is_integral_v<T> ? ValueKind::Integer : ValueKind::Number;
+    row.help = std::move(help);
+    row.rule = std::is_integral_v<T> ? "must be a whole number" : "must be a number";
+    row.parse = [set](PackRequest& r, std::string_view text) {
+        std::optional<T> value;
+        if constexpr (std::is_integral_v<T>) {
+            value = parse_whole<T>(text);
+        } else {
+            value = parse_real(text);
+        }
+        if (value) {
+            set(r.relax, *value);
+        }
+        return value.has_value();
+    };
+    row.format = [effective](const PackRequest& r) {
+        const T value = effective(relax_schedule(r.relax));
+        if constexpr (std::is_integral_v<T>) {
+            return std::to_string(value);
+        } else {
+            return format_number(value);
+        }
+    };
+    row.check = std::move(check);
+    row.unset_by_default = true;
+    return row;
 }
 
 std::vector<Row> count_and_request_rows() {
@@ -341,12 +380,14 @@ void add_relax_rows(std::vector<Row>& rows) {
         }
     };
     rows.push_back(std::move(relax));
-    rows.push_back(number(
-        "relax_stiffness", g, [](auto& r) -> auto& { return r.relax.stiffness; },
+    rows.push_back(scheduled<double>(
+        "relax_stiffness", [](RelaxParams& x, double v) { x.stiffness = v; },
+        [](const RelaxSchedule& x) { return x.stiffness; },
         "contact stiffness k of the first relaxation stage in m*g/d (a contact carrying one "
-        "weight m*g overlaps by d/k)",
+        "weight m*g overlaps by d/k); default 2e4 frictionless, 2e3 frictional",
         in_range(
-            "relax_stiffness", [](const PackRequest& r) { return r.relax.stiffness; }, 1e2, 1e12,
+            "relax_stiffness",
+            [](const PackRequest& r) { return relax_schedule(r.relax).stiffness; }, 1e2, 1e12,
             "must be in [100, 1e12] (m*g/d)")));
     rows.push_back(number(
         "relax_stiffness_factor", g, [](auto& r) -> auto& { return r.relax.stiffness_factor; },
@@ -354,9 +395,12 @@ void add_relax_rows(std::vector<Row>& rows) {
         in_range(
             "relax_stiffness_factor", [](const PackRequest& r) { return r.relax.stiffness_factor; },
             1.0, 1e6, "must be in [1, 1e6]")));
-    rows.push_back(whole(
-        "relax_stages", g, [](auto& r) -> auto& { return r.relax.stages; },
-        "number of stiffness stages (1 to 10)", check_relax_stages));
+    rows.push_back(scheduled<int>(
+        "relax_stages", [](RelaxParams& x, int v) { x.stages = v; },
+        [](const RelaxSchedule& x) { return x.stages; },
+        "number of stiffness stages (1 to 10); default 1 frictionless (run to convergence), 5 "
+        "frictional",
+        check_relax_stages));
     rows.push_back(number(
         "relax_shell", g, [](auto& r) -> auto& { return r.relax.shell; },
         "contact shell s in [0, 0.01]: the soft spheres are (1+s) times the real ones, so soft "
@@ -374,13 +418,15 @@ void add_relax_rows(std::vector<Row>& rows) {
                 refuse("relax_force_tolerance", format_number(t), "must be in (0, 1] (m*g)");
             }
         }));
-    rows.push_back(number(
-        "relax_time", g, [](auto& r) -> auto& { return r.relax.time; },
+    rows.push_back(scheduled<double>(
+        "relax_time", [](RelaxParams& x, double v) { x.time = v; },
+        [](const RelaxSchedule& x) { return x.time; },
         "bound on the first stage's simulated time, in units of sqrt(H/g) (H: the pack's height "
-        "above the floor)",
+        "above the floor); default 200 frictionless, 5 frictional",
         [](const PackRequest& r, const PackCheckContext&) {
-            if (!(r.relax.time > 0.0) || !(r.relax.time <= 1e4)) {
-                refuse("relax_time", format_number(r.relax.time), "must be in (0, 10000]");
+            const double time = relax_schedule(r.relax).time;
+            if (!(time > 0.0) || !(time <= 1e4)) {
+                refuse("relax_time", format_number(time), "must be in (0, 10000]");
             }
         }));
     rows.push_back(number(

@@ -447,19 +447,20 @@ void relax_soft(std::vector<Particle>& particles, const Container& container,
         height = std::max(height, p.center.y() + p.radius - container.floor);
         d_min = std::min(d_min, 2.0 * p.radius);
     }
-    double stiffness = params.stiffness;
-    for (int stage = 0; stage < params.stages; ++stage) {
+    const RelaxSchedule schedule = relax_schedule(params);
+    double stiffness = schedule.stiffness;
+    for (int stage = 0; stage < schedule.stages; ++stage) {
         // k in m·g/d becomes k/d in m·g per length unit.
         StageBound bound;
         if (stage == 0) {
-            bound.time = params.time * std::sqrt(height);  // g = 1
+            bound.time = schedule.time * std::sqrt(height);  // g = 1
         } else {
             bound.steps = std::max(kMinStageSteps, std::lround(params.crossings * height / d_min));
         }
         std::function<void(long)> tick;
         if (progress) {
             tick = [&, stage](long steps) {
-                progress({RelaxProgress::Phase::Soft, stage, params.stages, stats.steps + steps, 0,
+                progress({RelaxProgress::Phase::Soft, stage, schedule.stages, stats.steps + steps, 0,
                           0.0});
             };
         }
@@ -472,12 +473,12 @@ void relax_soft(std::vector<Particle>& particles, const Container& container,
             scale_springs(s, 1.0 / params.stiffness_factor);
         }
     }
-    if (stats.stages_converged < params.stages) {
+    if (stats.stages_converged < schedule.stages) {
         stats.force_max =
             quench(s, container, stiffness / params.stiffness_factor / diameter, kQuenchSteps);
     }
     if (progress) {
-        progress({RelaxProgress::Phase::Clearing, params.stages - 1, params.stages, stats.steps, 0,
+        progress({RelaxProgress::Phase::Clearing, schedule.stages - 1, schedule.stages, stats.steps, 0,
                   0.0});
     }
     stats.steps += clear_real_overlaps(
@@ -513,7 +514,8 @@ RelaxStats relax_pack(std::vector<Particle>& particles, const Container& contain
     }
     if (progress) {
         options.progress = [&](int iteration, double trust) {
-            progress({RelaxProgress::Phase::Settling, params.stages - 1, params.stages, stats.steps,
+            const int stages = relax_schedule(params).stages;
+            progress({RelaxProgress::Phase::Settling, stages - 1, stages, stats.steps,
                       iteration, trust});
         };
     }

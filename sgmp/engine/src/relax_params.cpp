@@ -9,6 +9,15 @@ const NameTable<RelaxMode, 3>& relax_modes() {
     return table;
 }
 
+RelaxSchedule relax_schedule(const RelaxParams& params) {
+    const bool frictionless = params.mode == RelaxMode::Frictionless;
+    RelaxSchedule schedule;
+    schedule.stiffness = params.stiffness.value_or(frictionless ? 2e4 : 2e3);
+    schedule.stages = params.stages.value_or(frictionless ? 1 : 5);
+    schedule.time = params.time.value_or(frictionless ? 200.0 : 5.0);
+    return schedule;
+}
+
 std::string_view to_string(RelaxMode mode) {
     return relax_modes().name(mode);
 }

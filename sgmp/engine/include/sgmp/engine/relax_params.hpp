@@ -28,15 +28,13 @@ enum class RelaxMode {
 struct RelaxParams {
     RelaxMode mode = RelaxMode::None;
     /// Contact stiffness k of the first stage, in m·g/d: a contact pressed by one weight m·g
-    /// overlaps by d/k.
-    double stiffness = 2e3;
+    /// overlaps by d/k. Unset: the mode's (relax_schedule).
+    std::optional<double> stiffness;
     /// Each later stage multiplies the stiffness by this factor (shrinking the overlaps).
     double stiffness_factor = 10.0;
-    /// Number of stiffness stages (1 = the first stiffness only). The default 5 ends at
-    /// k = 2·10⁷: the overlaps the clearing then unloads are 10× smaller than at 2·10⁶, and
-    /// so are the gaps the unloading opens: at N = 9000 1 % of the contacts within 10⁻⁵·d
-    /// end beyond 10⁻⁶·d, against 6 % with 4 stages (sgmp/engine/docs/relaxation-2026-11.md).
-    int stages = 5;
+    /// Number of stiffness stages (1 = the first stiffness only). Unset: the mode's
+    /// (relax_schedule).
+    std::optional<int> stages;
     /// Contact shell s: the soft spheres are (1 + s) times the real ones, so a soft contact
     /// pressed by less than s·k·(rᵢ + rⱼ)/d weights leaves the real spheres apart by a gap of
     /// at most s·(rᵢ + rⱼ); only deeper soft overlaps are left for the clearing and the
@@ -49,8 +47,8 @@ struct RelaxParams {
     double force_tolerance = 1e-4;
     /// Bound on the first stage's simulated time, in units of √(H/g) with H the pack's height
     /// above the floor when the relaxation starts (the time the collective collapse takes is
-    /// of the order of a free fall through the pack).
-    double time = 5.0;
+    /// of the order of a free fall through the pack). Unset: the mode's (relax_schedule).
+    std::optional<double> time;
     /// Bound on each later stage's steps, in units of H/d_min (d_min the smallest diameter;
     /// at least 500 steps):
     /// the stiffer stages only relax the overlaps elastically, which takes a number of steps
@@ -72,6 +70,23 @@ struct RelaxParams {
     /// not an equilibrium: the certificate then says so (certified=false).
     int settle_limit = 5000;
 };
+
+/// The stiffness schedule a relaxation runs: the values given, else its mode's.
+///
+/// Frictionless: one stage at k = 2·10⁴ m·g/d, bounded at 200·√(H/g), which it does not
+/// reach below N = 10⁴: the soft pack ends converged (max|Fᵢ| ≤ 10⁻⁴ m·g) with overlaps of
+/// about 5·10⁻⁴·d, and the hard-sphere settling that follows takes 3–4× fewer LPs than after
+/// the five unconverged stages from 2·10³ (sgmp/engine/docs/relax-certified.md).
+/// Frictional (and a request without relaxation): five stages from k = 2·10³ (ending at
+/// 2·10⁷), the first bounded at 5·√(H/g): the frictional stages do not converge anyway
+/// (relaxation-frictional-2026-11.md), and one converged stage at 2·10⁴ left the frictional
+/// settling no faster.
+struct RelaxSchedule {
+    double stiffness = 0.0;  ///< of the first stage, m·g/d
+    int stages = 0;
+    double time = 0.0;  ///< bound on the first stage, in √(H/g)
+};
+RelaxSchedule relax_schedule(const RelaxParams& params);
 
 /// The name table of the relaxation modes (name_table.hpp).
 const NameTable<RelaxMode, 3>& relax_modes();

@@ -369,8 +369,8 @@ void add_relax_rows(std::vector<Row>& rows) {
         "relax", g, [](auto& r) -> auto& { return r.relax.mode; }, [] { return relax_modes(); },
         "after deposition: none | frictionless (relax the whole pack under gravity to an "
         "equilibrium of frictionless soft spheres by FIRE energy minimisation, then settle it as "
-        "hard spheres into a certified equilibrium by linear programming; slow: about 15 s at "
-        "N = 1002) | frictional (the same with Coulomb friction at --relax-friction: "
+        "hard spheres into a certified equilibrium by linear programming; about 5 s at N = 1002, "
+        "2 min at N = 3000) | frictional (the same with Coulomb friction at --relax-friction: "
         "tangential springs capped at mu*F_n, then a frictional hard-sphere settling into a "
         "certified equilibrium; slower still)");
     relax.check = [](const PackRequest& r, const PackCheckContext&) {

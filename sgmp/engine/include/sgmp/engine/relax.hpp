@@ -25,12 +25,15 @@
 /// the equilibrium. Neighbours come from a Verlet list (neighbour_list.hpp, skin 0.25·d_min).
 ///
 /// Stiffness schedule: stages s = 0 … stages−1 at k_s = k₀·factorˢ, each started at rest from
-/// the previous one's end and run until max|Fᵢ| ≤ tolerance or its bound. The soft first
-/// stage (default k₀ = 2·10³: overlaps under the pack's weight of about 0.5 % of d at
-/// N = 3000, like the DEM reference's Hertz contacts) does the collective rearrangement with
-/// long time steps; it is bounded in simulated time, `time`·√(H/g) (H the pack's height
-/// above the floor), since the collapse takes about a free fall through the pack. The
-/// stiffer ones (the default ends at 2·10⁷) squeeze the overlaps below the shell; that is an
+/// the previous one's end and run until max|Fᵢ| ≤ tolerance or its bound (each mode's
+/// defaults: relax_schedule in relax_params.hpp). The soft first stage does the collective
+/// rearrangement with long time steps; it is bounded in simulated time, `time`·√(H/g) (H
+/// the pack's height above the floor), since the collapse takes about a free fall through
+/// the pack. Frictionless, by default, that one stage (k₀ = 2·10⁴: overlaps of about
+/// 5·10⁻⁴·d at N = 3000) runs to convergence, so the hard-sphere settling starts from a soft
+/// equilibrium. Frictional, by default, it is softer (k₀ = 2·10³, overlaps of about 0.5 %
+/// of d, like the DEM reference's Hertz contacts) and bounded at 5·√(H/g), and four
+/// stiffer stages (ending at 2·10⁷) squeeze the overlaps below the shell; that is an
 /// elastic relaxation across the pack's height, so they are bounded by `crossings`·H/d_min
 /// steps (at least 500), whatever k. When a stage ends unconverged, 200 steps of steepest
 /// descent c += (0.05/k)·F settle the stiff contact modes (overlaps of spheres still moving)
@@ -42,9 +45,9 @@
 /// steps at N = 3000–9000).
 ///
 /// Frictionless packs under gravity creep (reference/README.md: a μ = 0 DEM pour takes 7×
-/// the steps of a μ = 0.01 one), so the default bounds, chosen for speed, usually end the
-/// stages before the tolerance is met; `relax_force_max` in the header says what is left
-/// (about 1–5 m·g on the worst sphere at N = 3000–9000: a few spheres still sliding).
+/// the steps of a μ = 0.01 one): the frictionless stage at 2·10⁴ converges in 6·10⁴–1.5·10⁵
+/// steps at N = 1000–3000. The frictional stages' bounds usually end them before the
+/// tolerance is met; `relax_force_max` in the header says what is left.
 ///
 /// Settle: the hard-sphere pack is then settled under gravity by sequential linear
 /// programming (hard_sphere_settle.hpp) into an exact equilibrium, frictionless or

@@ -113,7 +113,9 @@ def pack(count, arrangement, seed=None, *, phi_target=None, size_modes=None,
       relax_stiffness_factor, relax_stages, relax_shell, relax_force_tolerance, relax_time,
       relax_crossings, relax_friction (mu of 'frictional', default 0.5),
       relax_settle_limit, relax_tangential_ratio (k_t/k of 'frictional'): the relaxation (a relaxed pack is returned whether or not it is
-      certified: read pack.header['certified'])
+      certified: read pack.header['certified']); relax_stiffness, relax_stages and
+      relax_time default by mode (frictionless 2e4, 1, 200; frictional 2e3, 5, 5), and the
+      header records the values run
     - progress: called as progress(phase, done, total) with phase 'deposition' (spheres
       placed of total, every 1000), 'relaxation' or 'clearing' (minimiser steps) or
       'settling' (LP iterations); total is 0 where none is known.

@@ -460,8 +460,8 @@ void relax_soft(std::vector<Particle>& particles, const Container& container,
         std::function<void(long)> tick;
         if (progress) {
             tick = [&, stage](long steps) {
-                progress({RelaxProgress::Phase::Soft, stage, schedule.stages, stats.steps + steps, 0,
-                          0.0});
+                progress({RelaxProgress::Phase::Soft, stage, schedule.stages, stats.steps + steps,
+                          0, 0.0});
             };
         }
         const StageResult r = run_stage(s, container, stiffness / diameter, params, bound, tick);
@@ -478,8 +478,8 @@ void relax_soft(std::vector<Particle>& particles, const Container& container,
             quench(s, container, stiffness / params.stiffness_factor / diameter, kQuenchSteps);
     }
     if (progress) {
-        progress({RelaxProgress::Phase::Clearing, schedule.stages - 1, schedule.stages, stats.steps, 0,
-                  0.0});
+        progress({RelaxProgress::Phase::Clearing, schedule.stages - 1, schedule.stages, stats.steps,
+                  0, 0.0});
     }
     stats.steps += clear_real_overlaps(
         s, container, stiffness / params.stiffness_factor / diameter, params.shell,
@@ -515,8 +515,8 @@ RelaxStats relax_pack(std::vector<Particle>& particles, const Container& contain
     if (progress) {
         options.progress = [&](int iteration, double trust) {
             const int stages = relax_schedule(params).stages;
-            progress({RelaxProgress::Phase::Settling, stages - 1, stages, stats.steps,
-                      iteration, trust});
+            progress({RelaxProgress::Phase::Settling, stages - 1, stages, stats.steps, iteration,
+                      trust});
         };
     }
     const SettleStats settle = settle_hard_spheres(particles, container, diameter, options);

@@ -1,8 +1,11 @@
 #include "sgmp/batch/run_job.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 
 #include "sgmp/engine/make_pack.hpp"
 
@@ -15,10 +18,21 @@ double since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-SummaryRow base_row(const Plan& plan, std::size_t job, const std::string& path) {
+/// The relaxation's schedule, which a job may leave blank for its mode's own values
+/// (engine::relax_schedule): the summary shows the values run, as the pack's header records.
+constexpr std::array<std::string_view, 3> kScheduled = {"relax_stiffness", "relax_stages",
+                                                        "relax_time"};
+
+SummaryRow base_row(const Plan& plan, std::size_t job, const Pack& pack, const std::string& path) {
     SummaryRow row;
     row.job = job;
     row.values = plan.values(job);
+    for (const std::string_view name : kScheduled) {
+        std::string& value = row.values.at(parameter_index(name));
+        if (const auto recorded = pack.metadata.get(std::string(name)); value.empty() && recorded) {
+            value = *recorded;
+        }
+    }
     row.seed = plan.seed(job);
     row.path = path;
     return row;
@@ -42,7 +56,7 @@ JobResult run_job(const Plan& plan, std::size_t job, const JobOptions& options,
     JobResult result;
     const auto start = Clock::now();
     result.pack = engine::make_pack(request);
-    result.row = base_row(plan, job, path);
+    result.row = base_row(plan, job, result.pack, path);
     result.row.seconds = since(start);
     add_metrics(result.row, result.pack, options);
     return result;
@@ -63,7 +77,7 @@ SummaryRow reused_row(const Plan& plan, std::size_t job, const Pack& pack,
     expect("count", values[parameter_index("count")]);
     expect("arrangement", values[parameter_index("arrangement")]);
     expect("seed", std::to_string(plan.seed(job)));
-    SummaryRow row = base_row(plan, job, path);
+    SummaryRow row = base_row(plan, job, pack, path);
     add_metrics(row, pack, options);
     return row;
 }

@@ -152,29 +152,18 @@ void check_relax_stages(const PackRequest& r, const PackCheckContext&) {
 }
 
 /// A row of the stiffness schedule (relax_schedule): unset by default, so that each mode
-/// runs its own; `set` stores a parsed value, and the header records the value the
-/// relaxation runs (`effective`).
-template <class T>
-Row scheduled(std::string name, std::function<void(RelaxParams&, T)> set,
-              std::function<T(const RelaxSchedule&)> effective, std::string help, Check check) {
-    Row row;
-    row.name = std::move(name);
-    row.group = "relax";
-    row.kind = std::is_integral_v<T> ? ValueKind::Integer : ValueKind::Number;
-    row.help = std::move(help);
-    row.rule = std::is_integral_v<T> ? "must be a whole number" : "must be a number";
-    row.parse = [set](PackRequest& r, std::string_view text) {
-        std::optional<T> value;
+/// runs its own; `member` reaches the optional the request holds (the number or whole-number
+/// row's parse and rule), and the header records the value the relaxation runs (`effective`).
+template <class T, class Member>
+Row scheduled(std::string name, Member member, std::function<T(const RelaxSchedule&)> effective,
+              std::string help, Check check) {
+    Row row = [&] {
         if constexpr (std::is_integral_v<T>) {
-            value = parse_whole<T>(text);
+            return whole(std::move(name), "relax", member, std::move(help), std::move(check));
         } else {
-            value = parse_real(text);
+            return number(std::move(name), "relax", member, std::move(help), std::move(check));
         }
-        if (value) {
-            set(r.relax, *value);
-        }
-        return value.has_value();
-    };
+    }();
     row.format = [effective](const PackRequest& r) {
         const T value = effective(relax_schedule(r.relax));
         if constexpr (std::is_integral_v<T>) {
@@ -183,7 +172,6 @@ Row scheduled(std::string name, std::function<void(RelaxParams&, T)> set,
             return format_number(value);
         }
     };
-    row.check = std::move(check);
     row.unset_by_default = true;
     return row;
 }
@@ -381,7 +369,7 @@ void add_relax_rows(std::vector<Row>& rows) {
     };
     rows.push_back(std::move(relax));
     rows.push_back(scheduled<double>(
-        "relax_stiffness", [](RelaxParams& x, double v) { x.stiffness = v; },
+        "relax_stiffness", [](auto& r) -> auto& { return r.relax.stiffness; },
         [](const RelaxSchedule& x) { return x.stiffness; },
         "contact stiffness k of the first relaxation stage in m*g/d (a contact carrying one "
         "weight m*g overlaps by d/k); default 2e4 frictionless, 2e3 frictional",
@@ -396,7 +384,7 @@ void add_relax_rows(std::vector<Row>& rows) {
             "relax_stiffness_factor", [](const PackRequest& r) { return r.relax.stiffness_factor; },
             1.0, 1e6, "must be in [1, 1e6]")));
     rows.push_back(scheduled<int>(
-        "relax_stages", [](RelaxParams& x, int v) { x.stages = v; },
+        "relax_stages", [](auto& r) -> auto& { return r.relax.stages; },
         [](const RelaxSchedule& x) { return x.stages; },
         "number of stiffness stages (1 to 10); default 1 frictionless (run to convergence), 5 "
         "frictional",
@@ -419,7 +407,7 @@ void add_relax_rows(std::vector<Row>& rows) {
             }
         }));
     rows.push_back(scheduled<double>(
-        "relax_time", [](RelaxParams& x, double v) { x.time = v; },
+        "relax_time", [](auto& r) -> auto& { return r.relax.time; },
         [](const RelaxSchedule& x) { return x.time; },
         "bound on the first stage's simulated time, in units of sqrt(H/g) (H: the pack's height "
         "above the floor); default 200 frictionless, 5 frictional",

@@ -158,6 +158,19 @@ std::optional<T> parse_whole(std::string_view text) {
                                            static_cast<Wide>(std::numeric_limits<T>::max())));
 }
 
+/// The value type of a row's member: T for T and for std::optional<T> (a member that may
+/// be left unset, which formats as "").
+template <class T>
+struct RowValue {
+    using type = T;
+    static std::optional<T> get(const T& member) { return member; }
+};
+template <class T>
+struct RowValue<std::optional<T>> {
+    using type = T;
+    static std::optional<T> get(const std::optional<T>& member) { return member; }
+};
+
 /// A row of a real-valued member reached by `member(request)` (a generic lambda returning a
 /// reference), refused unless the whole text is a number.
 template <class Request, class Context, class Member>
@@ -177,7 +190,11 @@ ParameterRow<Request, Context> number_row(
         }
         return value.has_value();
     };
-    row.format = [member](const Request& r) { return format_number(member(r)); };
+    row.format = [member](const Request& r) {
+        using Held = std::remove_cvref_t<decltype(member(r))>;
+        const auto value = RowValue<Held>::get(member(r));
+        return value ? format_number(*value) : std::string{};
+    };
     row.check = std::move(check);
     return row;
 }
@@ -194,14 +211,18 @@ ParameterRow<Request, Context> whole_row(
     row.help = std::move(help);
     row.rule = "must be a whole number";
     row.parse = [member](Request& r, std::string_view text) {
-        using T = std::remove_reference_t<decltype(member(r))>;
+        using T = typename RowValue<std::remove_reference_t<decltype(member(r))>>::type;
         const auto value = parse_whole<T>(text);
         if (value) {
             member(r) = *value;
         }
         return value.has_value();
     };
-    row.format = [member](const Request& r) { return std::to_string(member(r)); };
+    row.format = [member](const Request& r) {
+        using Held = std::remove_cvref_t<decltype(member(r))>;
+        const auto value = RowValue<Held>::get(member(r));
+        return value ? std::to_string(*value) : std::string{};
+    };
     row.check = std::move(check);
     return row;
 }

@@ -513,8 +513,8 @@ RelaxStats relax_pack(std::vector<Particle>& particles, const Container& contain
         options.friction = params.friction;  // at μ = 0 the frictionless settling is the same
     }
     if (progress) {
-        options.progress = [&](int iteration, double trust) {
-            const int stages = relax_schedule(params).stages;
+        const int stages = relax_schedule(params).stages;
+        options.progress = [&, stages](int iteration, double trust) {
             progress({RelaxProgress::Phase::Settling, stages - 1, stages, stats.steps, iteration,
                       trust});
         };

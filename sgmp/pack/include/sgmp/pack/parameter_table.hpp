@@ -163,12 +163,10 @@ std::optional<T> parse_whole(std::string_view text) {
 template <class T>
 struct RowValue {
     using type = T;
-    static std::optional<T> get(const T& member) { return member; }
 };
 template <class T>
 struct RowValue<std::optional<T>> {
     using type = T;
-    static std::optional<T> get(const std::optional<T>& member) { return member; }
 };
 
 /// A row of a real-valued member reached by `member(request)` (a generic lambda returning a
@@ -191,8 +189,8 @@ ParameterRow<Request, Context> number_row(
         return value.has_value();
     };
     row.format = [member](const Request& r) {
-        using Held = std::remove_cvref_t<decltype(member(r))>;
-        const auto value = RowValue<Held>::get(member(r));
+        using T = typename RowValue<std::remove_cvref_t<decltype(member(r))>>::type;
+        const std::optional<T> value = member(r);
         return value ? format_number(*value) : std::string{};
     };
     row.check = std::move(check);
@@ -219,8 +217,8 @@ ParameterRow<Request, Context> whole_row(
         return value.has_value();
     };
     row.format = [member](const Request& r) {
-        using Held = std::remove_cvref_t<decltype(member(r))>;
-        const auto value = RowValue<Held>::get(member(r));
+        using T = typename RowValue<std::remove_cvref_t<decltype(member(r))>>::type;
+        const std::optional<T> value = member(r);
         return value ? std::to_string(*value) : std::string{};
     };
     row.check = std::move(check);

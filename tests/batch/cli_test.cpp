@@ -157,8 +157,9 @@ BOOST_AUTO_TEST_CASE(batch_packs_equal_sgmp_pack_and_reruns_are_refused) {
     BOOST_REQUIRE(rows.size() == 4u);
     BOOST_TEST(rows[1].fields.back() == "p/none-2.xyz");
     BOOST_TEST(rows[2].fields.back() == "p/frictionless-4.xyz");
-    // The relaxation's schedule, unswept: the values the pack ran (its mode's own), as its
-    // header records them; blank where nothing relaxed.
+    // Defaults that depend on the job (the relaxation's schedule by mode, the sweep stages by
+    // arrangement), unswept: the values the pack ran, as its header records them; blank where
+    // nothing relaxed.
     const auto field = [&](std::size_t row, std::string_view name) {
         return rows[row].fields.at(1 + parameter_index(name));
     };
@@ -166,6 +167,7 @@ BOOST_AUTO_TEST_CASE(batch_packs_equal_sgmp_pack_and_reruns_are_refused) {
     BOOST_TEST(field(2, "relax_stiffness") == "20000");
     BOOST_TEST(field(2, "relax_stages") == "1");
     BOOST_TEST(field(2, "relax_time") == "200");
+    BOOST_TEST(field(1, "sweep_stages") == "120");  // large-dense's stages, unswept
     // A re-run: exit 1 naming the first existing file; nothing changes.
     const auto before = sgmp::testing::read_bytes(s.path("io/summary.csv"));
     const Run again = s.batch(args);

@@ -1,13 +1,12 @@
 #include "sgmp/batch/run_job.hpp"
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <stdexcept>
 #include <string>
-#include <string_view>
 
 #include "sgmp/engine/make_pack.hpp"
+#include "sgmp/engine/pack_parameters.hpp"
 
 namespace sgmp::batch {
 namespace {
@@ -18,19 +17,19 @@ double since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-/// The relaxation's schedule, which a job may leave blank for its mode's own values
-/// (engine::relax_schedule): the summary shows the values run, as the pack's header records.
-constexpr std::array<std::string_view, 3> kScheduled = {"relax_stiffness", "relax_stages",
-                                                        "relax_time"};
-
+/// A job's row: its values, where a parameter left blank for its default by context (the
+/// relaxation's schedule, by mode; the sweep stages, by arrangement) shows the value the pack
+/// ran, as its header records it.
 SummaryRow base_row(const Plan& plan, std::size_t job, const Pack& pack, const std::string& path) {
     SummaryRow row;
     row.job = job;
     row.values = plan.values(job);
-    for (const std::string_view name : kScheduled) {
-        std::string& value = row.values.at(parameter_index(name));
-        if (const auto recorded = pack.metadata.get(std::string(name)); value.empty() && recorded) {
-            value = *recorded;
+    const auto& table = parameters();
+    for (std::size_t i = 0; i < table.size(); ++i) {
+        const auto recorded = pack.metadata.get(table[i].name);
+        if (row.values[i].empty() && recorded &&
+            engine::find_pack_parameter(table[i].name)->unset_by_default) {
+            row.values[i] = *recorded;
         }
     }
     row.seed = plan.seed(job);

@@ -178,8 +178,11 @@ struct RegressOptions {
 };
 
 int run_regress(const RegressOptions& o) {
-    const auto baseline = parse_baseline(read_json(o.baseline), o.baseline);
-    const auto current = parse_baseline(read_json(o.current), o.current);
+    const nlohmann::json baseline_file = read_json(o.baseline);
+    const nlohmann::json current_file = read_json(o.current);
+    const auto baseline = parse_baseline(baseline_file, o.baseline);
+    const auto current = parse_baseline(current_file, o.current);
+    check_measured_alike(baseline_file, o.baseline, current_file, o.current);
     if (baseline.empty()) {
         throw InputError(o.baseline, 0, "the baseline has no entries");
     }
@@ -221,10 +224,11 @@ CommandRunner register_crossval(CLI::App& app) {
     cmd->add_option("--thesis-start", options->thesis_start,
                     "the thesis' starting-pack CSV (data/thesis/starting_packs.csv) to show "
                     "starting heights beside ours");
-    cmd->add_option("--tuning", options->tuning,
-                    "CSV 'group,parameter,value,reference,count,seeds,note' of candidate "
-                    "parameters tuned against reference packs (data/tuning/tuned_parameters.csv): listed on "
-                    "every page; comparisons on the seeds they were tuned on are not judged");
+    cmd->add_option(
+        "--tuning", options->tuning,
+        "CSV 'group,parameter,value,reference,count,seeds,note' of candidate "
+        "parameters tuned against reference packs (data/tuning/tuned_parameters.csv): listed on "
+        "every page; comparisons on the seeds they were tuned on are not judged");
     cmd->add_flag("--pictures,!--no-pictures", options->pictures,
                   "add pictures of packs rendered with POV-Ray: at N = 9000 (or the largest "
                   "count with both roles) one seed of each candidate group beside one pack of "

@@ -215,6 +215,11 @@ BOOST_AUTO_TEST_CASE(tuned_comparisons_are_withheld_and_disclosed) {
     CrossValidation cv = cross_validate(report, sample_manifest(), {});
     cv.tuning = tuning;
     const std::string md = render_crossval_markdown(cv);
+    // The answer comes first: one sentence per mode, before the stand-in details, the
+    // tuned parameters and the DEM table.
+    BOOST_TEST(md.find("## The answer\n") == 0u);
+    BOOST_TEST(md.find("- **loose-random** (tuned): ") < md.find("## Which SGMP mode"));
+    BOOST_TEST(md.find("## Which SGMP mode") < md.find("## Tuned parameters"));
     BOOST_TEST(md.find("- **loose-random** (tuned): relax_friction = 0.2, tuned against DEM "
                        "mu=0.5 at N = 150 (seeds 1 2 3 4 5 7); chosen from 0.1, 0.2.") !=
                std::string::npos);
@@ -243,8 +248,21 @@ BOOST_AUTO_TEST_CASE(holm_keeps_what_the_step_down_rule_keeps) {
     StandIn s = stand_in_from({{300, {agree, weak}}});
     BOOST_TEST(s.differ == 1u);
     BOOST_TEST(s.differ_familywise == 0u);
-    BOOST_TEST(s.stands_in());  // 1 of 2 agree: half
+    BOOST_TEST(!s.stands_in());  // 1 of 2 judged agree: half is no majority
+    BOOST_TEST(to_string(s.decision) == "undecided");
     BOOST_TEST(s.worst_metric == metric_rule("split_ratio").label);
+    // An inconclusive metric counts as judged: 2 of 3 agree stands in, 1 of 3 does not.
+    MetricRow open = metric("voronoi_phi_mean", 0.60, 0.60, 0.01);
+    open.verdict = Verdict::Inconclusive;
+    MetricRow agree_z = metric("z_mean_tol_1e-3", 4.8, 4.8, 0.3);
+    BOOST_TEST(stand_in_from({{300, {agree, agree_z, open}}}).stands_in());
+    BOOST_TEST(!stand_in_from({{300, {agree, open, open}}}).stands_in());
+    const StandIn tallied = stand_in_from({{300, {agree, agree_z, open}}, {600, {agree, open}}});
+    BOOST_TEST_REQUIRE(tallied.tallies.size() == 2u);
+    BOOST_TEST(tallied.tallies[0].standing);
+    BOOST_TEST((tallied.tallies[0].agree == 2u && tallied.tallies[0].judged == 3u));
+    BOOST_TEST(!tallied.tallies[1].standing);
+    BOOST_TEST(to_string(tallied.decision) == "undecided");
     weak.p_differ = 0.001;
     s = stand_in_from({{300, {agree, weak}}});
     BOOST_TEST(to_string(s.decision) == "differs");

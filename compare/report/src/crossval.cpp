@@ -33,18 +33,23 @@ std::optional<double> mean_seconds(const std::vector<ManifestEntry>& manifest,
 void fill_from_packs(HeadlineRow& row, const Group& group) {
     double height_sum = 0.0;
     std::size_t heights = 0;
+    std::size_t packs = 0;
+    std::size_t certified = 0;
     for (const auto& pack : group.packs) {
         if (pack.count != row.count) {
             continue;
         }
+        ++packs;
         row.diameter = pack.diameter;
         for (const auto& [key, value] : pack.provenance) {
             if (key == "start_height") {
                 height_sum += std::stod(value);
                 ++heights;
             }
+            certified += key == "certified" && value == "true" ? 1 : 0;
         }
     }
+    row.certified = packs > 0 && certified == packs;
     if (heights > 0) {
         row.start_height = height_sum / static_cast<double>(heights);
     }
@@ -188,9 +193,9 @@ StandIn stand_in_from(
             if (!judged(m)) {
                 continue;
             }
-            // A test that could not agree at these n (interval wider than the margin) is no
-            // evidence either way: the share counts the decidable ones.
-            judged_here += m.power || m.verdict == Verdict::Differ ? 1 : 0;
+            // Every judged metric counts, decided or not: "stands in" needs a majority of
+            // what was judged to agree, not of what happened to decide.
+            ++judged_here;
             agree_here += m.verdict == Verdict::Agree ? 1 : 0;
             s.agree += m.verdict == Verdict::Agree ? 1 : 0;
             s.differ += m.verdict == Verdict::Differ ? 1 : 0;
@@ -200,12 +205,12 @@ StandIn stand_in_from(
             rows.emplace_back(count, &m);
         }
         const bool enough =
-            judged_here > 0 && static_cast<double>(agree_here) >=
-                                   kStandInAgreeShare * static_cast<double>(judged_here);
+            judged_here > 0 &&
+            static_cast<double>(agree_here) > kStandInAgreeShare * static_cast<double>(judged_here);
         every_count_agrees = every_count_agrees && enough;
-        if (enough && holm_rejected(p_here, kFamilyAlpha).empty()) {
-            ++s.counts_standing;
-        }
+        const bool standing = enough && holm_rejected(p_here, kFamilyAlpha).empty();
+        s.counts_standing += standing ? 1 : 0;
+        s.tallies.push_back({count, agree_here, judged_here, standing});
     }
     const auto rejected = holm_rejected(p, kFamilyAlpha);
     s.differ_familywise = rejected.size();

@@ -1,5 +1,7 @@
 #include "sgmp/report/crossval_render.hpp"
 
+#include "crossval_answer.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -54,6 +56,9 @@ std::string pace_against_pour(const std::optional<double>& speedup) {
 std::string stand_in_sentence(const StandIn& s) {
     const std::size_t judged = s.agree + s.differ + s.inconclusive;
     std::ostringstream out;
+    if (s.tallies.empty()) {
+        return "not compared (no count has packs of both)";
+    }
     if (s.decision == StandInDecision::Invalid) {
         out << "invalid, not judged: " << s.invalid;
         return out.str();
@@ -129,14 +134,12 @@ void dem_parameters_markdown(std::ostringstream& md, const CrossValidation& cv) 
 }
 
 void stand_in_markdown(std::ostringstream& md, const CrossValidation& cv) {
-    tuning_markdown(md, cv);
-    dem_parameters_markdown(md, cv);
     md << "## Which SGMP mode stands in for which DEM class\n\n";
     md << "Every verdict is an equivalence test on a declared margin (rules at the end of the "
           "page). A mode *stands in* for a class when no test differs under Holm's procedure "
-          "over every judged metric and count (family-wise error ≤ 5 %) and at every count at "
-          "least half the decidable metrics agree (those whose interval's half-width is below the "
-          "margin, so agreement was reachable); it *differs* when Holm keeps a difference; "
+          "over every judged metric and count (family-wise error ≤ 5 %) and at every count a "
+          "majority of the metrics judged there agree (decided or not); it *differs* when Holm "
+          "keeps a difference; "
           "otherwise it is *undecided*. A relaxed mode whose packs are not certified "
           "mechanical equilibria is *invalid* and not judged. Speed: the DEM pour's mean wall time "
           "over the mode's "
@@ -488,7 +491,10 @@ std::string render_headline_text(const CrossValidation& cv) {
 
 std::string render_crossval_markdown(const CrossValidation& cv) {
     std::ostringstream md;
+    answer_markdown(md, cv);
     stand_in_markdown(md, cv);
+    tuning_markdown(md, cv);
+    dem_parameters_markdown(md, cv);
     matrix_markdown(md, cv);
     species_matrix_markdown(md, cv);
     headline_markdown(md, cv);

@@ -184,9 +184,8 @@ std::vector<std::string> rule_statements() {
         "certificate); otherwise their comparisons are not judged (info, 'not certified').",
         "Stands in: no test differs under Holm's procedure on the tests' p-values of "
         "|difference| <= m over every judged metric and count (family-wise error <= 5 %), and "
-        "at every count at least half the decidable metrics agree (those whose interval's "
-        "half-width, for g(r) its upper bound at a zero estimate, is below the margin, so "
-        "agreement was reachable). Differs: Holm keeps a "
+        "at every count a majority of the metrics judged there agree (every judged metric "
+        "counts, decided or not). Differs: Holm keeps a "
         "difference. Otherwise undecided. Pairs of reference classes are judged the same way; "
         "classes that stand in for each other are one family.",
         "Lengths are in units of the mean diameter d. Z at tolerance X counts neighbours with "

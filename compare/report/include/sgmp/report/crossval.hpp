@@ -46,6 +46,8 @@ struct HeadlineRow {
     std::optional<ThesisResult> thesis;
     std::optional<double> thesis_speedup;  // thesis runtime / seconds
     std::optional<double> start_height;    // mean `start_height` key of the packs
+    /// Every pack at this count carries an equilibrium certificate (`certified=true`).
+    bool certified = false;
     std::optional<ThesisStart> thesis_start;
 
     /// Candidate mean of a scalar metric (from the first comparison).
@@ -54,7 +56,9 @@ struct HeadlineRow {
 
 /// The family-wise level of the stand-in rule.
 inline constexpr double kFamilyAlpha = 0.05;
-/// The least share of a count's decidable metrics that must agree for a stand-in there.
+/// A stand-in at a count needs more than this share of the metrics judged there (agree,
+/// differ or inconclusive: every judged row, not only those that happened to decide) to
+/// agree: a majority.
 inline constexpr double kStandInAgreeShare = 0.5;
 
 enum class StandInDecision { StandsIn, Differs, Undecided, Invalid };
@@ -74,7 +78,17 @@ std::string_view to_string(StandInDecision decision);
 ///   undecided  otherwise (too few agree: the data cannot tell).
 /// Per count the same rule over that count's rows gives `counts_standing`.
 /// A single row's `differ` that Holm does not keep is counted in `differ` and named.
+/// One count of a stand-in record: how many judged metrics agree there, and whether the
+/// mode stands in at that count.
+struct CountTally {
+    std::size_t count = 0;
+    std::size_t agree = 0;
+    std::size_t judged = 0;
+    bool standing = false;
+};
+
 struct StandIn {
+    std::vector<CountTally> tallies;  // per count compared, in count order
     std::string candidate;
     std::string reference;
     std::size_t agree = 0;

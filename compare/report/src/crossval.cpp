@@ -225,6 +225,8 @@ StandIn stand_in_from(
     if (!rejected.empty()) {
         for (const std::size_t k : rejected) {
             consider(k);
+            const auto& [count, m] = rows[k];
+            s.kept.push_back({m->name, m->label, count, m->ratio.value_or(0.0)});
         }
         s.decision = StandInDecision::Differs;
     } else {

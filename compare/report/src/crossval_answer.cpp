@@ -41,6 +41,27 @@ std::vector<const HeadlineRow*> rows_of(const CrossValidation& cv, const std::st
     return rows;
 }
 
+/// The metrics a reader weighs first, in order: packing fraction, contacts, structure.
+constexpr const char* kLeadingMetrics[] = {"phi", "z_mean_tol_1e-3", "z_mean_tol_1e-2",
+                                           "g_r", "split_ratio",     "voronoi_phi_mean"};
+
+/// The kept difference to name: the first of kLeadingMetrics that differs (at its largest
+/// ratio), else the largest of any metric.
+KeptDifference leading_difference(const StandIn& s) {
+    for (const char* metric : kLeadingMetrics) {
+        const KeptDifference* best = nullptr;
+        for (const KeptDifference& d : s.kept) {
+            if (d.metric == metric && (best == nullptr || d.ratio > best->ratio)) {
+                best = &d;
+            }
+        }
+        if (best != nullptr) {
+            return *best;
+        }
+    }
+    return {"", s.worst_metric, s.worst_count, s.worst_ratio};
+}
+
 /// "stands in for X at N = … (agrees on a–b of j judged metrics there, with s seeds)".
 std::string relation(const StandIn& s, const std::vector<const HeadlineRow*>& rows) {
     std::ostringstream out;
@@ -71,8 +92,14 @@ std::string relation(const StandIn& s, const std::vector<const HeadlineRow*>& ro
         }
     }
     if (s.decision == StandInDecision::Differs) {
-        out << "differs from **" << s.reference << "** (" << s.worst_metric
-            << " at N = " << s.worst_count << ", " << decimals(s.worst_ratio, 1) << "× its margin)";
+        const KeptDifference d = leading_difference(s);
+        out << "differs from **" << s.reference << "** (" << d.label << " at N = " << d.count
+            << ", " << decimals(d.ratio, 1) << "× its margin";
+        if (s.kept.size() > 1) {
+            out << "; " << s.kept.size() - 1 << " more difference"
+                << (s.kept.size() > 2 ? "s" : "");
+        }
+        out << ")";
     } else if (standing.empty()) {
         out << "undecided against **" << s.reference << "** (no count where a majority of the "
             << "judged metrics agrees; " << s.agree << " of " << s.agree + s.differ + s.inconclusive
@@ -126,11 +153,10 @@ std::string pace(const std::vector<const HeadlineRow*>& rows) {
         const HeadlineRow& row = **it;
         for (const auto& v : row.against) {
             if (row.seconds && v.reference_seconds && v.speedup) {
-                return "At N = " + std::to_string(row.count) + " it takes " +
-                       decimals(*row.seconds, *row.seconds < 1.0 ? 2 : 1) + " s a pack against " +
-                       decimals(*v.reference_seconds, 0) + " s a pour of **" + v.reference +
-                       "** (recorded wall times: the packs' from the manifest, the pours' "
-                       "from when they were poured; not one run on one machine load).";
+                return "Time at N = " + std::to_string(row.count) + ": " +
+                       decimals(*row.seconds, *row.seconds < 1.0 ? 2 : 1) + " s a pack, " +
+                       decimals(*v.reference_seconds, 0) + " s a pour of " + v.reference +
+                       " (recorded times, not one run).";
             }
         }
     }

@@ -87,8 +87,17 @@ struct CountTally {
     bool standing = false;
 };
 
+/// A difference Holm's procedure keeps: metric (name and label), count, |Δ| / margin.
+struct KeptDifference {
+    std::string metric;
+    std::string label;
+    std::size_t count = 0;
+    double ratio = 0.0;
+};
+
 struct StandIn {
-    std::vector<CountTally> tallies;  // per count compared, in count order
+    std::vector<CountTally> tallies;   // per count compared, in count order
+    std::vector<KeptDifference> kept;  // the differences Holm keeps, in row order
     std::string candidate;
     std::string reference;
     std::size_t agree = 0;

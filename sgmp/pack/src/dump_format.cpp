@@ -119,6 +119,30 @@ double field_number(std::string_view field, const char* label, const LineReader&
     return *value;
 }
 
+/// A simulation box is not a container (stated_container.hpp): the walls come only from
+/// words after the BOX BOUNDS flags, "container x_min x_max z_min z_max floor", as
+/// `sgmp convert` writes them (LAMMPS and OVITO read the first three flags only).
+void set_stated_container(const std::vector<std::string_view>& flags,
+                          const std::string& bounds_item, const LineReader& reader, Pack& pack) {
+    if (flags.size() <= 3 || flags[3] != "container") {
+        return;
+    }
+    if (flags.size() != 9) {
+        throw reader.error("BOX BOUNDS '" + bounds_item +
+                           "': 'container' must be followed by five numbers x_min x_max "
+                           "z_min z_max floor");
+    }
+    std::string walls;
+    for (std::size_t i = 4; i < flags.size(); ++i) {
+        walls.append(i > 4 ? " " : "").append(flags[i]);
+    }
+    try {
+        pack.metadata.set("container", Container::parse(walls).to_string());
+    } catch (const std::invalid_argument& error) {
+        throw reader.error(error.what());
+    }
+}
+
 /// One snapshot, from the line after "ITEM: TIMESTEP".
 Pack read_snapshot(LineReader& reader) {
     Pack pack;
@@ -154,11 +178,7 @@ Pack read_snapshot(LineReader& reader) {
     const DumpColumns columns = parse_atom_labels(labels, reader);
     pack.metadata.set_integer("timestep", step);
     pack.metadata.set("dump_box", box);
-    // The file's own box is its container (walls at its x and z bounds, the floor at its
-    // lowest y; no lid), as for a LAMMPS data file: never the thesis default in silence.
-    pack.metadata.set("container", Container{bounds[0].first, bounds[0].second, bounds[2].first,
-                                             bounds[2].second, bounds[1].first}
-                                       .to_string());
+    set_stated_container(flags, bounds_item, reader, pack);
     if (periodic) {
         pack.metadata.set("sides", "periodic");
     }

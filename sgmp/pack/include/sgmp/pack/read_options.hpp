@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/pack.hpp"
+#include "sgmp/pack/stated_container.hpp"
 
 namespace sgmp {
 
@@ -23,6 +25,10 @@ struct ReadOptions {
     /// Keep the file's frame (output_frame.hpp: up_axis, box) instead of turning it y up
     /// (for showing a header as written).
     bool as_written = false;
+    /// The walls stated by the user (`--container`, a manifest's `container` column): the
+    /// pack's container, which a container the file states itself must match
+    /// (stated_container.hpp). Not applied when `as_written`.
+    std::optional<StatedContainer> container;
 };
 
 struct PackRead {
@@ -38,6 +44,10 @@ struct PackRead {
     /// ends print them as warnings): an extended XYZ whose `container` key disagrees with
     /// its Lattice/Origin cell (the key is kept).
     std::vector<std::string> warnings;
+    /// The box of a LAMMPS dump or data file as a container (walls at its x and z bounds,
+    /// the floor at its lowest y): taken as the container only when the spheres reach it
+    /// (stated_container.hpp); nullopt for other formats.
+    std::optional<Container> file_box;
 };
 
 }  // namespace sgmp

@@ -92,11 +92,10 @@ void add_common(CLI::App* command, CommonOptions& o) {
             return finite_range_rule(text, 0.0, 256.0, "[0, 256] (0: all cores)");
         });
     command->add_flag("--timings", o.timings, "print the seconds of each stage to stderr");
+    // Short: CLI11 does not wrap, and --help lines stay under 100 columns.
     o.container_option =
         command->add_option("--container", o.container,
-                            "the walls, \"x_min x_max z_min z_max floor\" as the header key "
-                            "container; needed for a dump or data file whose spheres do not reach "
-                            "its box (a simulation box is not a container)");
+                            "walls \"x_min x_max z_min z_max floor\" (header key container)");
 }
 
 void apply(CommonOptions& o) {

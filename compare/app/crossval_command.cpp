@@ -237,9 +237,8 @@ CommandRunner register_crossval(CLI::App& app) {
         "count; report.md, report.csv, report.json, headline.csv, crossval.json, baseline.json, "
         "plots/*.svg, index.html; prints the headline table");
     cmd->add_option("--manifest", options->manifest,
-                    "CSV 'role,group,count,seed,seconds,path' listing the packs (role candidate or "
-                    "reference; paths relative to the current directory), optionally with a "
-                    "last column container: the pack's walls, as --container")
+                    "CSV 'role,group,count,seed,seconds,path[,container]' listing the packs (role "
+                    "candidate or reference; paths relative to the current directory)")
         ->required();
     cmd->add_option("--thesis", options->thesis,
                     "the thesis' results CSV (data/thesis/results.csv) to show beside ours");

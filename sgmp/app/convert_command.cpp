@@ -259,10 +259,7 @@ CLI::App* register_convert(CLI::App& app) {
             return finite_range_rule(text, 1e-300, 1e300, "(0, 1e300]");
         });
     options.container_option = command->add_option(
-        "--container", options.container,
-        "the walls, \"x_min x_max z_min z_max floor\" as the header key container; needed for "
-        "a dump or data file whose spheres do not reach its box (a simulation box is not a "
-        "container); kept in OUT");
+        "--container", options.container, "walls of IN, \"x_min x_max z_min z_max floor\"; kept");
     command->add_flag("--force", options.force, "overwrite existing output files");
     return command;
 }

@@ -243,7 +243,7 @@ BOOST_AUTO_TEST_CASE(measure_refuses_an_unreached_box_and_takes_stated_walls) {
     const auto refused = run(kCompare, "measure " + wide + " --out m-refused");
     BOOST_TEST(refused.status == 1);
     BOOST_TEST(refused.err.find("sgmp-compare: " + wide +
-                                ": no container stated, and the spheres keep 0.6") == 0U,
+                                ": no container stated, and the spheres keep 0.486 d") == 0U,
                refused.err);
     BOOST_TEST(refused.err.find("--container") != std::string::npos);
     BOOST_TEST(std::count(refused.err.begin(), refused.err.end(), '\n') == 1);

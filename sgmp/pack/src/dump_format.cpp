@@ -119,6 +119,27 @@ double field_number(std::string_view field, const char* label, const LineReader&
     return *value;
 }
 
+/// The three "lo hi" lines after BOX BOUNDS, checked, as "xlo xhi ylo yhi zlo zhi" in the
+/// file's own digits.
+std::string read_box_bounds(LineReader& reader) {
+    std::string box;
+    for (int axis = 0; axis < 3; ++axis) {
+        const std::string line = expect_line(reader, "a box bounds line");
+        const auto fields = detail::split_fields(line);
+        const auto lo = fields.size() >= 2 ? detail::parse_double(fields[0]) : std::nullopt;
+        const auto hi = fields.size() >= 2 ? detail::parse_double(fields[1]) : std::nullopt;
+        if (!lo || !hi) {
+            throw reader.error("box bounds line must start with two numbers 'lo hi', found '" +
+                               line + "'");
+        }
+        if (!std::isfinite(*lo) || !std::isfinite(*hi) || !(*lo <= *hi)) {
+            throw reader.error("box bounds '" + line + "' must be finite with lo <= hi");
+        }
+        box.append(axis > 0 ? " " : "").append(fields[0]).append(" ").append(fields[1]);
+    }
+    return box;
+}
+
 /// A simulation box is not a container (stated_container.hpp): the walls come only from
 /// words after the BOX BOUNDS flags, "container x_min x_max z_min z_max floor", as
 /// `sgmp convert` writes them (LAMMPS and OVITO read the first three flags only).
@@ -153,26 +174,7 @@ Pack read_snapshot(LineReader& reader) {
     const auto flags = detail::split_fields(bounds_item);
     // "pp ff pp": periodic x and z (LAMMPS' boundary p f p), the sides of a periodic cell.
     const bool periodic = flags.size() >= 3 && flags[0] == "pp" && flags[2] == "pp";
-    std::string box;
-    std::array<std::pair<double, double>, 3> bounds{};
-    for (int axis = 0; axis < 3; ++axis) {
-        const std::string line = expect_line(reader, "a box bounds line");
-        const auto fields = detail::split_fields(line);
-        const auto lo = fields.size() >= 2 ? detail::parse_double(fields[0]) : std::nullopt;
-        const auto hi = fields.size() >= 2 ? detail::parse_double(fields[1]) : std::nullopt;
-        if (!lo || !hi) {
-            throw reader.error("box bounds line must start with two numbers 'lo hi', found '" +
-                               line + "'");
-        }
-        if (!std::isfinite(*lo) || !std::isfinite(*hi) || !(*lo <= *hi)) {
-            throw reader.error("box bounds '" + line + "' must be finite with lo <= hi");
-        }
-        if (axis > 0) {
-            box += ' ';
-        }
-        box.append(fields[0]).append(" ").append(fields[1]);
-        bounds[static_cast<std::size_t>(axis)] = {*lo, *hi};
-    }
+    const std::string box = read_box_bounds(reader);
     const std::string labels_text = expect_item(reader, "ATOMS");
     const auto labels = detail::split_fields(labels_text);
     const DumpColumns columns = parse_atom_labels(labels, reader);

@@ -34,7 +34,7 @@ struct ManifestEntry {
     std::optional<double> seconds;
     std::string path;
     /// The walls the row states (the `container` column), parsed by Container::parse.
-    std::optional<Container> container;
+    std::optional<Container> container{};
     /// The row's line in the manifest (from 1), for messages.
     std::size_t line = 0;
 };

@@ -30,7 +30,7 @@ struct PictureChoice {
     std::string
         file;  ///< the picture's name in the report, e.g. pictures/n9000-c1-loose-random.png
     /// The walls stated for the pack (the manifest's column or --container), if any.
-    std::optional<StatedContainer> container;
+    std::optional<StatedContainer> container{};
 };
 
 /// The packs pictured: at `preferred` when both roles have packs there, else at the largest

@@ -28,7 +28,7 @@ struct ReadOptions {
     /// The walls stated by the user (`--container`, a manifest's `container` column): the
     /// pack's container, which a container the file states itself must match
     /// (stated_container.hpp). Not applied when `as_written`.
-    std::optional<StatedContainer> container;
+    std::optional<StatedContainer> container{};
 };
 
 struct PackRead {
@@ -47,7 +47,7 @@ struct PackRead {
     /// The box of a LAMMPS dump or data file as a container (walls at its x and z bounds,
     /// the floor at its lowest y): taken as the container only when the spheres reach it
     /// (stated_container.hpp); nullopt for other formats.
-    std::optional<Container> file_box;
+    std::optional<Container> file_box{};
 };
 
 }  // namespace sgmp

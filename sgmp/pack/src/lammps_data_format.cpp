@@ -213,9 +213,10 @@ Pack read_lammps_data(std::istream& in, const std::string& source) {
         pack.particles.push_back(parse_atom(line, reader));
         validator.check(pack.particles.back(), reader);
     }
-    // The box is only recorded: a simulation box is not a container (stated_container.hpp);
-    // the walls come from a `# container=` comment, as `sgmp convert` writes it.
-    if (bounds[0] && bounds[1] && bounds[2]) {
+    // The box is only recorded, for a file that states no walls: a simulation box is not a
+    // container (stated_container.hpp); the walls come from a `# container=` comment, as
+    // `sgmp convert` writes it (and then nothing is added, so our files read back as written).
+    if (!pack.metadata.contains("container") && bounds[0] && bounds[1] && bounds[2]) {
         std::string box;
         for (std::size_t k = 0; k < 3; ++k) {
             box.append(k > 0 ? " " : "")

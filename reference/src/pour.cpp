@@ -24,7 +24,6 @@
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/pack/pack_overlaps.hpp"
 #include "sgmp/pack/sphere_box_volume.hpp"
-#include "sgmp/pack/stated_container.hpp"
 #include "sgmp/pack/version.hpp"
 #include "sgmp/reference/input_script.hpp"
 #include "sgmp/reference/launcher.hpp"
@@ -331,15 +330,11 @@ void check_at_rest(const Pack& raw, const PourParams& p) {
 Pack read_final(const fs::path& dump, const PourParams& p) {
     Pack raw;
     try {
-        // The walls are the input script's (the container, in metres), stated: a
-        // simulation box is not a container (sgmp/pack/stated_container.hpp).
-        const Container walls;
+        // The particles only: the walls are the input script's own (the container, recorded
+        // by `record`), and check_settled measures every sphere against them, so the dump's
+        // box is never taken for them (as written: no container is settled from the file).
         ReadOptions options;
-        options.container =
-            StatedContainer{Container{walls.x_min * kMetresPerUnit, walls.x_max * kMetresPerUnit,
-                                      walls.z_min * kMetresPerUnit, walls.z_max * kMetresPerUnit,
-                                      walls.floor * kMetresPerUnit},
-                            "the pour's walls"};
+        options.as_written = true;
         raw = read_pack_file(dump, options).pack;
     } catch (const std::exception& e) {
         std::string reason = e.what();

@@ -22,8 +22,9 @@ struct ReadOptions {
     /// Threads that parse the particle lines of an extended XYZ file (at least 1). The pack,
     /// and the error of a bad file, do not depend on it.
     unsigned threads = 1;
-    /// Keep the file's frame (output_frame.hpp: up_axis, box) instead of turning it y up
-    /// (for showing a header as written).
+    /// Keep the file's frame (output_frame.hpp: up_axis, box) instead of turning it y up,
+    /// and settle no container (stated_container.hpp): the header as written, or the
+    /// particles of a file whose walls the caller knows (a pour's own result).
     bool as_written = false;
     /// The walls stated by the user (`--container`, a manifest's `container` column): the
     /// pack's container, which a container the file states itself must match

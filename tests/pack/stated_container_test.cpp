@@ -123,6 +123,11 @@ BOOST_AUTO_TEST_CASE(a_box_is_taken_only_when_the_spheres_reach_it) {
     settle_container(far, StatedContainer{kBox, "--container"}, wider, "w.dump");
     BOOST_TEST(far.metadata.get("container").value_or("") == "0 4 0 4 0");
     BOOST_TEST(far.metadata.get("container_from").value_or("") == "--container");
+    // A box without width is no container either.
+    Pack flat = two_spheres(kGap);
+    BOOST_TEST(input_error_of([&] {
+                   settle_container(flat, std::nullopt, Container{1, 1, 0, 4, 0}, "f.dump");
+               }).find("f.dump: no container stated, and the box '1 1 0 4 0'") == 0U);
     // Periodic sides: only the floor must be reached.
     Pack periodic = two_spheres(kGap);
     periodic.metadata.set("sides", "periodic");

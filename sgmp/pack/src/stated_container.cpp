@@ -47,6 +47,12 @@ void check_agrees(const StatedContainer& stated, const Container& own, const std
 
 /// The file's box as its container, when the spheres reach it.
 Container reached_box(const Pack& pack, const Container& box, const std::string& source) {
+    if (!(box.x_min < box.x_max) || !(box.z_min < box.z_max)) {
+        throw InputError(source, 0,
+                         "no container stated, and the box '" + box.to_string() +
+                             "' (x_min x_max z_min z_max floor) has no width: state the walls "
+                             "with --container \"x_min x_max z_min z_max floor\"");
+    }
     const BoxClearance clearance = largest_box_clearance(pack.particles, box, mean_diameter(pack));
     if (clearance.gap_over_d > kBoxReachOverD) {
         throw InputError(

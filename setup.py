@@ -43,6 +43,7 @@ class CMakeBuild(build_ext):
 setup(
     packages=["sgmp"],
     package_dir={"sgmp": "sgmp/python/package/sgmp"},
+    package_data={"sgmp": ["py.typed", "_sgmp.pyi"]},
     ext_modules=[Extension("sgmp._sgmp", sources=[])],
     cmdclass={"build_ext": CMakeBuild},
     zip_safe=False,

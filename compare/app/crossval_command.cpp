@@ -202,8 +202,11 @@ struct RegressOptions {
 };
 
 int run_regress(const RegressOptions& o) {
-    const auto baseline = parse_baseline(read_json(o.baseline), o.baseline);
-    const auto current = parse_baseline(read_json(o.current), o.current);
+    const nlohmann::json baseline_file = read_json(o.baseline);
+    const nlohmann::json current_file = read_json(o.current);
+    const auto baseline = parse_baseline(baseline_file, o.baseline);
+    const auto current = parse_baseline(current_file, o.current);
+    check_measured_alike(baseline_file, o.baseline, current_file, o.current);
     if (baseline.empty()) {
         throw InputError(o.baseline, 0, "the baseline has no entries");
     }

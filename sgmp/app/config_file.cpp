@@ -33,6 +33,12 @@ std::vector<std::string> config_arguments(std::istream& in, const std::string& c
             continue;  // section markers
         }
         const std::string key = kebab(item.name);
+        if (key == "force" || key == "config") {
+            // Replacing files is the typist's decision; a file (perhaps someone else's)
+            // may not grant it, nor pull in further files.
+            throw std::invalid_argument("key '" + item.name +
+                                        "' is taken only from the command line (--" + key + ")");
+        }
         if ((has_distribution && key == "size-modes") ||
             (sizes_typed && (key == "size-modes" || key == "size-distribution"))) {
             continue;

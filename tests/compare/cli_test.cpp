@@ -374,6 +374,25 @@ BOOST_AUTO_TEST_CASE(measure_and_report_write_complete_directories) {
     BOOST_TEST(run("measure a.xyz --out m --force").status == 0);
     BOOST_TEST(sgmp::testing::read_bytes(scratch() / "m" / "a.metrics.json") == first);
     BOOST_TEST(sgmp::testing::read_bytes(scratch() / "m" / "a.g_r.csv") == curve);
+    // --force replaces only what measure wrote: never the directory its packs are in, and
+    // never the current directory, however it is spelled (it once deleted all of it).
+    for (const std::string out : {"\"$PWD\"", ".", "./", "\"$PWD/..\""}) {
+        const Result here = run("measure a.xyz --out " + out + " --force");
+        BOOST_TEST(here.status == 1, out);
+        BOOST_TEST(lines(here.err) == 1u, here.err);
+        BOOST_TEST(here.err.find("sgmp-compare: ") == 0u, here.err);
+        BOOST_TEST(here.err.find("current directory") != std::string::npos, here.err);
+    }
+    BOOST_TEST(fs::exists(scratch() / "a.xyz"));
+    BOOST_TEST(fs::exists(scratch() / "m" / "a.metrics.json"));
+    fs::create_directories(scratch() / "packs");
+    fs::copy_file(scratch() / "a.xyz", scratch() / "packs" / "a.xyz",
+                  fs::copy_options::overwrite_existing);
+    const Result packs = run("measure packs/a.xyz --out packs --force");
+    BOOST_TEST(packs.status == 1);
+    BOOST_TEST(packs.err.find("holds a.xyz, which this command did not write") != std::string::npos,
+               packs.err);
+    BOOST_TEST(fs::exists(scratch() / "packs" / "a.xyz"));
 
     // A failing report leaves nothing behind.
     write("bad.xyz", "1\n" + kHeader + "1 0 nan 0 0.05 0\n");
@@ -428,6 +447,18 @@ BOOST_AUTO_TEST_CASE(crossval_and_regress_end_to_end) {
     moved.insert(at + 9, "1");  // the first value (phi, about 0.6) becomes about 10.6
     write("moved.json", moved);
     BOOST_TEST(run("regress --baseline moved.json --current cv/baseline.json").status == 3);
+    // A baseline measured another way (g(r) bins of 0.5·d) is refused, not passed.
+    std::string rebinned = sgmp::testing::read_bytes(scratch() / "cv" / "baseline.json");
+    const auto bins = rebinned.find("\"gr_bin_width_over_d\": 0.02");
+    BOOST_TEST_REQUIRE(bins != std::string::npos);
+    rebinned.replace(bins, 27, "\"gr_bin_width_over_d\": 0.5");
+    write("rebinned.json", rebinned);
+    const Result unlike = run("regress --baseline rebinned.json --current cv/baseline.json");
+    BOOST_TEST(unlike.status == 1);
+    BOOST_TEST(unlike.err ==
+               "sgmp-compare: cv/baseline.json: measured with gr_bin_width_over_d "
+               "0.02, the baseline rebinned.json with 0.5; regress compares "
+               "metrics measured alike\n");
 
     // Bad manifests: one line naming file:line, status 1, no report directory.
     write("bad.csv", "role,group,count,seed,seconds,path\ncandidate,a,three,1,,x1.xyz\n");

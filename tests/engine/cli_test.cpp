@@ -317,6 +317,15 @@ BOOST_AUTO_TEST_CASE(a_config_file_repeats_a_run_and_the_command_line_wins) {
     BOOST_TEST(bogus.err == "sgmp: --config " + s.path("bogus.toml") +
                                 ": key 'bogus_key' names no option of 'pack' (--bogus-key)\n");
     BOOST_TEST(!fs::exists(s.path("x.xyz")));
+    // A config file never grants --force: replacing a file is the typist's decision.
+    std::ofstream(s.path("victim.txt")) << "precious";
+    std::ofstream(s.path("force.toml"))
+        << "count = 120\nforce = true\nout = \"" << s.path("victim.txt") << "\"\n";
+    const Run forced = s.run("pack --config '" + s.path("force.toml") + "'");
+    BOOST_TEST(forced.status == 2);
+    BOOST_TEST(forced.err == "sgmp: --config " + s.path("force.toml") +
+                                 ": key 'force' is taken only from the command line (--force)\n");
+    BOOST_TEST(sgmp::testing::read_bytes(s.path("victim.txt")) == "precious");
     // A blend's header records its distribution file and the modes read from it; a
     // config copied from it repeats the pack (the modes are the file's record).
     std::ofstream(s.path("blend.csv")) << "diameter,fraction\n1,0.5\n0.5,0.5\n";

@@ -94,3 +94,52 @@ def test_size_distributions_from_a_file_or_lognormal(tmp_path):
         sgmp.pack(10, "loose-random", size_distribution="lognormal:200:0.3", size_modes="1:1")
     with pytest.raises(ValueError, match="readable file"):
         sgmp.pack(10, "loose-random", size_distribution=str(tmp_path / "missing.csv"))
+
+
+def test_header_values_take_their_parameters_kind():
+    # The type comes from the parameter table, not the text: momentum is a float whether
+    # it reads 0 or 0.3, sweep_stages a tuple whether it lists one stage or three.
+    plain = sgmp.pack(60, "loose-random", seed=2)
+    staged = sgmp.pack(60, "loose-random", seed=2, momentum=0.3, sweep_stages="8,120,720")
+    assert plain.header["momentum"] == 0.0 and isinstance(plain.header["momentum"], float)
+    assert isinstance(staged.header["momentum"], float)
+    assert plain.header["sweep_stages"] == (120,)
+    assert staged.header["sweep_stages"] == (8, 120, 720)
+    assert isinstance(plain.header["circle_factor"], float)  # "50" in the file
+    assert isinstance(plain.header["lower_neighbours"], int)
+
+
+def test_signatures_are_readable_by_inspect():
+    for function in (sgmp.measure, sgmp.read, sgmp.write, sgmp.pack, sgmp.arrange):
+        signature = inspect.signature(function)
+        assert signature.return_annotation is not inspect.Signature.empty, function
+    assert list(inspect.signature(sgmp.measure).parameters)[:2] == ["pack", "region"]
+
+
+def test_write_refuses_header_entries_that_do_not_read_back(tmp_path):
+    positions = np.array([[0.0, -0.5, 0.0], [0.2, -0.5, 0.0]])
+    radii = np.array([0.05, 0.05])
+    # "a b" read back as {'a': 'T', 'b': '1'} and "x=y" as {'x': 'y=1'}; a line break or
+    # an ESC byte wrote a file that sgmp.read refuses.
+    for header in ({"a b": "1"}, {"x=y": "1"}, {"a\nb": "1"}, {"k": "v\x1b[31m"}, {"k": 'a"b'}):
+        with pytest.raises(ValueError, match="header"):
+            sgmp.Pack(positions, radii, header=header)
+    with pytest.raises(ValueError, match="must be a string"):
+        sgmp.Pack(positions, radii, header={3: "x"})
+    good = sgmp.Pack(positions, radii, header={"lab": "glass beads", "k": "1"})
+    sgmp.write(good, tmp_path / "g.xyz")
+    assert sgmp.read(tmp_path / "g.xyz").header_text["lab"] == "glass beads"
+
+
+def test_ids_and_bins_must_be_whole_numbers():
+    positions = np.array([[0.0, -0.5, 0.0], [0.2, -0.5, 0.0]])
+    radii = np.array([0.05, 0.05])
+    # NaN ids became INT64_MIN and 2.7 was truncated to 2, silently.
+    with pytest.raises(ValueError, match="ids: entry 1 = nan must be a whole number"):
+        sgmp.Pack(positions, radii, ids=np.array([1.0, np.nan]))
+    with pytest.raises(ValueError, match="bins: entry 0 = 2.7 must be a whole number"):
+        sgmp.Pack(positions, radii, bins=np.array([2.7, 1.0]))
+    with pytest.raises(ValueError, match="must be whole numbers"):
+        sgmp.Pack(positions, radii, ids=np.array(["1", "2"]))
+    exact = sgmp.Pack(positions, radii, ids=np.array([7.0, 9.0]), bins=np.array([3, 4]))
+    assert list(exact.ids) == [7, 9] and list(exact.bins) == [3, 4]

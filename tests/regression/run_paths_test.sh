@@ -29,6 +29,12 @@ status=0
 scripts/run --counts 2>"$scratch/err" || status=$?
 [[ $status == 2 && "$(cat "$scratch/err")" == "run: --counts needs a value (see --help)" ]] \
     || fail "--counts without a value: status $status, '$(cat "$scratch/err")'"
+# A newline in --out once sent packs to a stray file outside it: refused before any work.
+status=0
+scripts/run --counts 150 --out "$scratch/a"$'\n'"b" --build-dir "$build" 2>"$scratch/err" || status=$?
+[[ $status == 2 && "$(cat "$scratch/err")" == *"holds a control character"* ]] \
+    || fail "--out with a newline: status $status, '$(cat "$scratch/err")'"
+[[ ! -e "$scratch/a" && ! -e "$scratch/a"$'\n'"b" ]] || fail "--out with a newline wrote something"
 # The blend job: periodic SGMP packs of the bimodal blend against its stored pours, one
 # report per blend; a name that is no blend is a usage error.
 scripts/run --blends bimodal --counts 1002 --seeds 1 --modes "loose-random loose-random+relax" \

@@ -77,6 +77,46 @@ nlohmann::ordered_json baseline_json(const std::vector<BaselineEntry>& entries,
             {"entries", list}};
 }
 
+namespace {
+
+/// The measurement parameters a baseline records, or an InputError naming its file.
+const nlohmann::json& measurement_parameters(const nlohmann::json& json,
+                                             const std::string& source) {
+    const auto provenance = json.find("provenance");
+    if (provenance == json.end() || !provenance->is_object() ||
+        !provenance->contains("parameters") || !(*provenance)["parameters"].is_object()) {
+        throw InputError(source, 0,
+                         "records no provenance.parameters, so how its metrics were measured is "
+                         "unknown; make it again with this version's crossval");
+    }
+    return (*provenance)["parameters"];
+}
+
+}  // namespace
+
+void check_measured_alike(const nlohmann::json& baseline, const std::string& baseline_source,
+                          const nlohmann::json& current, const std::string& current_source) {
+    const nlohmann::json& was = measurement_parameters(baseline, baseline_source);
+    const nlohmann::json& now = measurement_parameters(current, current_source);
+    nlohmann::json keys = nlohmann::json::object();
+    for (const auto& [key, value] : was.items()) {
+        keys[key] = true;
+    }
+    for (const auto& [key, value] : now.items()) {
+        keys[key] = true;
+    }
+    for (const auto& [key, unused] : keys.items()) {
+        const std::string before = was.contains(key) ? was[key].dump() : "nothing";
+        const std::string after = now.contains(key) ? now[key].dump() : "nothing";
+        if (before != after) {
+            throw InputError(current_source, 0,
+                             "measured with " + key + " " + after + ", the baseline " +
+                                 baseline_source + " with " + before +
+                                 "; regress compares metrics measured alike");
+        }
+    }
+}
+
 std::vector<BaselineEntry> parse_baseline(const nlohmann::json& json, const std::string& source) {
     if (!json.is_object() || !json.contains("entries") || !json["entries"].is_array()) {
         throw InputError(source, 0, "not a baseline: no \"entries\" array");

@@ -22,6 +22,7 @@
 
 #include "sgmp/pack/host_name.hpp"
 #include "sgmp/pack/interrupt.hpp"
+#include "temporary_names.hpp"
 
 namespace sgmp {
 namespace fs = std::filesystem;
@@ -35,12 +36,6 @@ constexpr int kGzipLevel = 1;
 
 std::runtime_error path_error(const fs::path& path, const std::string& reason) {
     return std::runtime_error(path.string() + ": " + reason);
-}
-
-fs::path sibling_temporary(const fs::path& target, const char* kind) {
-    const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-    return parent / ("." + target.filename().string() + "." + kind + "-" +
-                     std::to_string(::getpid()) + "." + host_name());
 }
 
 /// The writer's process id of a temporary named `.NAME.tmp-PID.HOST` by this host, or 0
@@ -100,19 +95,6 @@ class DescriptorSink {
     std::string* failure_;
 };
 
-/// Flushes a directory's entries to disk, so a rename into it survives a power cut.
-void sync_directory(const fs::path& directory) {
-    const int fd = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (fd >= 0) {
-        (void)::fsync(fd);  // some file systems cannot sync a directory; the data is synced
-        ::close(fd);
-    }
-}
-
-fs::path parent_of(const fs::path& target) {
-    return target.parent_path().empty() ? fs::path(".") : target.parent_path();
-}
-
 /// Moves `from` to `to`. Without `overwrite` this is a hard link plus unlink, which
 /// fails rather than replace a file that appeared in the meantime.
 void move_into_place(const fs::path& from, const fs::path& to, bool overwrite) {
@@ -135,18 +117,40 @@ void move_into_place(const fs::path& from, const fs::path& to, bool overwrite) {
     fs::remove(from, ignored);
 }
 
-/// `message` with every mention of the temporary directory `temporary` as `target`.
-std::string as_output(std::string message, const fs::path& temporary, const fs::path& target) {
-    const std::string from = temporary.string();
-    const std::string to = target.string();
-    for (std::size_t at = message.find(from); at != std::string::npos;
-         at = message.find(from, at + to.size())) {
-        message.replace(at, from.size(), to);
-    }
-    return message;
+}  // namespace
+
+fs::path sibling_temporary(const fs::path& target, const char* kind) {
+    return parent_of(target) / ("." + target.filename().string() + "." + kind + "-" +
+                                std::to_string(::getpid()) + "." + host_name());
 }
 
-}  // namespace
+fs::path parent_of(const fs::path& target) {
+    return target.parent_path().empty() ? fs::path(".") : target.parent_path();
+}
+
+void sync_directory(const fs::path& directory) {
+    const int fd = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd >= 0) {
+        (void)::fsync(fd);  // some file systems cannot sync a directory; the data is synced
+        ::close(fd);
+    }
+}
+
+int create_exclusive(const fs::path& path) {
+    for (int attempt = 0; attempt < 2; ++attempt) {
+        const int fd =
+            ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+        if (fd >= 0 || errno != EEXIST || attempt > 0) {
+            return fd;
+        }
+        // The name holds this process's id, so whatever sits there is a leftover of an
+        // earlier process with the same id, or a planted link: removed (a symbolic link
+        // itself, never what it points to), then created afresh.
+        std::error_code ignored;
+        fs::remove_all(path, ignored);
+    }
+    return -1;
+}
 
 FileExists::FileExists(const fs::path& path)
     : std::runtime_error(path.string() + ": exists; pass --force to replace it"), path_(path) {}
@@ -207,7 +211,7 @@ FinishedTemporary::FinishedTemporary(const fs::path& target,
     int fd = -1;
     int open_error = 0;  // errno of open, kept before the guard's unlock can touch errno
     guard_ = std::make_unique<TemporaryGuard>(temporary_, [&] {
-        fd = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+        fd = create_exclusive(temporary_);
         open_error = errno;
     });
     if (fd < 0) {
@@ -345,47 +349,10 @@ void write_files_atomically(const std::vector<AtomicOutput>& outputs, bool overw
     }
 }
 
-void write_directory_atomically(const fs::path& target, bool overwrite,
-                                const std::function<void(const fs::path&)>& produce) {
-    check_writable(target, overwrite);
-    const fs::path temporary = sibling_temporary(target, "tmp");
-    std::error_code ignored;
-    const TemporaryGuard guard(temporary, [&] {
-        fs::remove_all(temporary, ignored);
-        fs::create_directories(temporary);
-    });
-    try {
-        try {
-            produce(temporary);
-        } catch (const std::runtime_error& error) {
-            // A file of the temporary is named as the output it was for (the temporary
-            // is gone when the message is read); other errors pass unchanged.
-            if (std::string_view(error.what()).find(temporary.string()) == std::string::npos) {
-                throw;
-            }
-            throw std::runtime_error(as_output(error.what(), temporary, target));
-        }
-        if (fs::exists(target)) {
-            if (!overwrite) {
-                throw FileExists(target);
-            }
-            const fs::path old = sibling_temporary(target, "old");
-            fs::remove_all(old, ignored);
-            fs::rename(target, old);
-            fs::rename(temporary, target);
-            fs::remove_all(old, ignored);
-        } else {
-            fs::rename(temporary, target);
-        }
-        sync_directory(parent_of(target));
-    } catch (...) {
-        fs::remove_all(temporary, ignored);
-        throw;
-    }
-}
-
 void write_stream_file(const fs::path& path, const std::function<void(std::ostream&)>& produce) {
-    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    // Never through a symbolic link: these files live in directories the testbed made.
+    const int fd =
+        ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0666);
     if (fd < 0) {
         throw path_error(path, std::string("cannot write: ") + std::strerror(errno));
     }

@@ -32,6 +32,25 @@ void sweep_registry() {
 
 int signal_pipe[2] = {-1, -1};
 
+/// The signals that stop a program with its temporaries removed: Ctrl-C, kill, a closed
+/// terminal (SIGHUP) and Ctrl-\ (SIGQUIT).
+constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+
+const char* signal_name(int number) {
+    switch (number) {
+        case SIGINT:
+            return "SIGINT";
+        case SIGTERM:
+            return "SIGTERM";
+        case SIGHUP:
+            return "SIGHUP";
+        case SIGQUIT:
+            return "SIGQUIT";
+        default:
+            return "a signal";
+    }
+}
+
 extern "C" void on_signal(int number) {
     const int saved = errno;
     const unsigned char byte = static_cast<unsigned char>(number);
@@ -57,8 +76,7 @@ void watch(const std::string& program, const std::function<bool()>& on_interrupt
         // leaving one behind after the sweep.
         registry_mutex.lock();
         sweep_registry();
-        const std::string message = program + ": interrupted by " +
-                                    (byte == SIGINT ? "SIGINT" : "SIGTERM") +
+        const std::string message = program + ": interrupted by " + signal_name(byte) +
                                     "; its temporary files are removed\n";
         (void)!::write(STDERR_FILENO, message.data(), message.size());
         ::_exit(kInterruptedStatus);
@@ -80,8 +98,9 @@ void install_interrupt_handler(const std::string& program, std::function<bool()>
     action.sa_handler = on_signal;
     sigemptyset(&action.sa_mask);
     action.sa_flags = SA_RESTART;
-    sigaction(SIGINT, &action, nullptr);
-    sigaction(SIGTERM, &action, nullptr);
+    for (const int number : kStopSignals) {
+        sigaction(number, &action, nullptr);
+    }
     // Past `ulimit -f` a write then fails with EFBIG, reported and cleaned up like ENOSPC,
     // instead of the signal killing the process with its temporaries in place.
     std::signal(SIGXFSZ, SIG_IGN);

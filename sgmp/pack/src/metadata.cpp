@@ -1,5 +1,8 @@
 #include "sgmp/pack/metadata.hpp"
 
+#include "sgmp/pack/header_entry.hpp"
+#include "sgmp/pack/input_error.hpp"
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -11,6 +14,34 @@ std::string format_number(double value) {
     std::array<char, 64> buffer{};
     const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
     return {buffer.data(), result.ptr};
+}
+
+namespace {
+
+bool is_control(unsigned char c) {
+    return c < 0x20 || c == 0x7f;
+}
+
+}  // namespace
+
+void check_header_entry(const std::string& key, const std::string& value) {
+    // "a b" read back as two keys and "x=y" as x with the value "y=1"; a line break or an
+    // ESC made a file the reader refuses.
+    const bool bad_key =
+        key.empty() || std::any_of(key.begin(), key.end(), [](char c) {
+            return is_control(static_cast<unsigned char>(c)) || c == ' ' || c == '=' || c == '"';
+        });
+    if (bad_key) {
+        throw std::invalid_argument("header key '" + printable(key) +
+                                    "' must be one word: no blank, '=', quote or control "
+                                    "character");
+    }
+    if (value.find('"') != std::string::npos || std::any_of(value.begin(), value.end(), [](char c) {
+            return is_control(static_cast<unsigned char>(c));
+        })) {
+        throw std::invalid_argument("header value of '" + key + "' ('" + printable(value) +
+                                    "') contains a quote, line break or control character");
+    }
 }
 
 void Metadata::set(std::string_view key, std::string value) {

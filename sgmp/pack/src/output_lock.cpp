@@ -34,7 +34,7 @@ bool try_lock(int fd) {
 bool still_at(int fd, const fs::path& path) {
     struct stat open_file = {};
     struct stat named = {};
-    return ::fstat(fd, &open_file) == 0 && ::stat(path.c_str(), &named) == 0 &&
+    return ::fstat(fd, &open_file) == 0 && ::lstat(path.c_str(), &named) == 0 &&
            open_file.st_dev == named.st_dev && open_file.st_ino == named.st_ino;
 }
 
@@ -52,10 +52,22 @@ std::string holder_of(int fd) {
 
 OutputLock::OutputLock(const fs::path& target) : path_(lock_path_of(target)) {
     for (int attempt = 0; attempt < 100; ++attempt) {
-        const int fd = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+        // Never through a symbolic link: a link planted at the lock's fixed name would
+        // have the holder's line written into whatever it points to.
+        const int fd = ::open(path_.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0666);
+        if (fd < 0 && errno == ELOOP) {
+            throw std::runtime_error(target.string() + ": its lock file " + path_.string() +
+                                     " is a symbolic link; remove it and run again");
+        }
         if (fd < 0) {
             throw std::runtime_error(target.string() + ": cannot create its lock file " +
                                      path_.string() + ": " + std::strerror(errno));
+        }
+        struct stat opened = {};
+        if (::fstat(fd, &opened) != 0 || !S_ISREG(opened.st_mode)) {
+            ::close(fd);
+            throw std::runtime_error(target.string() + ": its lock file " + path_.string() +
+                                     " is not a regular file; remove it and run again");
         }
         if (!try_lock(fd)) {
             const int code = errno;

@@ -8,6 +8,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "sgmp/pack/header_entry.hpp"
 #include "sgmp/pack/pack_extent.hpp"
 #include "sgmp/pack/parallel.hpp"
 #include "text_fields.hpp"
@@ -26,13 +27,6 @@ constexpr std::int64_t kMaxColumns = 10000;
 
 bool needs_quotes(const std::string& value) {
     return value.empty() || value.find_first_of(" \t=") != std::string::npos;
-}
-
-void check_value(const std::string& key, const std::string& value) {
-    if (value.find_first_of("\"\n\r") != std::string::npos) {
-        throw std::invalid_argument("metadata value of '" + key +
-                                    "' contains a quote or line break, which XYZ cannot hold");
-    }
 }
 
 bool is_identifier(const std::string& word) {
@@ -598,7 +592,7 @@ void write_xyz(std::ostream& out, const Pack& pack) {
         if (is_derived_key(key)) {
             continue;
         }
-        check_value(key, value);
+        check_header_entry(key, value);
         out << ' ' << key << '=';
         if (needs_quotes(value)) {
             out << '"' << value << '"';

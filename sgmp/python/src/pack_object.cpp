@@ -8,6 +8,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "sgmp/pack/header_entry.hpp"
 
 namespace sgmp::python {
 namespace {
@@ -69,11 +70,60 @@ Doubles real_array(const py::object& object, const char* name) {
     return Doubles::ensure(values);
 }
 
-Pack make(const py::object& xyz_in, const py::object& radii_in, const std::optional<Longs>& bins,
-          const std::optional<Longs>& ids, const std::optional<py::dict>& head,
-          const std::optional<Longs>& species) {
+/// `object` as whole numbers, or none when it is None. Integer arrays pass; real arrays only
+/// when every entry is a finite whole number within int64 (NaN became INT64_MIN and 2.7 was
+/// truncated to 2, silently); anything else is refused naming the entry.
+std::optional<Longs> whole_array(const py::object& object, const char* name) {
+    if (object.is_none()) {
+        return std::nullopt;
+    }
+    const py::array values = py::array::ensure(object);
+    if (!values) {
+        throw std::invalid_argument(std::string(name) + ": must be an array of whole numbers");
+    }
+    const char kind = values.dtype().kind();
+    if (kind == 'i' || kind == 'u' || kind == 'b') {
+        return Longs::ensure(values);
+    }
+    if (kind != 'f') {
+        throw std::invalid_argument(std::string(name) + ": must be whole numbers (dtype " +
+                                    py::str(values.dtype()).cast<std::string>() + ")");
+    }
+    const Doubles reals = Doubles::ensure(values);
+    const double* data = reals.data();
+    for (py::ssize_t i = 0; i < reals.size(); ++i) {
+        const double v = data[i];
+        if (!std::isfinite(v) || v != std::floor(v) || std::fabs(v) >= 9.2e18) {
+            throw std::invalid_argument(std::string(name) + ": entry " + std::to_string(i) + " = " +
+                                        format_number(v) + " must be a whole number");
+        }
+    }
+    return Longs::ensure(values);
+}
+
+/// The header's entries as strings; a key or value that is not a string is refused (its
+/// str() would not read back as the same thing).
+py::dict string_header(const std::optional<py::dict>& head) {
+    if (!head) {
+        return {};
+    }
+    for (const auto& [key, value] : *head) {
+        if (!py::isinstance<py::str>(key)) {
+            throw std::invalid_argument("header: key " + py::repr(key).cast<std::string>() +
+                                        " must be a string");
+        }
+    }
+    return *head;
+}
+
+Pack make(const py::object& xyz_in, const py::object& radii_in, const py::object& bins_in,
+          const py::object& ids_in, const std::optional<py::dict>& head,
+          const py::object& species_in) {
     const Doubles xyz = real_array(xyz_in, "positions");
     const Doubles radii = real_array(radii_in, "radii");
+    const std::optional<Longs> bins = whole_array(bins_in, "bins");
+    const std::optional<Longs> ids = whole_array(ids_in, "ids");
+    const std::optional<Longs> species = whole_array(species_in, "species");
     if (xyz.ndim() != 2 || xyz.shape(1) != 3) {
         throw std::invalid_argument("positions: must be an array of shape (N, 3)");
     }
@@ -132,10 +182,10 @@ Pack make(const py::object& xyz_in, const py::object& radii_in, const std::optio
         }
         pack.particles.push_back(particle);
     }
-    if (head) {
-        for (const auto& [key, value] : *head) {
-            pack.metadata.set(py::str(key).cast<std::string>(), py::str(value).cast<std::string>());
-        }
+    for (const auto& [key, value] : string_header(head)) {
+        const std::string text = py::str(value).cast<std::string>();
+        check_header_entry(key.cast<std::string>(), text);
+        pack.metadata.set(key.cast<std::string>(), text);
     }
     return pack;
 }
@@ -162,8 +212,7 @@ Pack from_state(const py::tuple& state) {
         const auto pair = item.cast<py::tuple>();
         header[pair[0]] = pair[1];
     }
-    return make(state[0], state[1], state[2].cast<Longs>(), state[3].cast<Longs>(), header,
-                state[5].cast<Longs>());
+    return make(state[0], state[1], state[2], state[3], header, state[5]);
 }
 
 }  // namespace

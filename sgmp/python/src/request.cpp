@@ -165,7 +165,36 @@ PackRequest request_of(const py::handle& count, const py::handle& arrangement,
 
 }  // namespace
 
+/// The kind of each pack parameter, by its header key: how sgmp.Pack.header types a value.
+py::dict header_kinds() {
+    py::dict kinds;
+    for (const engine::PackParameter& row : engine::pack_parameters()) {
+        const char* kind = "text";
+        switch (row.kind) {
+            case ValueKind::Number:
+                kind = "number";
+                break;
+            case ValueKind::Integer:
+                kind = "integer";
+                break;
+            case ValueKind::Choice:
+                kind = "choice";
+                break;
+            case ValueKind::List:
+                kind = "list";
+                break;
+            case ValueKind::Text:
+                break;
+        }
+        kinds[py::str(header_key(row))] = kind;
+    }
+    return kinds;
+}
+
 void bind_making(py::module_& m) {
+    m.def("header_kinds", &header_kinds,
+          "The kind of every pack parameter's header value, by header key: number, integer, "
+          "choice, list or text (the parameter table's).");
     m.def(
         "pack",
         [](const py::object& count, const py::object& arrangement, const py::object& seed,

@@ -7,11 +7,16 @@ libraries); this module gives its functions their signatures and docstrings, and
 their typed headers.
 """
 import math
+import os
 import re
-from typing import NamedTuple, Optional
+from typing import Any, Callable, Dict, NamedTuple, Optional, Sequence, Tuple, Union
 
 from . import _sgmp
-from ._sgmp import Pack, __version__, measure, read, write
+from ._sgmp import Pack, __version__
+
+HeaderValue = Union[bool, int, float, str, Tuple[Union[int, float], ...], "Container"]
+Progress = Callable[[str, int, int], None]
+PathLike = Union[str, "os.PathLike[str]"]
 
 __all__ = ["Pack", "Container", "pack", "arrange", "read", "write", "measure", "__version__"]
 
@@ -26,12 +31,12 @@ class Container(NamedTuple):
     floor: float
 
     @property
-    def origin(self):
+    def origin(self) -> Tuple[float, float, float]:
         """The corner (x_min, floor, z_min)."""
         return (self.x_min, self.floor, self.z_min)
 
     @property
-    def lengths(self):
+    def lengths(self) -> Tuple[float, float, float]:
         """Side lengths along x, y, z (y: infinite, no lid)."""
         return (self.x_max - self.x_min, math.inf, self.z_max - self.z_min)
 
@@ -40,7 +45,7 @@ _INTEGER = re.compile(r"[+-]?\d+\Z")
 _REAL = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?\Z")
 
 
-def _number(text):
+def _number(text: str) -> Optional[Union[int, float]]:
     if _INTEGER.match(text):
         return int(text)
     if _REAL.match(text):
@@ -48,14 +53,41 @@ def _number(text):
     return None
 
 
-def _typed(key, text):
-    """A header value as Python sees it: bools, whole numbers, reals, tuples of numbers for
-    comma-separated lists, a Container for `container`; anything else stays a string."""
+# The kind of each pack parameter (the engine's parameter table): a parameter's value has
+# one Python type whatever its text ("0" and "0.3" are both floats for momentum; "120" and
+# "8,120,720" are both tuples for sweep_stages).
+_KINDS: Dict[str, str] = _sgmp.header_kinds()
+
+
+def _by_kind(kind: str, text: str) -> Optional[HeaderValue]:
+    """`text` as its parameter's kind gives it, or None when it does not read so."""
+    if kind == "number" and _number(text) is not None:
+        return float(text)
+    if kind == "integer" and _INTEGER.match(text):
+        return int(text)
+    if kind == "list":
+        items = [_number(part) for part in text.split(",")]
+        if all(item is not None for item in items):
+            return tuple(item for item in items if item is not None)
+    if kind in ("choice", "text"):
+        return text
+    return None
+
+
+def _typed(key: str, text: str) -> HeaderValue:
+    """A header value as Python sees it. A pack parameter takes its kind from the parameter
+    table (number: float, integer: int, list: tuple, choice and text: str); `container` is a
+    Container; any other key: bools, whole numbers, reals, tuples of numbers for
+    comma-separated lists, else the string."""
     if key == "container":
         numbers = [_number(part) for part in text.split()]
         if len(numbers) == 5 and all(n is not None for n in numbers):
-            return Container(*(float(n) for n in numbers))
+            return Container(*(float(n) for n in numbers if n is not None))
         return text
+    if key in _KINDS:
+        typed = _by_kind(_KINDS[key], text)
+        if typed is not None:
+            return typed
     if text in ("true", "false"):
         return text == "true"
     number = _number(text)
@@ -64,31 +96,40 @@ def _typed(key, text):
     if "," in text:
         items = [_number(part) for part in text.split(",")]
         if all(item is not None for item in items):
-            return tuple(items)
+            return tuple(item for item in items if item is not None)
     return text
 
 
-def _header(self):
+def _header(self: Pack) -> Dict[str, HeaderValue]:
     """The header's key=value pairs, typed (header_text has them as strings), in order."""
     return {key: _typed(key, value) for key, value in self.header_text.items()}
 
 
-Pack.header = property(_header, doc=_header.__doc__)
+setattr(Pack, "header", property(_header, doc=_header.__doc__))  # the stub types it
 
 
-def _given(options):
+def _given(options: Dict[str, Any]) -> Dict[str, Any]:
     return {key: value for key, value in options.items() if value is not None}
 
 
-def pack(count, arrangement, seed=None, *, phi_target=None, size_modes=None,
-         size_distribution=None, fraction_basis=None, drop_order=None, sides=None,
-         circle_factor=None, sweep_positions=None, sweep_stages=None,
-         lower_neighbours=None, gap=None, fall=None, fall_step=None, contact=None,
-         momentum=None, walls=None, stall_moves=None, max_moves=None, relax=None,
-         relax_stiffness=None, relax_stiffness_factor=None, relax_stages=None,
-         relax_shell=None, relax_force_tolerance=None, relax_time=None, relax_crossings=None,
-         relax_friction=None, relax_settle_limit=None, relax_tangential_ratio=None,
-         progress=None):
+def pack(count: int, arrangement: str, seed: Optional[int] = None, *,
+         phi_target: Optional[float] = None, size_modes: Optional[str] = None,
+         size_distribution: Optional[str] = None, fraction_basis: Optional[str] = None,
+         drop_order: Optional[str] = None, sides: Optional[str] = None,
+         circle_factor: Optional[float] = None, sweep_positions: Optional[int] = None,
+         sweep_stages: Optional[Union[str, Sequence[int]]] = None,
+         lower_neighbours: Optional[int] = None, gap: Optional[str] = None,
+         fall: Optional[str] = None, fall_step: Optional[float] = None,
+         contact: Optional[str] = None, momentum: Optional[float] = None,
+         walls: Optional[str] = None, stall_moves: Optional[int] = None,
+         max_moves: Optional[int] = None, relax: Optional[str] = None,
+         relax_stiffness: Optional[float] = None,
+         relax_stiffness_factor: Optional[float] = None, relax_stages: Optional[int] = None,
+         relax_shell: Optional[float] = None, relax_force_tolerance: Optional[float] = None,
+         relax_time: Optional[float] = None, relax_crossings: Optional[int] = None,
+         relax_friction: Optional[float] = None, relax_settle_limit: Optional[int] = None,
+         relax_tangential_ratio: Optional[float] = None,
+         progress: Optional[Progress] = None) -> Pack:
     """Packs `count` spheres from `arrangement` (single-column, small-dense, large-dense,
     loose-random) with the Spin Gap Move Protocol and returns an sgmp.Pack.
 
@@ -138,13 +179,57 @@ def pack(count, arrangement, seed=None, *, phi_target=None, size_modes=None,
         relax_settle_limit=relax_settle_limit, relax_tangential_ratio=relax_tangential_ratio)))
 
 
-def arrange(count, arrangement, seed=None, *, phi_target=None, size_modes=None,
-            size_distribution=None, fraction_basis=None, drop_order=None, sides=None):
+def arrange(count: int, arrangement: str, seed: Optional[int] = None, *,
+            phi_target: Optional[float] = None, size_modes: Optional[str] = None,
+            size_distribution: Optional[str] = None, fraction_basis: Optional[str] = None,
+            drop_order: Optional[str] = None, sides: Optional[str] = None) -> Pack:
     """The starting arrangement itself (as `sgmp arrange`): `count` spheres of
     `arrangement` before the protocol; options as sgmp.pack."""
     return _sgmp.arrange(count, arrangement, seed, **_given(dict(
         phi_target=phi_target, size_modes=size_modes, size_distribution=size_distribution,
         fraction_basis=fraction_basis, drop_order=drop_order, sides=sides)))
+
+
+def read(path: PathLike, frame: Optional[int] = None, radius: Optional[float] = None) -> Pack:
+    """Reads a pack file: extended XYZ (frame: counted from 1, default the last),
+    LAMMPS/LIGGGHTS dump custom or a LAMMPS data file; .gz transparently. radius replaces
+    every radius (for species-only files). Raises ValueError ("file:line: reason") for
+    malformed files."""
+    return _sgmp.read(path, frame, radius)
+
+
+def write(pack: Pack, path: PathLike, force: bool = False, format: Optional[str] = None, *,
+          up: str = "y", length_scale: Optional[float] = None,
+          length_unit: Optional[str] = None, density: Optional[float] = None) -> None:
+    """Writes a pack file atomically in the format named by format (xyz, xyz.gz, data, dump,
+    vtk, vtp) or by the path's ending; vtk and vtp also write NAME.container.vtk/.vtp.
+    up='z' writes z up; length_scale with length_unit writes lengths in that unit, one
+    control-volume side being length_scale; density is a data file's density column (as
+    sgmp convert --up, --length-scale, --length-unit, --density). An existing file is
+    replaced only with force=True (else FileExistsError); a format that cannot carry the
+    pack, a header key that is not one word or a value with a quote or control character
+    raises ValueError."""
+    _sgmp.write(pack, path, force, format, up=up, length_scale=length_scale,
+                length_unit=length_unit, density=density)
+
+
+def measure(pack: Pack, region: Optional[Sequence[float]] = None,
+            slab: Optional[float] = None, gr_bin: Optional[float] = None,
+            gr_range: Optional[float] = None, gr_density: Optional[str] = None,
+            gr_container_space: Optional[bool] = None, voronoi: Optional[bool] = None,
+            q6_cutoff: Optional[float] = None, overlap_floor: Optional[float] = None,
+            threads: Optional[int] = None) -> Dict[str, Any]:
+    """Every metric of one pack, as `sgmp-compare measure` (options named as its
+    command-line options, dashes as underscores; one left at None keeps its default;
+    region = [xlo, xhi, ylo, yhi, zlo, zhi], default the control volume). Returns the dict
+    of its metrics.json (phi, overlaps, z_mean_tol_*, split_ratio, q6_*, voronoi_phi_*, ...)
+    plus the curves as numpy arrays: g_r (rows r/d, g), phi_y (rows y_mid, phi), p_z (rows z,
+    then P(Z) at each tolerance of p_z_tolerances); for a blend also g_r_partial and
+    phi_y_species."""
+    return _sgmp.measure(pack, region, **_given(dict(
+        slab=slab, gr_bin=gr_bin, gr_range=gr_range, gr_density=gr_density,
+        gr_container_space=gr_container_space, voronoi=voronoi, q6_cutoff=q6_cutoff,
+        overlap_floor=overlap_floor, threads=threads)))
 
 
 def _options_of_the_extension() -> Optional[list]:

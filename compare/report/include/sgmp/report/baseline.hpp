@@ -40,6 +40,13 @@ nlohmann::ordered_json baseline_json(const std::vector<BaselineEntry>& entries,
 /// not a baseline.
 std::vector<BaselineEntry> parse_baseline(const nlohmann::json& json, const std::string& source);
 
+/// Checks that two baselines were measured alike: their `provenance.parameters` (the
+/// measurement options: region, g(r) bins, Q6 cut-off, …) must be equal key by key, since a
+/// metric measured another way is another number. Throws sgmp::InputError naming the
+/// first key that differs, or a baseline that records no parameters.
+void check_measured_alike(const nlohmann::json& baseline, const std::string& baseline_source,
+                          const nlohmann::json& current, const std::string& current_source);
+
 struct RegressionRow {
     BaselineEntry baseline;
     std::optional<double> current;  // absent when the current run lacks the entry

@@ -90,7 +90,15 @@ class ScratchDirectory {
 
 /// Replaces directory `target` atomically: `produce` fills a fresh temporary directory
 /// beside it, which then takes the target's place (an existing target is removed only
-/// with `overwrite`, and only after `produce` succeeded).
+/// with `overwrite`, and only after `produce` succeeded). The directory records what it
+/// was written with in `.sgmp-output` (kOutputRecord), and `overwrite` replaces an
+/// existing target only when every entry it holds is in that record or among the new
+/// outputs: a directory holding anything else (the current directory, a folder of packs)
+/// is refused with "<target>: holds <entry>, which this command did not write …", as are
+/// a target that is a symbolic link, not a directory, or the current directory or one of
+/// its ancestors. Nothing is deleted that the command did not write.
+inline constexpr const char* kOutputRecord = ".sgmp-output";
+
 void write_directory_atomically(const std::filesystem::path& target, bool overwrite,
                                 const std::function<void(const std::filesystem::path&)>& produce);
 

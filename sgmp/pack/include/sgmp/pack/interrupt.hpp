@@ -1,7 +1,8 @@
 #pragma once
 /// @file interrupt.hpp
-/// Ctrl-C (SIGINT) and SIGTERM for the command-line tools: a program's temporaries are
-/// removed and it exits with status 130, so an interrupted command leaves no
+/// Ctrl-C (SIGINT), SIGTERM, SIGHUP (a closed terminal) and SIGQUIT (Ctrl-\) for the
+/// command-line tools: a program's temporaries are removed and it exits with status 130, so an
+/// interrupted command leaves no
 /// `.NAME.tmp-PID.HOST` file or directory behind.
 ///
 /// The signal handler only writes the signal's number to a pipe; a watcher thread reads
@@ -14,7 +15,7 @@
 
 namespace sgmp {
 
-/// Exit status of a program stopped by SIGINT or SIGTERM.
+/// Exit status of a program stopped by SIGINT, SIGTERM, SIGHUP or SIGQUIT.
 inline constexpr int kInterruptedStatus = 130;
 
 /// Installs the handlers. On a signal, `on_interrupt` (when given) is called from the

@@ -92,9 +92,20 @@ void add_common(CLI::App* command, CommonOptions& o) {
             return finite_range_rule(text, 0.0, 256.0, "[0, 256] (0: all cores)");
         });
     command->add_flag("--timings", o.timings, "print the seconds of each stage to stderr");
+    // Short: CLI11 does not wrap, and --help lines stay under 100 columns.
+    o.container_option =
+        command->add_option("--container", o.container,
+                            "walls \"x_min x_max z_min z_max floor\" (header key container)");
 }
 
 void apply(CommonOptions& o) {
+    if (o.container_option != nullptr && o.container_option->count() > 0) {
+        try {
+            o.stated = StatedContainer{Container::parse(o.container), "--container"};
+        } catch (const ParameterError& error) {  // the header's parser and rule
+            throw UsageError(::sgmp::cli::usage_message(error));
+        }
+    }
     o.measure.gr_density = o.gr_density == "space" ? RdfDensity::Space : RdfDensity::Neighbours;
     if (!o.region.empty()) {
         o.measure.region = Box{Vec3(o.region[0], o.region[2], o.region[4]),
@@ -127,9 +138,15 @@ std::string command_line(int argc, char** argv) {
     return line;
 }
 
-Pack read_pack(const std::string& path) {
+std::optional<StatedContainer> stated_for(const std::string& path, const CommonOptions& o) {
+    const auto found = o.stated_per_pack.find(path);
+    return found != o.stated_per_pack.end() ? std::optional(found->second) : o.stated;
+}
+
+Pack read_pack(const std::string& path, const std::optional<StatedContainer>& stated) {
     ReadOptions options;
     options.threads = thread_count();  // the lines are parsed on the measurement's threads
+    options.container = stated;
     PackRead read = read_pack_file(path, options);
     for (const std::string& warning : read.warnings) {
         std::cerr << "sgmp-compare: warning: " << path << ": " << warning << "\n";
@@ -192,7 +209,7 @@ Group measure_group(const std::string& label, const std::vector<std::string>& pa
             group.packs.push_back(found->second);
             continue;
         }
-        const Pack pack = read_pack(path);
+        const Pack pack = read_pack(path, stated_for(path, o));
         group.packs.push_back(summarise(path, pack, measure_pack(path, pack, o)));
     }
     return group;

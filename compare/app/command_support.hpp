@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "sgmp/cli/run_main.hpp"
 #include "sgmp/metrics/measure.hpp"
 #include "sgmp/pack/pack.hpp"
+#include "sgmp/pack/stated_container.hpp"
 #include "sgmp/report/agreement.hpp"
 
 namespace sgmp::compare::cli {
@@ -36,6 +38,10 @@ struct CommonOptions {
     std::string out;
     std::vector<std::string> metrics;  // --metrics: batch summaries holding precomputed rows
     std::map<std::string, PackSummary> precomputed;  // their rows by pack path (apply)
+    std::string container;                           // --container "x_min x_max z_min z_max floor"
+    CLI::Option* container_option = nullptr;         // whether --container was given
+    std::optional<StatedContainer> stated;           // --container parsed (apply)
+    std::map<std::string, StatedContainer> stated_per_pack;  // a manifest's column, by path
 };
 
 /// --out, --force and the measurement options.
@@ -47,8 +53,11 @@ void add_precomputed(CLI::App* command, CommonOptions& o);
 void apply(CommonOptions& o);
 /// "sgmp-compare <arguments>", recorded in outputs.
 std::string command_line(int argc, char** argv);
-/// Reads a pack; InputError for unreadable, empty or malformed files.
-Pack read_pack(const std::string& path);
+/// The walls stated for the pack at `path`: its manifest row's, else --container's.
+std::optional<StatedContainer> stated_for(const std::string& path, const CommonOptions& o);
+/// Reads a pack with its container settled (sgmp/pack/stated_container.hpp); InputError for
+/// unreadable, empty or malformed files and for a container refused.
+Pack read_pack(const std::string& path, const std::optional<StatedContainer>& stated);
 Measurement measure_pack(const std::string& path, const Pack& pack, const CommonOptions& o);
 /// The measurement parameters as recorded in outputs.
 nlohmann::ordered_json measure_parameters(const CommonOptions& o);

@@ -59,7 +59,9 @@ nlohmann::ordered_json manifest_json(const std::vector<ManifestEntry>& manifest)
              {"count", e.count},
              {"seed", e.seed},
              {"seconds", e.seconds ? nlohmann::ordered_json(*e.seconds) : nlohmann::ordered_json()},
-             {"path", e.path}});
+             {"path", e.path},
+             {"container", e.container ? nlohmann::ordered_json(e.container->to_string())
+                                       : nlohmann::ordered_json()}});
     }
     return list;
 }
@@ -82,6 +84,24 @@ void check_counts(const std::vector<ManifestEntry>& manifest, const std::vector<
                                  std::to_string(manifest[i].count) + " spheres, the pack holds " +
                                  std::to_string(found->second));
         }
+    }
+}
+
+/// The manifest's container column, per pack; a row that states other walls than
+/// --container contradicts it.
+void state_containers(const std::vector<ManifestEntry>& manifest, const std::string& source,
+                      CommonOptions& o) {
+    for (const auto& e : manifest) {
+        if (!e.container) {
+            continue;
+        }
+        if (o.stated && !same_container(o.stated->walls, *e.container)) {
+            throw InputError(source, e.line,
+                             "container '" + e.container->to_string() +
+                                 "' contradicts --container '" + o.stated->walls.to_string() + "'");
+        }
+        o.stated_per_pack[e.path] =
+            StatedContainer{*e.container, "manifest " + source + ":" + std::to_string(e.line)};
     }
 }
 
@@ -109,6 +129,7 @@ int run_crossval(CrossvalOptions& o, const std::string& command) {
         throw InputError(o.manifest, 0, error.what());
     }
     apply(o.common);
+    state_containers(manifest, o.manifest, o.common);
 
     std::vector<Group> groups;
     for (std::size_t g = 0; g < plan.labels.size(); ++g) {
@@ -141,7 +162,10 @@ int run_crossval(CrossvalOptions& o, const std::string& command) {
     context.lead_markdown = render_crossval_markdown(cv);
     context.plots_per_count = true;
     if (o.pictures) {
-        const auto choices = choose_pictures(manifest);
+        auto choices = choose_pictures(manifest);
+        for (auto& choice : choices) {
+            choice.container = stated_for(choice.path, o.common);
+        }
         PictureSet set = render_pictures(choices, o.picture_size);
         // After the first section (which mode stands in for which class), before the matrix.
         const auto at = context.lead_markdown.find("\n## Verdict matrix");
@@ -216,8 +240,8 @@ CommandRunner register_crossval(CLI::App& app) {
         "count; report.md, report.csv, report.json, headline.csv, crossval.json, baseline.json, "
         "plots/*.svg, index.html; prints the headline table");
     cmd->add_option("--manifest", options->manifest,
-                    "CSV 'role,group,count,seed,seconds,path' listing the packs (role candidate or "
-                    "reference; paths relative to the current directory)")
+                    "CSV 'role,group,count,seed,seconds,path[,container]' listing the packs (role "
+                    "candidate or reference; paths relative to the current directory)")
         ->required();
     cmd->add_option("--thesis", options->thesis,
                     "the thesis' results CSV (data/thesis/results.csv) to show beside ours");

@@ -330,7 +330,12 @@ void check_at_rest(const Pack& raw, const PourParams& p) {
 Pack read_final(const fs::path& dump, const PourParams& p) {
     Pack raw;
     try {
-        raw = read_pack_file(dump);
+        // The particles only: the walls are the input script's own (the container, recorded
+        // by `record`), and check_settled measures every sphere against them, so the dump's
+        // box is never taken for them (as written: no container is settled from the file).
+        ReadOptions options;
+        options.as_written = true;
+        raw = read_pack_file(dump, options).pack;
     } catch (const std::exception& e) {
         std::string reason = e.what();
         for (std::size_t at = reason.find(dump.string()); at != std::string::npos;

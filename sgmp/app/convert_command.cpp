@@ -17,6 +17,8 @@
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/pack/pack_format.hpp"
 #include "sgmp/pack/pack_origin.hpp"
+#include "sgmp/pack/parameter_error.hpp"
+#include "sgmp/pack/stated_container.hpp"
 #include "sgmp/pack/text_precision.hpp"
 #include "sgmp/pack/version.hpp"
 
@@ -33,7 +35,9 @@ struct ConvertOptions {
     std::string up = "y";         // y | z
     double length_scale = 0.0;    // 0: unscaled
     std::string length_unit;
-    double density = 0.0;  // 0: the data format's 1
+    double density = 0.0;   // 0: the data format's 1
+    std::string container;  // --container "x_min x_max z_min z_max floor"
+    CLI::Option* container_option = nullptr;
     bool force = false;
 };
 
@@ -136,6 +140,18 @@ OutputFrame output_frame(const ConvertOptions& o) {
     return frame;
 }
 
+/// --container, parsed by the header key's parser (stated_container.hpp).
+std::optional<StatedContainer> stated_container(const ConvertOptions& o) {
+    if (o.container_option == nullptr || o.container_option->count() == 0) {
+        return std::nullopt;
+    }
+    try {
+        return StatedContainer{Container::parse(o.container), "--container"};
+    } catch (const ParameterError& error) {
+        throw UsageError{cli::usage_message(error)};
+    }
+}
+
 int convert(const ConvertOptions& o) {
     const PackFormat format = output_format(o);
     const OutputFrame frame = output_frame(o);
@@ -155,6 +171,7 @@ int convert(const ConvertOptions& o) {
     if (o.radius > 0.0) {
         read_options.radius = o.radius;
     }
+    read_options.container = stated_container(o);
     PackRead read = read_pack_file(o.in, read_options);
     for (const std::string& warning : read.warnings) {
         std::fprintf(stderr, "sgmp convert: warning: %s: %s\n", o.in.c_str(), warning.c_str());
@@ -241,6 +258,8 @@ CLI::App* register_convert(CLI::App& app) {
         ->check([](const std::string& text) {
             return finite_range_rule(text, 1e-300, 1e300, "(0, 1e300]");
         });
+    options.container_option = command->add_option(
+        "--container", options.container, "walls of IN, \"x_min x_max z_min z_max floor\"; kept");
     command->add_flag("--force", options.force, "overwrite existing output files");
     return command;
 }

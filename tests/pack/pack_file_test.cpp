@@ -298,9 +298,11 @@ BOOST_AUTO_TEST_CASE(dump_files_are_detected) {
     TestDirectory scratch("pack_file_dump");
     write_text(scratch.path() / "pour.dump",
                "\nITEM: TIMESTEP\n5\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS ff ff ff\n"
-               "0 1\n0 1\n0 1\nITEM: ATOMS id x y z diameter\n1 0.5 0.5 0.5 0.2\n");
+               "0.4 0.6\n0.4 1\n0.4 0.6\nITEM: ATOMS id x y z diameter\n1 0.5 0.5 0.5 0.2\n");
     const Pack pack = read_pack_file(scratch.path() / "pour.dump");
     BOOST_TEST(pack.particles.at(0).radius == 0.1);
+    // The sphere reaches the box's sides and floor: the box is its container.
+    BOOST_TEST(pack.metadata.get("container").value_or("") == "0.4 0.6 0.4 0.6 0.4");
 }
 
 BOOST_AUTO_TEST_CASE(unreadable_and_corrupt_files) {

@@ -224,9 +224,10 @@ BOOST_AUTO_TEST_CASE(a_claimed_count_allocates_nothing_before_its_lines_arrive) 
 
 BOOST_AUTO_TEST_SUITE_END()
 
-// An extended XYZ's own orthogonal cell is its container (walls at the Lattice's x and z
-// faces, the floor at the Origin's y), as a dump's box is; a `container` key that differs
-// from the cell is kept and named in one warning; a skewed cell gives no container.
+// An extended XYZ's own orthogonal cell is its box (walls at the Lattice's x and z faces,
+// the floor at the Origin's y), taken as the container only when the spheres reach it, as
+// a dump's box; a `container` key that differs from the cell is kept and named in one
+// warning; a skewed cell gives no container.
 BOOST_AUTO_TEST_CASE(the_lattice_cell_is_the_container_unless_a_key_says_otherwise) {
     const sgmp::testing::TestDirectory scratch("xyz_cell");
     const std::filesystem::path dir = scratch.path();
@@ -236,9 +237,15 @@ BOOST_AUTO_TEST_CASE(the_lattice_cell_is_the_container_unless_a_key_says_otherwi
             << header << " Properties=species:S:1:pos:R:3:radius:R:1\nAr 1 1 1 0.5\n";
         return read_pack_file(dir / "c.xyz", ReadOptions{});
     };
-    const PackRead own = read(R"(Lattice="6 0 0 0 7 0 0 0 8" Origin="1 2 3")");
-    BOOST_TEST(own.pack.metadata.get("container").value_or("") == "1 7 3 11 2");
+    const PackRead own = read(R"(Lattice="1 0 0 0 7 0 0 0 1" Origin="0.5 0.5 0.5")");
+    BOOST_TEST(own.pack.metadata.get("container").value_or("") == "0.5 1.5 0.5 1.5 0.5");
+    BOOST_TEST(own.pack.metadata.get("container_from").value_or("") == "box");
     BOOST_TEST(own.warnings.empty());
+    const std::string far = sgmp::testing::input_error_of(
+        [&] { read(R"(Lattice="6 0 0 0 7 0 0 0 8" Origin="0.5 0.5 0.5")"); });
+    BOOST_TEST(
+        far.find("7 d of clearance beyond contact from the box's z_max side") != std::string::npos,
+        far);
     const PackRead keyed = read(R"(Lattice="6 0 0 0 7 0 0 0 8" container="0 1 0 1 0")");
     BOOST_TEST(keyed.pack.metadata.get("container").value_or("") == "0 1 0 1 0");
     BOOST_TEST_REQUIRE(keyed.warnings.size() == 1U);
@@ -267,8 +274,9 @@ BOOST_AUTO_TEST_CASE(periodic_sides_are_written_as_pbc_and_read_back) {
     std::getline(xyz, line);
     std::getline(xyz, line);
     BOOST_TEST(line.find("pbc=\"T F T\"") != std::string::npos, line);
+    // On the cell's floor: periodic sides are not walls, so the box is reached.
     std::ofstream(dir / "ase.xyz") << "1\nLattice=\"2 0 0 0 2 0 0 0 2\" pbc=\"T F T\" "
-                                      "Properties=species:S:1:pos:R:3:radius:R:1\nAr 1 1 1 0.5\n";
+                                      "Properties=species:S:1:pos:R:3:radius:R:1\nAr 1 0.5 1 0.5\n";
     BOOST_TEST(read_pack_file(dir / "ase.xyz").metadata.get("sides").value_or("") == "periodic");
     pack.metadata = {};
     write_pack_as(dir / "w.xyz", pack, PackFormat::xyz, WriteOptions{true});

@@ -162,7 +162,10 @@ void validate(const MeasureOptions& o) {
 
 Container container_of(const Pack& pack, std::string* source) {
     if (source != nullptr) {
-        *source = pack.metadata.get("container") ? "metadata" : "thesis default";
+        // Where the walls came from (sgmp/pack/stated_container.hpp): the header, a
+        // statement (--container, a manifest row) or a file box its spheres reach.
+        const auto from = pack.metadata.get("container_from");
+        *source = !pack.metadata.get("container") ? "thesis default" : from ? *from : "metadata";
     }
     return sgmp::container_of(pack);
 }

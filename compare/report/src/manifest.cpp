@@ -5,6 +5,7 @@
 #include "sgmp/pack/csv_fields.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/line_reader.hpp"
+#include "sgmp/pack/parameter_error.hpp"
 
 namespace sgmp::report {
 namespace {
@@ -27,6 +28,68 @@ const char* to_string(Role role) {
     return "candidate";
 }
 
+namespace {
+
+Role parse_role(const std::string& field, const std::string& source, std::size_t number) {
+    if (field == "candidate") {
+        return Role::Candidate;
+    }
+    if (field == "reference") {
+        return Role::Reference;
+    }
+    if (field == "variant") {
+        return Role::Variant;
+    }
+    if (field == "stiff") {
+        return Role::Stiff;
+    }
+    throw InputError(source, number,
+                     "role '" + field + "' must be 'candidate', 'reference', 'variant' or 'stiff'");
+}
+
+/// One row's fields (6, or 7 with the container column) as an entry.
+ManifestEntry parse_entry(const std::vector<std::string>& fields, const std::string& source,
+                          std::size_t number) {
+    ManifestEntry entry;
+    entry.role = parse_role(fields[0], source, number);
+    entry.group = fields[1];
+    if (entry.group.empty()) {
+        throw InputError(source, number, "the group is empty");
+    }
+    const auto count = parse_csv_number<std::size_t>(fields[2]);
+    if (!count || *count == 0) {
+        throw InputError(source, number, "count '" + fields[2] + "' must be a positive integer");
+    }
+    entry.count = *count;
+    const auto seed = parse_csv_number<std::uint64_t>(fields[3]);
+    if (!seed) {
+        throw InputError(source, number, "seed '" + fields[3] + "' must be a non-negative integer");
+    }
+    entry.seed = *seed;
+    if (!fields[4].empty()) {
+        const auto seconds = parse_csv_number<double>(fields[4]);
+        if (!seconds || *seconds < 0.0) {
+            throw InputError(source, number,
+                             "seconds '" + fields[4] + "' must be a number >= 0 or empty");
+        }
+        entry.seconds = *seconds;
+    }
+    entry.path = fields[5];
+    if (entry.path.empty()) {
+        throw InputError(source, number, "the path is empty");
+    }
+    if (fields.size() > 6 && !fields[6].empty()) {
+        try {
+            entry.container = Container::parse(fields[6]);  // the header key's parser
+        } catch (const ParameterError& error) {
+            throw InputError(source, number, "container " + error.value() + ": " + error.rule());
+        }
+    }
+    return entry;
+}
+
+}  // namespace
+
 std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& source) {
     LineReader reader(in, source);
     std::string line;
@@ -34,10 +97,13 @@ std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& so
         throw InputError(source, 0,
                          "empty manifest: expected the header '" + std::string(kHeader) + "'");
     }
-    if (line != kHeader) {
-        throw InputError(
-            source, 1, "expected the header '" + std::string(kHeader) + "', found '" + line + "'");
+    const std::string with_container = std::string(kHeader) + ",container";
+    if (line != kHeader && line != with_container) {
+        throw InputError(source, 1,
+                         "expected the header '" + std::string(kHeader) + "' (or '" +
+                             with_container + "'), found '" + line + "'");
     }
+    const std::size_t width = line == kHeader ? 6 : 7;
     std::vector<ManifestEntry> entries;
     std::set<std::string> paths;
     while (reader.next(line)) {
@@ -50,54 +116,14 @@ std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& so
             throw InputError(source, number,
                              "a quoted field lacks its closing quote or has text after it");
         }
-        const auto& fields = *quoted;
-        if (fields.size() != 6) {
-            throw InputError(
-                source, number,
-                "expected 6 comma-separated fields, found " + std::to_string(fields.size()));
-        }
-        ManifestEntry entry;
-        if (fields[0] == "candidate") {
-            entry.role = Role::Candidate;
-        } else if (fields[0] == "reference") {
-            entry.role = Role::Reference;
-        } else if (fields[0] == "variant") {
-            entry.role = Role::Variant;
-        } else if (fields[0] == "stiff") {
-            entry.role = Role::Stiff;
-        } else {
-            throw InputError(
-                source, number,
-                "role '" + fields[0] + "' must be 'candidate', 'reference', 'variant' or 'stiff'");
-        }
-        entry.group = fields[1];
-        if (entry.group.empty()) {
-            throw InputError(source, number, "the group is empty");
-        }
-        const auto count = parse_csv_number<std::size_t>(fields[2]);
-        if (!count || *count == 0) {
+        if (quoted->size() != width) {
             throw InputError(source, number,
-                             "count '" + fields[2] + "' must be a positive integer");
+                             "expected " + std::to_string(width) +
+                                 " comma-separated fields, found " +
+                                 std::to_string(quoted->size()));
         }
-        entry.count = *count;
-        const auto seed = parse_csv_number<std::uint64_t>(fields[3]);
-        if (!seed) {
-            throw InputError(source, number,
-                             "seed '" + fields[3] + "' must be a non-negative integer");
-        }
-        entry.seed = *seed;
-        if (!fields[4].empty()) {
-            const auto seconds = parse_csv_number<double>(fields[4]);
-            if (!seconds || *seconds < 0.0) {
-                throw InputError(source, number,
-                                 "seconds '" + fields[4] + "' must be a number >= 0 or empty");
-            }
-            entry.seconds = *seconds;
-        }
-        entry.path = fields[5];
-        if (entry.path.empty()) {
-            throw InputError(source, number, "the path is empty");
-        }
+        ManifestEntry entry = parse_entry(*quoted, source, number);
+        entry.line = number;
         if (!paths.insert(entry.path).second) {
             throw InputError(source, number, "path '" + entry.path + "' is listed twice");
         }

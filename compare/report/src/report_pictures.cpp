@@ -94,7 +94,7 @@ std::vector<PictureChoice> choose_pictures(const std::vector<ManifestEntry>& man
         }
         for (const auto& group : order) {
             const ManifestEntry& e = *lowest[group];
-            PictureChoice c{group, reference, count, e.seed, e.path, ""};
+            PictureChoice c{group, reference, count, e.seed, e.path, "", std::nullopt};
             c.file = "pictures/n" + std::to_string(count) + "-" + (reference ? "r" : "c") +
                      std::to_string(choices.size() + 1) + "-" + slug(group) + ".png";
             choices.push_back(c);
@@ -130,7 +130,9 @@ PictureSet render_pictures(const std::vector<PictureChoice>& choices, int size) 
     const fs::path scratch(scratch_name);
     try {
         for (const auto& c : choices) {
-            const Pack pack = read_pack_file(c.path);
+            ReadOptions read;
+            read.container = c.container;
+            const Pack pack = read_pack_file(c.path, read).pack;
             options.provenance = "pack: " + c.path;
             render::RenderJob job;
             job.scene = render::povray_scene(pack, options);

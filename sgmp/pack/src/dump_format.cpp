@@ -119,18 +119,10 @@ double field_number(std::string_view field, const char* label, const LineReader&
     return *value;
 }
 
-/// One snapshot, from the line after "ITEM: TIMESTEP".
-Pack read_snapshot(LineReader& reader) {
-    Pack pack;
-    const std::int64_t step = expect_integer(reader, "the timestep");
-    expect_item(reader, "NUMBER OF ATOMS");
-    const std::int64_t count = expect_integer(reader, "the number of atoms");
-    const std::string bounds_item = expect_item(reader, "BOX BOUNDS");  // the views below need it
-    const auto flags = detail::split_fields(bounds_item);
-    // "pp ff pp": periodic x and z (LAMMPS' boundary p f p), the sides of a periodic cell.
-    const bool periodic = flags.size() >= 3 && flags[0] == "pp" && flags[2] == "pp";
+/// The three "lo hi" lines after BOX BOUNDS, checked, as "xlo xhi ylo yhi zlo zhi" in the
+/// file's own digits.
+std::string read_box_bounds(LineReader& reader) {
     std::string box;
-    std::array<std::pair<double, double>, 3> bounds{};
     for (int axis = 0; axis < 3; ++axis) {
         const std::string line = expect_line(reader, "a box bounds line");
         const auto fields = detail::split_fields(line);
@@ -143,22 +135,52 @@ Pack read_snapshot(LineReader& reader) {
         if (!std::isfinite(*lo) || !std::isfinite(*hi) || !(*lo <= *hi)) {
             throw reader.error("box bounds '" + line + "' must be finite with lo <= hi");
         }
-        if (axis > 0) {
-            box += ' ';
-        }
-        box.append(fields[0]).append(" ").append(fields[1]);
-        bounds[static_cast<std::size_t>(axis)] = {*lo, *hi};
+        box.append(axis > 0 ? " " : "").append(fields[0]).append(" ").append(fields[1]);
     }
+    return box;
+}
+
+/// A simulation box is not a container (stated_container.hpp): the walls come only from
+/// words after the BOX BOUNDS flags, "container x_min x_max z_min z_max floor", as
+/// `sgmp convert` writes them (LAMMPS and OVITO read the first three flags only).
+void set_stated_container(const std::vector<std::string_view>& flags,
+                          const std::string& bounds_item, const LineReader& reader, Pack& pack) {
+    if (flags.size() <= 3 || flags[3] != "container") {
+        return;
+    }
+    if (flags.size() != 9) {
+        throw reader.error("BOX BOUNDS '" + bounds_item +
+                           "': 'container' must be followed by five numbers x_min x_max "
+                           "z_min z_max floor");
+    }
+    std::string walls;
+    for (std::size_t i = 4; i < flags.size(); ++i) {
+        walls.append(i > 4 ? " " : "").append(flags[i]);
+    }
+    try {
+        pack.metadata.set("container", Container::parse(walls).to_string());
+    } catch (const std::invalid_argument& error) {
+        throw reader.error(error.what());
+    }
+}
+
+/// One snapshot, from the line after "ITEM: TIMESTEP".
+Pack read_snapshot(LineReader& reader) {
+    Pack pack;
+    const std::int64_t step = expect_integer(reader, "the timestep");
+    expect_item(reader, "NUMBER OF ATOMS");
+    const std::int64_t count = expect_integer(reader, "the number of atoms");
+    const std::string bounds_item = expect_item(reader, "BOX BOUNDS");  // the views below need it
+    const auto flags = detail::split_fields(bounds_item);
+    // "pp ff pp": periodic x and z (LAMMPS' boundary p f p), the sides of a periodic cell.
+    const bool periodic = flags.size() >= 3 && flags[0] == "pp" && flags[2] == "pp";
+    const std::string box = read_box_bounds(reader);
     const std::string labels_text = expect_item(reader, "ATOMS");
     const auto labels = detail::split_fields(labels_text);
     const DumpColumns columns = parse_atom_labels(labels, reader);
     pack.metadata.set_integer("timestep", step);
     pack.metadata.set("dump_box", box);
-    // The file's own box is its container (walls at its x and z bounds, the floor at its
-    // lowest y; no lid), as for a LAMMPS data file: never the thesis default in silence.
-    pack.metadata.set("container", Container{bounds[0].first, bounds[0].second, bounds[2].first,
-                                             bounds[2].second, bounds[1].first}
-                                       .to_string());
+    set_stated_container(flags, bounds_item, reader, pack);
     if (periodic) {
         pack.metadata.set("sides", "periodic");
     }

@@ -20,6 +20,11 @@ void write_dump_custom(std::ostream& out, const Pack& pack) {
     for (const bool periodic : periodic_axes(pack)) {  // LAMMPS' boundary flags
         out << (periodic ? " pp" : " ff");
     }
+    // The walls, where the reader understands them (dump_format.cpp): not for a pack
+    // written z up, which a dump (no header) reads back in the file's axes.
+    if (pack.metadata.get("up_axis").value_or("y") != "z") {
+        out << " container " << container_of(pack).to_string();
+    }
     out << "\n";
     for (int k = 0; k < 3; ++k) {
         out << format_number(box.lo[k]) << ' ' << format_number(box.hi[k]) << '\n';

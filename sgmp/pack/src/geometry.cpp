@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "sgmp/pack/metadata.hpp"
+#include "sgmp/pack/parameter_error.hpp"
 
 namespace sgmp {
 
@@ -20,13 +21,16 @@ Container Container::parse(const std::string& text) {
     std::istringstream in(text);
     Container c;
     std::string rest;
-    if (!(in >> c.x_min >> c.x_max >> c.z_min >> c.z_max >> c.floor) || (in >> rest)) {
-        throw std::invalid_argument("container '" + text +
-                                    "' must be five numbers: x_min x_max z_min z_max floor");
+    if (!(in >> c.x_min >> c.x_max >> c.z_min >> c.z_max >> c.floor) || (in >> rest) ||
+        !std::isfinite(c.x_min) || !std::isfinite(c.x_max) || !std::isfinite(c.z_min) ||
+        !std::isfinite(c.z_max) || !std::isfinite(c.floor)) {
+        throw ParameterError("container", "'" + text + "'",
+                             "must be five finite numbers: x_min x_max z_min z_max floor");
     }
     if (!(c.x_min < c.x_max) || !(c.z_min < c.z_max)) {
-        throw std::invalid_argument("container '" + text +
-                                    "' must have x_min < x_max and z_min < z_max");
+        throw ParameterError("container", "'" + text + "'",
+                             "must have x_min < x_max and z_min < z_max (x_min x_max z_min "
+                             "z_max floor)");
     }
     return c;
 }

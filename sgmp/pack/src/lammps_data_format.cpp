@@ -213,10 +213,18 @@ Pack read_lammps_data(std::istream& in, const std::string& source) {
         pack.particles.push_back(parse_atom(line, reader));
         validator.check(pack.particles.back(), reader);
     }
+    // The box is only recorded, for a file that states no walls: a simulation box is not a
+    // container (stated_container.hpp); the walls come from a `# container=` comment, as
+    // `sgmp convert` writes it (and then nothing is added, so our files read back as written).
     if (!pack.metadata.contains("container") && bounds[0] && bounds[1] && bounds[2]) {
-        const Container c{bounds[0]->first, bounds[0]->second, bounds[2]->first, bounds[2]->second,
-                          bounds[1]->first};
-        pack.metadata.set("container", c.to_string());
+        std::string box;
+        for (std::size_t k = 0; k < 3; ++k) {
+            box.append(k > 0 ? " " : "")
+                .append(format_number(bounds[k]->first))
+                .append(" ")
+                .append(format_number(bounds[k]->second));
+        }
+        pack.metadata.set("data_box", box);
     }
     pack.metadata.set("source_format", "lammps data");
     return pack;

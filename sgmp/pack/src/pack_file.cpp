@@ -1,5 +1,6 @@
 #include "sgmp/pack/pack_file.hpp"
 
+#include <array>
 #include <boost/iostreams/filter/gzip.hpp>
 #include <boost/iostreams/filtering_stream.hpp>
 #include <fstream>
@@ -11,6 +12,7 @@
 #include "sgmp/pack/interrupt.hpp"
 #include "sgmp/pack/lammps_data_format.hpp"
 #include "sgmp/pack/output_frame.hpp"
+#include "sgmp/pack/stated_container.hpp"
 #include "sgmp/pack/vtk_format.hpp"
 #include "sgmp/pack/vtp_format.hpp"
 #include "sgmp/pack/xyz_format.hpp"
@@ -36,13 +38,38 @@ void refuse_frame(const std::string& source, const ReadOptions& options, const c
     }
 }
 
-PackRead single(Pack pack, const ReadOptions& options) {
+/// The box a dump (`dump_box`) or data file (`data_box`) recorded, "xlo xhi ylo yhi zlo
+/// zhi", as a container: walls at its x and z bounds, the floor at its lowest y.
+std::optional<Container> recorded_box(const Pack& pack, const char* key) {
+    const auto text = pack.metadata.get(key);
+    if (!text) {
+        return std::nullopt;
+    }
+    std::istringstream in(*text);
+    std::array<double, 6> b{};
+    for (double& v : b) {
+        in >> v;
+    }
+    if (in.fail()) {
+        return std::nullopt;
+    }
+    Container box;
+    box.x_min = b[0];
+    box.x_max = b[1];
+    box.floor = b[2];
+    box.z_min = b[4];
+    box.z_max = b[5];
+    return box;
+}
+
+PackRead single(Pack pack, const ReadOptions& options, const char* box_key) {
     if (options.radius) {
         for (auto& p : pack.particles) {
             p.radius = *options.radius;
         }
     }
     PackRead read;
+    read.file_box = recorded_box(pack, box_key);
     read.pack = std::move(pack);
     return read;
 }
@@ -69,7 +96,7 @@ PackRead read_detected(std::istream& in, const std::string& source, bool data_na
     reader.put_back(line);
     if (is_dump) {
         refuse_frame(source, options, "dump");
-        return single(detail::read_dump_lines(reader), options);
+        return single(detail::read_dump_lines(reader), options, "dump_box");
     }
     if (is_data) {
         refuse_frame(source, options, "LAMMPS data");
@@ -80,7 +107,7 @@ PackRead read_detected(std::istream& in, const std::string& source, bool data_na
             rest << text << '\n';
         }
         std::istringstream again(rest.str());
-        return single(read_lammps_data(again, source), options);
+        return single(read_lammps_data(again, source), options, "data_box");
     }
     if (blanks > 0) {
         throw InputError(source, 1, "blank line where the particle count was expected");
@@ -127,6 +154,7 @@ PackRead read_pack_file(const std::filesystem::path& path, const ReadOptions& op
     PackRead read = read_pack_file_as_written(path, options);
     if (!options.as_written) {
         to_internal_frame(read.pack);
+        settle_container(read.pack, options.container, read.file_box, path.string());
     }
     return read;
 }

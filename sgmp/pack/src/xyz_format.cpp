@@ -405,10 +405,11 @@ std::vector<double> cell_numbers(const std::string& key, const std::string& valu
     return numbers;
 }
 
-/// The file's own cell as its container: walls at the Lattice's x and z faces, the floor
-/// at its lowest y (as a dump's box, dump_format.cpp), when the Lattice is an orthogonal
-/// box of positive width; with a `container` key too, a container that differs from the
-/// cell in x, z or the floor is kept and named in a warning.
+/// The file's own cell as its box (walls at the Lattice's x and z faces, the floor at its
+/// lowest y), when the Lattice is an orthogonal box of positive width: a simulation box is
+/// not a container, so without a `container` key it is taken only when the spheres reach
+/// it (stated_container.hpp); with a key, a container that differs from the cell in x, z or
+/// the floor is kept and named in a warning.
 void take_cell(const std::vector<double>& lattice, const std::vector<double>& origin,
                PackRead& read) {
     const bool orthogonal = lattice.size() == 9 && lattice[1] == 0.0 && lattice[2] == 0.0 &&
@@ -426,7 +427,7 @@ void take_cell(const std::vector<double>& lattice, const std::vector<double>& or
         return;  // written in an output frame: the cell is the turned box (output_frame.hpp)
     }
     if (!key) {
-        read.pack.metadata.set("container", cell.to_string());
+        read.file_box = cell;
         return;
     }
     Container stated;
@@ -584,6 +585,9 @@ void write_xyz(std::ostream& out, const Pack& pack) {
         << lattice_text(box) << "\" Origin=\"" << format_number(box.lo.x()) << ' '
         << format_number(box.lo.y()) << ' ' << format_number(box.lo.z()) << "\" pbc=\""
         << pbc_text(pack) << "\"";
+    if (!pack.metadata.contains("container")) {  // the walls, always (stated_container.hpp)
+        out << " container=\"" << container_of(pack).to_string() << '"';
+    }
     for (const auto& [key, value] : pack.metadata.entries()) {
         if (is_derived_key(key)) {
             continue;

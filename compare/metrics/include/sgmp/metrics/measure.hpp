@@ -52,8 +52,10 @@ struct Measurement {
     bool polydisperse = false;
     Box region;
     Container container;
-    std::string container_source;  // "metadata" or "thesis default"
-    double top = 0.0;              // highest sphere top, max(y + r)
+    /// "metadata" (the file's header), "box" (a dump's or data file's box, its spheres
+    /// reaching it), the statement ("--container", "manifest FILE:LINE") or "thesis default"
+    std::string container_source;
+    double top = 0.0;  // highest sphere top, max(y + r)
     double phi = 0.0;
     PhiProfile phi_profile;
     OverlapStats overlaps;

@@ -6,7 +6,10 @@
 /// judged against, e.g. one DEM friction class per group) or `variant` / `stiff` (another
 /// protocol or stiffness of the reference group named by `group`: a reference class of its
 /// own, "<group> (variant)", crossval.hpp);
-/// `seconds` is the wall time that made the pack (empty when unknown).
+/// `seconds` is the wall time that made the pack (empty when unknown). An optional seventh
+/// column `container` (header `role,group,count,seed,seconds,path,container`) states the
+/// pack's walls, "x_min x_max z_min z_max floor" as the header key (empty: not stated;
+/// sgmp/pack/stated_container.hpp).
 
 #include <cstddef>
 #include <cstdint>
@@ -14,6 +17,8 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "sgmp/pack/geometry.hpp"
 
 namespace sgmp::report {
 
@@ -28,11 +33,16 @@ struct ManifestEntry {
     std::uint64_t seed = 0;
     std::optional<double> seconds;
     std::string path;
+    /// The walls the row states (the `container` column), parsed by Container::parse.
+    std::optional<Container> container{};
+    /// The row's line in the manifest (from 1), for messages.
+    std::size_t line = 0;
 };
 
 /// Reads a manifest strictly; throws sgmp::InputError ("source:line: reason") on a wrong
 /// header, a wrong number of fields, an unknown role, a non-numeric count, seed or seconds,
-/// an empty group or path, or a path listed twice. Fields holding a comma or a quote are
+/// an empty group or path, a path listed twice, or a container that is not five finite
+/// numbers with x_min < x_max and z_min < z_max. Fields holding a comma or a quote are
 /// double-quoted, with quotes doubled (RFC 4180).
 std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& source);
 

@@ -8,10 +8,12 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "sgmp/pack/stated_container.hpp"
 #include "sgmp/report/manifest.hpp"
 
 namespace sgmp::report {
@@ -27,6 +29,8 @@ struct PictureChoice {
     std::string path;  ///< the pack file
     std::string
         file;  ///< the picture's name in the report, e.g. pictures/n9000-c1-loose-random.png
+    /// The walls stated for the pack (the manifest's column or --container), if any.
+    std::optional<StatedContainer> container{};
 };
 
 /// The packs pictured: at `preferred` when both roles have packs there, else at the largest

@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/pack.hpp"
+#include "sgmp/pack/stated_container.hpp"
 
 namespace sgmp {
 
@@ -20,9 +22,14 @@ struct ReadOptions {
     /// Threads that parse the particle lines of an extended XYZ file (at least 1). The pack,
     /// and the error of a bad file, do not depend on it.
     unsigned threads = 1;
-    /// Keep the file's frame (output_frame.hpp: up_axis, box) instead of turning it y up
-    /// (for showing a header as written).
+    /// Keep the file's frame (output_frame.hpp: up_axis, box) instead of turning it y up,
+    /// and settle no container (stated_container.hpp): the header as written, or the
+    /// particles of a file whose walls the caller knows (a pour's own result).
     bool as_written = false;
+    /// The walls stated by the user (`--container`, a manifest's `container` column): the
+    /// pack's container, which a container the file states itself must match
+    /// (stated_container.hpp). Not applied when `as_written`.
+    std::optional<StatedContainer> container{};
 };
 
 struct PackRead {
@@ -38,6 +45,10 @@ struct PackRead {
     /// ends print them as warnings): an extended XYZ whose `container` key disagrees with
     /// its Lattice/Origin cell (the key is kept).
     std::vector<std::string> warnings;
+    /// The box of a LAMMPS dump or data file as a container (walls at its x and z bounds,
+    /// the floor at its lowest y): taken as the container only when the spheres reach it
+    /// (stated_container.hpp); nullopt for other formats.
+    std::optional<Container> file_box{};
 };
 
 }  // namespace sgmp

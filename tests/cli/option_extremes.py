@@ -38,8 +38,16 @@ TIMEOUT = 120
 def options_of(command):
     """(name, type, six, help text) of the numeric options in `command --help`."""
     text = subprocess.run(command + ["--help"], capture_output=True, text=True).stdout
-    found = []
+    # A description wrapped at 100 columns continues on lines indented past the option
+    # column: join them to their option's line so the bounds are read whole.
+    lines = []
     for line in text.splitlines():
+        if lines and re.match(r"^ {20,}\S", line) and not line.strip().startswith("-"):
+            lines[-1] += " " + line.strip()
+        else:
+            lines.append(line)
+    found = []
+    for line in lines:
         m = OPTION.match(line)
         if m and m.group(1) not in ("help",):
             found.append((m.group(1), m.group(2), bool(m.group(3)), m.group(4)))

@@ -430,6 +430,34 @@ BOOST_AUTO_TEST_CASE(help_and_version) {
         BOOST_TEST(help.out.find(option) != std::string::npos);
     }
     BOOST_TEST(help.out.find("=0.001") != std::string::npos);  // defaults are shown
+    // Every program's and command's help fits 100 columns (lines once ran to 250): the
+    // descriptions wrap under their column. UTF-8 signs count once per byte here.
+    const fs::path bin = fs::path(SGMP_EXECUTABLE).parent_path().parent_path();
+    for (const auto& [program, command] :
+         std::vector<std::pair<std::string, std::string>>{{"sgmp/sgmp", ""},
+                                                          {"sgmp/sgmp", "pack"},
+                                                          {"sgmp/sgmp", "arrange"},
+                                                          {"sgmp/sgmp", "batch"},
+                                                          {"sgmp/sgmp", "convert"},
+                                                          {"sgmp/sgmp", "render"},
+                                                          {"compare/sgmp-compare", ""},
+                                                          {"compare/sgmp-compare", "measure"},
+                                                          {"compare/sgmp-compare", "report"},
+                                                          {"compare/sgmp-compare", "crossval"},
+                                                          {"compare/sgmp-compare", "regress"},
+                                                          {"reference/sgmp-reference", "pour"},
+                                                          {"reference/sgmp-reference", "settle"}}) {
+        const auto run = sgmp::testing::run_command(
+            "'" + (bin / program).string() + "' " + command + " --help", s.dir);
+        BOOST_TEST_INFO(program << " " << command);
+        BOOST_TEST(run.status == 0);
+        std::istringstream lines(run.out);
+        std::size_t widest = 0;
+        for (std::string line; std::getline(lines, line);) {
+            widest = std::max(widest, line.size());
+        }
+        BOOST_TEST(widest <= 100u);
+    }
     const Run version = s.run("--version");
     BOOST_TEST(version.status == 0);
     // The bare version, the same text pack headers record as `version`.

@@ -1,5 +1,7 @@
 #include "sgmp/cli/run_main.hpp"
 
+#include "sgmp/cli/help_format.hpp"
+
 #include <algorithm>
 #include <iostream>
 #include <new>
@@ -59,6 +61,7 @@ std::string failure_message(const std::exception& error) {
 
 int run_main(std::string_view program, CLI::App& app, const std::function<void()>& parse,
              const std::function<int()>& body, const OptionSpellings& exceptions) {
+    wrap_help(app);  // every program's --help within kHelpWidth columns
     try {
         parse();
     } catch (const CLI::Success& e) {

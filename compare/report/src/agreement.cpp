@@ -14,6 +14,7 @@
 #include "sgmp/pack/metadata.hpp"
 #include "sgmp/report/equivalence.hpp"
 #include "sgmp/report/group_curves.hpp"
+#include "sgmp/report/sequential_rows.hpp"
 #include "sgmp/report/statistics.hpp"
 
 namespace sgmp::report {
@@ -191,7 +192,7 @@ void take(MetricRow& row, const EquivalenceResult& r) {
 }
 
 MetricRow judge_scalar(const MetricRule& rule, const std::vector<const PackSummary*>& a,
-                       const std::vector<const PackSummary*>& b) {
+                       const std::vector<const PackSummary*>& b, double alpha) {
     MetricRow row;
     const ScalarSample sa = sample_of(scalar_column(rule, a));
     const ScalarSample sb = sample_of(scalar_column(rule, b));
@@ -201,7 +202,7 @@ MetricRow judge_scalar(const MetricRule& rule, const std::vector<const PackSumma
     row.reference_sd = sb.sd;
     row.difference = sa.mean - sb.mean;
     row.seed_spread = b.size() >= 2 ? 2.0 * sb.sd : 0.0;
-    const EquivalenceResult r = test_scalar(sa, sb, rule.margin);
+    const EquivalenceResult r = test_scalar(sa, sb, rule.margin, alpha);
     take(row, r);
     return row;
 }
@@ -230,7 +231,7 @@ std::vector<std::vector<double>> judged_bins(const MetricRule& rule,
 }
 
 MetricRow judge_curve(const MetricRule& rule, const std::vector<const PackSummary*>& a,
-                      const std::vector<const PackSummary*>& b) {
+                      const std::vector<const PackSummary*>& b, double alpha) {
     MetricRow row;
     auto both = a;
     both.insert(both.end(), b.begin(), b.end());
@@ -239,17 +240,37 @@ MetricRow judge_curve(const MetricRule& rule, const std::vector<const PackSummar
         distance_between(rule, *b.front(), mean_values(rule, a), mean_values(rule, b), ranges);
     row.seed_spread = b.size() >= 2 ? mean_replicate_distance(rule, b, ranges) : 0.0;
     if (b.size() < 2) {  // no reference scatter: the noise is unknown
-        take(row, test_scalar({row.difference, 0.0, 1}, {0.0, 0.0, 1}, rule.margin));
+        take(row, test_scalar({row.difference, 0.0, 1}, {0.0, 0.0, 1}, rule.margin, alpha));
         row.ci_low = 0.0;
         return row;
     }
     const auto bins_a = judged_bins(rule, a, ranges);
     const auto bins_b = judged_bins(rule, b, ranges);
     take(row, rule.name == "g_r"
-                  ? test_l2_curves(bins_a, bins_b, b.front()->gr_bin_width, rule.margin)
+                  ? test_l2_curves(bins_a, bins_b, b.front()->gr_bin_width, rule.margin, alpha)
                   : test_total_variation(row.difference, noise_variance(bins_a, bins_b),
-                                         rule.margin, std::min(a.size(), b.size())));
+                                         rule.margin, std::min(a.size(), b.size()), alpha));
     return row;
+}
+
+/// The total-variation test of P(Z) with n_a and n_b packs: the per-bin noise variances
+/// scaled as one shared σ² would scale them, (1/n_a + 1/n_b)/(1/|a| + 1/|b|).
+bool tv_decides_with(const MetricRule& rule, const std::vector<const PackSummary*>& a,
+                     const std::vector<const PackSummary*>& b, double alpha, std::size_t n_a,
+                     std::size_t n_b) {
+    auto both = a;
+    both.insert(both.end(), b.begin(), b.end());
+    const auto ranges = ranges_of(both);
+    const double distance =
+        distance_between(rule, *b.front(), mean_values(rule, a), mean_values(rule, b), ranges);
+    const auto inverse = [](std::size_t n) { return 1.0 / static_cast<double>(n); };
+    const double scale = (inverse(n_a) + inverse(n_b)) / (inverse(a.size()) + inverse(b.size()));
+    auto variance = noise_variance(judged_bins(rule, a, ranges), judged_bins(rule, b, ranges));
+    for (double& v : variance) {
+        v *= scale;
+    }
+    return test_total_variation(distance, variance, rule.margin, std::min(n_a, n_b), alpha)
+               .decision != Decision::Inconclusive;
 }
 
 Comparison compare_at(const Group& candidate, const Group& reference, std::size_t count) {
@@ -445,15 +466,15 @@ static bool all_measured(const MetricRule& rule, const std::vector<const PackSum
 }
 
 MetricRow judge(const MetricRule& rule, const std::vector<const PackSummary*>& candidate,
-                const std::vector<const PackSummary*>& reference) {
+                const std::vector<const PackSummary*>& reference, double alpha) {
     MetricRow row;
     if (!all_measured(rule, candidate) || !all_measured(rule, reference)) {
         row.tolerance_rule = "not measured";  // no interval: inconclusive
         row.margin = row.tolerance = rule.margin;
         row.power = false;
     } else {
-        row = rule.kind == MetricKind::Scalar ? judge_scalar(rule, candidate, reference)
-                                              : judge_curve(rule, candidate, reference);
+        row = rule.kind == MetricKind::Scalar ? judge_scalar(rule, candidate, reference, alpha)
+                                              : judge_curve(rule, candidate, reference, alpha);
     }
     row.name = rule.name;
     row.label = rule.label;
@@ -472,6 +493,40 @@ MetricRow judge(const MetricRule& rule, const std::vector<const PackSummary*>& c
         }
     }
     return row;
+}
+
+bool decides_with(const MetricRule& rule, const std::vector<const PackSummary*>& candidate,
+                  const std::vector<const PackSummary*>& reference, double alpha,
+                  std::size_t candidate_n, std::size_t reference_n) {
+    if (candidate.empty() || reference.empty() || candidate_n < 1 || reference_n < 1 ||
+        !all_measured(rule, candidate) || !all_measured(rule, reference)) {
+        return false;
+    }
+    if (rule.kind == MetricKind::Scalar) {
+        ScalarSample sa = sample_of(scalar_column(rule, candidate));
+        ScalarSample sb = sample_of(scalar_column(rule, reference));
+        if (sa.n < 2 && sb.n < 2) {
+            return false;
+        }
+        sa.sd = sa.n < 2 ? sb.sd : sa.sd;  // a group of one pack scatters as the other
+        sb.sd = sb.n < 2 ? sa.sd : sb.sd;
+        sa.n = candidate_n;
+        sb.n = reference_n;
+        return test_scalar(sa, sb, rule.margin, alpha).decision != Decision::Inconclusive;
+    }
+    if (reference.size() < 2) {
+        return false;
+    }
+    if (rule.name != "g_r") {
+        return tv_decides_with(rule, candidate, reference, alpha, candidate_n, reference_n);
+    }
+    auto both = candidate;
+    both.insert(both.end(), reference.begin(), reference.end());
+    const auto ranges = ranges_of(both);
+    return l2_decides_with(judged_bins(rule, candidate, ranges),
+                           judged_bins(rule, reference, ranges),
+                           reference.front()->gr_bin_width, rule.margin, alpha, candidate_n,
+                           reference_n);
 }
 
 PackSummary summarise(const std::string& source, const Pack& pack, const Measurement& m) {
@@ -685,6 +740,7 @@ Report build_report(std::vector<Group> groups, ReportPlan plan) {
             check_physical(p);
         }
     }
+    BoundaryCache cache;
     for (const auto& [ci, ri] : report.plan.comparisons) {
         const Group& cand = report.groups[ci];
         const Group& ref = report.groups[ri];
@@ -693,6 +749,10 @@ Report build_report(std::vector<Group> groups, ReportPlan plan) {
         for (const std::size_t n : cand_counts) {
             if (ref_counts.count(n) != 0) {
                 report.comparisons.push_back(compare_at(cand, ref, n));
+                if (report.plan.sequential) {  // SGMP seeds added in blocks (sequential_rows.hpp)
+                    judge_sequentially(report.comparisons.back(), packs_of(cand, n),
+                                       packs_of(ref, n), *report.plan.sequential, cache);
+                }
             } else {
                 report.notes.push_back(cand.label + " has packs of " + std::to_string(n) +
                                        " particles, " + ref.label + " has none: not compared");

@@ -740,7 +740,7 @@ Report build_report(std::vector<Group> groups, ReportPlan plan) {
             check_physical(p);
         }
     }
-    BoundaryCache cache;
+    static BoundaryCache cache;  // boundaries depend only on the design: shared by reports
     for (const auto& [ci, ri] : report.plan.comparisons) {
         const Group& cand = report.groups[ci];
         const Group& ref = report.groups[ri];

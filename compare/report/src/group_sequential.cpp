@@ -192,6 +192,10 @@ std::vector<double> student_levels(const std::vector<std::size_t>& candidate_n,
             }
         }
         const double df = static_cast<double>(candidate_n[k] + reference_n) - 2.0;
+        if (k == 0) {  // T₁ alone is Student's t_ν: its level is the spent α itself
+            levels.push_back(std::max(spent[0], kSmallestLevel));
+            continue;
+        }
         levels.push_back(std::isfinite(c) && df > 0.0
                              ? boost::math::cdf(boost::math::complement(
                                    boost::math::students_t(df), c))
@@ -279,8 +283,9 @@ std::vector<Look> boundaries(const std::vector<std::size_t>& candidate_n, std::s
     return looks;
 }
 
-const std::vector<Look>& BoundaryCache::get(const std::vector<std::size_t>& candidate_n,
-                                            std::size_t reference_n, double alpha) {
+std::vector<Look> BoundaryCache::get(const std::vector<std::size_t>& candidate_n,
+                                     std::size_t reference_n, double alpha) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     const auto key = std::make_tuple(candidate_n, reference_n, alpha);
     auto found = cache_.find(key);
     if (found == cache_.end()) {

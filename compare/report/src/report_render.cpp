@@ -1,4 +1,5 @@
 #include "sgmp/report/report_render.hpp"
+#include "sgmp/report/sequential_rows.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -90,6 +91,8 @@ std::string verdict_text(const MetricRow& row) {
     std::string text(to_string(row.verdict));
     if (row.verdict == Verdict::Info && row.tolerance_rule == "below overlap depth") {
         text += " (below overlap depth)";
+    } else if (row.verdict == Verdict::Inconclusive && row.look > 0) {
+        text += " (" + sequential_note(row) + ")";
     } else if (row.verdict == Verdict::Inconclusive) {
         text += row.seeds_to_decide ? " (" + std::to_string(*row.seeds_to_decide) + " seeds a side)"
                                     : " (no seed count up to 1000 decides)";
@@ -258,7 +261,8 @@ std::string render_csv(const Report& report, const ReportContext& context) {
     csv << "count,candidate,reference,metric,unit,kind,candidate_n,candidate_mean,candidate_sd,"
            "reference_n,reference_mean,reference_sd,difference,seed_spread,model_spread,"
            "tolerance,tolerance_rule,ratio,power,verdict,margin,ci_low,ci_high,mdd,p_agree,"
-           "p_differ,seeds_to_decide\n";
+           "p_differ,seeds_to_decide,look,looks,alpha_spent,nominal_alpha,limited_by,"
+           "pours_to_decide\n";
     write_csv_preamble(csv, "sgmp-compare", context.command, rule_statements());
     for (const auto& c : report.comparisons) {
         for (const auto& row : c.rows) {
@@ -266,7 +270,8 @@ std::string render_csv(const Report& report, const ReportContext& context) {
             const auto value = [&](double v) { return scalar ? format_number(v) : std::string(); };
             csv << c.count << ',' << csv_field(c.candidate) << ',' << csv_field(c.reference) << ','
                 << row.name << ',' << csv_field(row.unit) << ',' << (scalar ? "scalar" : "curve")
-                << ',' << c.candidate_packs << ',' << value(row.candidate_mean) << ','
+                << ',' << (row.look > 0 ? row.candidate_n : c.candidate_packs) << ','
+                << value(row.candidate_mean) << ','
                 << value(row.candidate_sd) << ',' << c.reference_packs << ','
                 << value(row.reference_mean) << ',' << value(row.reference_sd) << ','
                 << format_number(row.difference) << ',' << format_number(row.seed_spread) << ','
@@ -276,7 +281,8 @@ std::string render_csv(const Report& report, const ReportContext& context) {
                 << format_number(row.margin) << ',' << format_number(row.ci_low) << ','
                 << format_number(row.ci_high) << ',' << format_number(row.mdd) << ','
                 << format_number(row.p_agree) << ',' << format_number(row.p_differ) << ','
-                << (row.seeds_to_decide ? std::to_string(*row.seeds_to_decide) : "") << '\n';
+                << (row.seeds_to_decide ? std::to_string(*row.seeds_to_decide) : "") << ','
+                << sequential_csv_fields(row) << '\n';
         }
     }
     return csv.str();
@@ -349,6 +355,13 @@ Json render_json(const Report& report, const ReportContext& context) {
                      {"p_agree", row.p_agree},
                      {"p_differ", row.p_differ},
                      {"seeds_to_decide", row.seeds_to_decide ? Json(*row.seeds_to_decide) : Json()},
+                     {"look", row.look},
+                     {"looks", row.looks},
+                     {"candidate_n", row.look > 0 ? row.candidate_n : c.candidate_packs},
+                     {"alpha_spent", row.alpha_spent},
+                     {"nominal_alpha", row.nominal_alpha},
+                     {"limited_by", row.limited_by},
+                     {"pours_to_decide", row.pours_to_decide ? Json(*row.pours_to_decide) : Json()},
                      {"verdict", to_string(row.verdict)}});
         }
         comparisons.push_back(Json{{"count", c.count},

@@ -118,7 +118,7 @@ void judge_sequentially(Comparison& comparison, const Packs& candidate, const Pa
         return;
     }
     const auto schedule = look_schedule(design, candidate.size());
-    const auto& looks = cache.get(schedule, reference.size(), design.alpha);
+    const auto looks = cache.get(schedule, reference.size(), design.alpha);
     const auto rules = rules_by_name(candidate, reference);
     for (auto& row : comparison.rows) {
         const auto rule = rules.find(row.name);
@@ -177,6 +177,32 @@ std::string render_seeds_needed_csv(const std::vector<SeedsNeeded>& needed) {
             << s.rows << '\n';
     }
     return csv.str();
+}
+
+std::string sequential_note(const MetricRow& row) {
+    std::string text = "look " + std::to_string(row.look) + " of " + std::to_string(row.looks) +
+                       " at " + std::to_string(row.candidate_n) + " seeds; ";
+    if (row.limited_by == "candidate" && row.seeds_to_decide) {
+        return text + "limited by the candidate: " + std::to_string(*row.seeds_to_decide) +
+               " seeds decide";
+    }
+    if (row.limited_by == "reference" && row.pours_to_decide) {
+        return text + "limited by the reference: " + std::to_string(*row.pours_to_decide) +
+               " pours decide";
+    }
+    return text + "no side alone decides up to " + std::to_string(kMostProjected);
+}
+
+std::string sequential_csv_fields(const MetricRow& row) {
+    if (row.look == 0) {
+        return ",,,,,";
+    }
+    std::ostringstream out;
+    out.precision(6);
+    out << row.look << ',' << row.looks << ',' << row.alpha_spent << ',' << row.nominal_alpha
+        << ',' << row.limited_by << ','
+        << (row.pours_to_decide ? std::to_string(*row.pours_to_decide) : "");
+    return out.str();
 }
 
 }  // namespace sgmp::report

@@ -40,6 +40,7 @@
 
 #include <cstddef>
 #include <map>
+#include <mutex>
 #include <tuple>
 #include <vector>
 
@@ -89,13 +90,15 @@ struct Look {
 std::vector<Look> boundaries(const std::vector<std::size_t>& candidate_n,
                              std::size_t reference_n, double alpha);
 
-/// boundaries() remembered by their arguments (crossval asks for the same few many times).
+/// boundaries() remembered by their arguments (crossval asks for the same few many times);
+/// safe to share between threads.
 class BoundaryCache {
 public:
-    const std::vector<Look>& get(const std::vector<std::size_t>& candidate_n,
-                                 std::size_t reference_n, double alpha);
+    std::vector<Look> get(const std::vector<std::size_t>& candidate_n, std::size_t reference_n,
+                          double alpha);
 
 private:
+    std::mutex mutex_;
     std::map<std::tuple<std::vector<std::size_t>, std::size_t, double>, std::vector<Look>> cache_;
 };
 

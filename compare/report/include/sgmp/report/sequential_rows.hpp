@@ -48,6 +48,14 @@ struct SeedsNeeded {
 /// limits and a planned look still ahead, in report order.
 std::vector<SeedsNeeded> seeds_needed(const Report& report, const SequentialDesign& design);
 
+/// An undecided sequential row in words: its look, and the side and count that would
+/// decide it, e.g. "look 3 of 11 at 13 seeds; limited by the reference: 31 pours decide".
+std::string sequential_note(const MetricRow& row);
+
+/// report.csv's columns `look,looks,alpha_spent,nominal_alpha,limited_by,pours_to_decide` of
+/// a row (empty fields for a fixed-sample row).
+std::string sequential_csv_fields(const MetricRow& row);
+
 /// seeds-needed.csv: `mode,count,seeds_now,seeds_next,rows`, header first (fields quoted when
 /// they hold a comma or quote).
 std::string render_seeds_needed_csv(const std::vector<SeedsNeeded>& needed);

@@ -233,8 +233,8 @@ void add_sequential(CLI::App* cmd, CrossvalOptions& o) {
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
     cmd->add_option("--seeds-needed", o.seeds_needed,
-                    "write CSV 'mode,count,seeds_now,seeds_next,rows': each mode and count whose "
-                    "undecided rows more seeds would decide, and the seeds of its next look");
+                    "write CSV 'mode,count,seeds_now,seeds_next,rows': each mode and count with "
+                    "rows undecided before the last look, and the seeds of its next look");
 }
 
 }  // namespace

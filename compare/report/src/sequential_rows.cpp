@@ -135,8 +135,10 @@ std::vector<SeedsNeeded> seeds_needed(const Report& report, const SequentialDesi
     for (const auto& c : report.comparisons) {
         std::size_t rows = 0;
         for (const auto& row : c.rows) {
+            // Every undecided row before the last look: its estimate moves as seeds come,
+            // so even a row the projection calls reference-limited may still decide.
             const bool open = row.look > 0 && row.verdict == Verdict::Inconclusive &&
-                              row.look < row.looks && row.limited_by == "candidate";
+                              row.look < row.looks;
             rows += open ? 1 : 0;
         }
         if (rows == 0) {

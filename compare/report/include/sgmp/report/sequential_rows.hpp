@@ -35,17 +35,18 @@ void judge_sequentially(Comparison& comparison, const std::vector<const PackSumm
                         const std::vector<const PackSummary*>& reference,
                         const SequentialDesign& design, BoundaryCache& cache);
 
-/// A candidate group at one count whose next block of seeds may decide a row.
+/// A candidate group at one count with a row still undecided before its last look.
 struct SeedsNeeded {
     std::string group;
     std::size_t count = 0;
     std::size_t seeds_now = 0;   // packs the group holds at this count
     std::size_t seeds_next = 0;  // packs at its next look
-    std::size_t rows = 0;        // undecided rows limited by the candidate, every reference
+    std::size_t rows = 0;        // its undecided rows, against every reference
 };
 
-/// Every (candidate group, count) with an undecided sequential row that the candidate
-/// limits and a planned look still ahead, in report order.
+/// Every (candidate group, count) with an undecided sequential row and a planned look still
+/// ahead, in report order: every such row gets more seeds, whichever side limits it (the
+/// projection holds the estimate fixed; the estimate moves as seeds come).
 std::vector<SeedsNeeded> seeds_needed(const Report& report, const SequentialDesign& design);
 
 /// An undecided sequential row in words: its look, and the side and count that would

@@ -51,7 +51,7 @@ struct CrossvalOptions {
     bool pictures = false;
     int picture_size = 600;
     SequentialDesign sequential{5, 5, 0, 0.05};  // --max-seeds (0: not given), --first-look, …
-    std::string seeds_needed;     // --seeds-needed FILE
+    std::string seeds_needed;                    // --seeds-needed FILE
     CommonOptions common;
 };
 
@@ -174,7 +174,8 @@ int run_crossval(CrossvalOptions& o, const std::string& command) {
          {"crossval.json", crossval.dump(2) + "\n"},
          {"baseline.json", baseline_json(baseline_entries(report), provenance).dump(2) + "\n"}});
     if (!o.seeds_needed.empty()) {  // before the report: its directory is replaced whole
-        const std::string text = render_seeds_needed_csv(seeds_needed(report, *report.plan.sequential));
+        const std::string text =
+            render_seeds_needed_csv(seeds_needed(report, *report.plan.sequential));
         sgmp::write_file_atomically(o.seeds_needed, o.common.force,
                                     [&](std::ostream& out) { out << text; });
     }

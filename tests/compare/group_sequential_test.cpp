@@ -17,8 +17,12 @@ namespace {
 
 const boost::math::normal kUnit;
 
-double phi(double x) { return boost::math::pdf(kUnit, x); }
-double upper(double x) { return boost::math::cdf(boost::math::complement(kUnit, x)); }
+double phi(double x) {
+    return boost::math::pdf(kUnit, x);
+}
+double upper(double x) {
+    return boost::math::cdf(boost::math::complement(kUnit, x));
+}
 
 /// Composite Simpson's rule of f on [a, b] with `intervals` (even) intervals.
 template <class F>
@@ -51,13 +55,13 @@ BOOST_AUTO_TEST_CASE(spending_is_the_obrien_fleming_closed_form) {
 }
 
 BOOST_AUTO_TEST_CASE(the_schedule_looks_every_block_and_at_the_seeds_there_are) {
-    BOOST_TEST(default_looks() ==
-                   (std::vector<std::size_t>{3, 8, 13, 18, 23, 28, 33, 38, 43, 48, 50}),
-               boost::test_tools::per_element());
+    BOOST_TEST(
+        default_looks() == (std::vector<std::size_t>{3, 8, 13, 18, 23, 28, 33, 38, 43, 48, 50}),
+        boost::test_tools::per_element());
     // 7 seeds, off the grid: an unplanned look at 7 between 3 and 8.
-    BOOST_TEST(look_schedule({3, 5, 20, 0.05}, 7) ==
-                   (std::vector<std::size_t>{3, 7, 8, 13, 18, 20}),
-               boost::test_tools::per_element());
+    BOOST_TEST(
+        look_schedule({3, 5, 20, 0.05}, 7) == (std::vector<std::size_t>{3, 7, 8, 13, 18, 20}),
+        boost::test_tools::per_element());
     // More seeds than the maximum: the last look is at the seeds there are.
     BOOST_TEST(look_schedule({5, 5, 10, 0.05}, 12) == (std::vector<std::size_t>{5, 10, 12}),
                boost::test_tools::per_element());
@@ -85,11 +89,10 @@ BOOST_AUTO_TEST_CASE(two_looks_match_an_independent_quadrature) {
         const double c1 = looks[0].boundary;
         const double c2 = looks[1].boundary;
         const double spent =
-            upper(c1) + simpson(
-                            [&](double u) {
-                                return phi(u) * upper((c2 - rho * u) / std::sqrt(1 - rho * rho));
-                            },
-                            -12.0, c1, 40000);
+            upper(c1) +
+            simpson(
+                [&](double u) { return phi(u) * upper((c2 - rho * u) / std::sqrt(1 - rho * rho)); },
+                -12.0, c1, 40000);
         BOOST_TEST_MESSAGE("n_B " << reference << ": c = " << c1 << ", " << c2
                                   << "; spent by quadrature " << spent);
         BOOST_TEST(std::abs(upper(c1) - spent_alpha(looks[0].fraction, 0.05)) < 1e-9);
@@ -126,8 +129,8 @@ BOOST_AUTO_TEST_CASE(three_looks_match_an_independent_quadrature) {
         },
         -10.0, c1, 800);
     const double increment = looks[2].alpha_spent - looks[1].alpha_spent;
-    BOOST_TEST_MESSAGE("c = " << c1 << ", " << c2 << ", " << c3 << "; third look spends "
-                              << third << " of " << increment);
+    BOOST_TEST_MESSAGE("c = " << c1 << ", " << c2 << ", " << c3 << "; third look spends " << third
+                              << " of " << increment);
     BOOST_TEST(std::abs(third - increment) < 2e-6);
 }
 
@@ -160,10 +163,9 @@ BOOST_AUTO_TEST_CASE(monte_carlo_paths_cross_as_spent) {
     for (std::size_t k = 0; k < n.size(); ++k) {
         const double share = static_cast<double>(crossed[k]) / kPaths;
         const double sd = std::sqrt(looks[k].alpha_spent * (1 - looks[k].alpha_spent) / kPaths);
-        BOOST_TEST_MESSAGE("look " << k + 1 << " n " << n[k] << " t " << looks[k].fraction
-                                   << " c " << looks[k].boundary << " nominal "
-                                   << looks[k].nominal_alpha << " spent " << looks[k].alpha_spent
-                                   << " crossed " << share);
+        BOOST_TEST_MESSAGE("look " << k + 1 << " n " << n[k] << " t " << looks[k].fraction << " c "
+                                   << looks[k].boundary << " nominal " << looks[k].nominal_alpha
+                                   << " spent " << looks[k].alpha_spent << " crossed " << share);
         BOOST_TEST(std::abs(share - looks[k].alpha_spent) <= 4.0 * std::max(sd, 1e-5));
     }
 }

@@ -32,9 +32,9 @@ void write_manifest() {
     manifest << "role,group,count,seed,seconds,path\n";
     for (int seed = 1; seed <= 6; ++seed) {
         const std::string name = "p" + std::to_string(seed) + ".xyz";
-        sgmp::write_pack_file(scratch() / name,
-                              sgmp::testing::jittered_fcc_pack(300, 1.05, 0.02, std::uint64_t(seed)),
-                              true);
+        sgmp::write_pack_file(
+            scratch() / name,
+            sgmp::testing::jittered_fcc_pack(300, 1.05, 0.02, std::uint64_t(seed)), true);
         manifest << (seed <= 3 ? "candidate,mode-a,300," : "reference,DEM mu=0.5,300,") << seed
                  << ",0.01," << name << '\n';
     }
@@ -68,8 +68,9 @@ BOOST_AUTO_TEST_CASE(max_seeds_outside_2_to_10000_is_a_usage_error) {
 
 BOOST_AUTO_TEST_CASE(crossval_reports_looks_and_writes_seeds_needed) {
     write_manifest();
-    const auto r = run("crossval --manifest manifest.csv --no-pictures --out cv --max-seeds 50 "
-                       "--first-look 3 --seeds-needed needed.csv");
+    const auto r =
+        run("crossval --manifest manifest.csv --no-pictures --out cv --max-seeds 50 "
+            "--first-look 3 --seeds-needed needed.csv");
     BOOST_TEST_REQUIRE(r.status == 0, r.err);
     const std::string csv = sgmp::testing::read_bytes(scratch() / "cv" / "report.csv");
     const std::string header = csv.substr(0, csv.find('\n'));

@@ -24,7 +24,9 @@ namespace {
 
 constexpr double kStated = 0.05;
 
-double binomial_se(std::size_t rows) { return std::sqrt(kStated * (1 - kStated) / double(rows)); }
+double binomial_se(std::size_t rows) {
+    return std::sqrt(kStated * (1 - kStated) / double(rows));
+}
 
 /// A physically possible centre for each scalar rule (check_physical), in rule order.
 double centre_of(const MetricRule& rule) {
@@ -103,8 +105,8 @@ Tally simulate(std::uint64_t seed, int reports, std::size_t reference_n, double 
                 continue;
             }
             // With no offset, the side is that of the estimate (a differ above or below).
-            const int side = offset_share == 0.0 ? (row.difference >= 0 ? 0 : 1)
-                                                 : (judged++ % 2 == 0 ? 0 : 1);
+            const int side =
+                offset_share == 0.0 ? (row.difference >= 0 ? 0 : 1) : (judged++ % 2 == 0 ? 0 : 1);
             ++t.rows[side];
             t.agree[side] += row.verdict == Verdict::Agree ? 1 : 0;
             t.differ[side] += row.verdict == Verdict::Differ ? 1 : 0;
@@ -119,8 +121,8 @@ void report_tally(const std::string& name, const Tally& t) {
     for (int s = 0; s < 2; ++s) {
         BOOST_TEST_MESSAGE(name << (s == 0 ? " side +" : " side −") << ": rows " << t.rows[s]
                                 << ", agree " << double(t.agree[s]) / double(t.rows[s])
-                                << ", differ " << double(t.differ[s]) / double(t.rows[s])
-                                << " (SE " << binomial_se(t.rows[s]) << ")");
+                                << ", differ " << double(t.differ[s]) / double(t.rows[s]) << " (SE "
+                                << binomial_se(t.rows[s]) << ")");
     }
     const std::size_t all = t.rows[0] + t.rows[1];
     BOOST_TEST_MESSAGE(name << ": inconclusive " << double(t.inconclusive) / double(all)
@@ -143,9 +145,11 @@ BOOST_AUTO_TEST_CASE(scalar_rows_keep_five_percent_per_side_over_all_looks) {
     for (const Case c : {Case{5, 0.5, 900}, Case{20, 1.0, 900}}) {
         const std::string name =
             "n_B " + std::to_string(c.reference_n) + ", sd " + std::to_string(c.sd_share) + " m";
-        const Tally edge = simulate(1000 + c.reference_n, c.reports, c.reference_n, 1.0, c.sd_share);
+        const Tally edge =
+            simulate(1000 + c.reference_n, c.reports, c.reference_n, 1.0, c.sd_share);
         report_tally(name + ", offset m", edge);
-        const Tally zero = simulate(2000 + c.reference_n, c.reports, c.reference_n, 0.0, c.sd_share);
+        const Tally zero =
+            simulate(2000 + c.reference_n, c.reports, c.reference_n, 0.0, c.sd_share);
         report_tally(name + ", offset 0", zero);
         for (int s = 0; s < 2; ++s) {
             const double bound = kStated + 3.0 * binomial_se(edge.rows[s]);
@@ -199,7 +203,8 @@ BOOST_AUTO_TEST_CASE(l2_rows_keep_five_percent_over_all_looks) {
             const auto b = curves(kReference, none);
             for (std::size_t k = 0; k < n.size(); ++k) {
                 const std::vector<std::vector<double>> prefix(a.begin(), a.begin() + long(n[k]));
-                const auto result = test_l2_curves(prefix, b, kWidth, kMargin, looks[k].nominal_alpha);
+                const auto result =
+                    test_l2_curves(prefix, b, kWidth, kMargin, looks[k].nominal_alpha);
                 if (result.decision != Decision::Inconclusive) {
                     agree += result.decision == Decision::Agree ? 1 : 0;
                     differ += result.decision == Decision::Differ ? 1 : 0;
@@ -209,8 +214,8 @@ BOOST_AUTO_TEST_CASE(l2_rows_keep_five_percent_over_all_looks) {
         }
         const double bound = kStated + 3.0 * binomial_se(kReplicates);
         BOOST_TEST_MESSAGE("L2, offset " << c.name << ": agree " << double(agree) / kReplicates
-                                         << ", differ " << double(differ) / kReplicates
-                                         << " (SE " << binomial_se(kReplicates) << ")");
+                                         << ", differ " << double(differ) / kReplicates << " (SE "
+                                         << binomial_se(kReplicates) << ")");
         if (c.offset != &none) {
             BOOST_TEST(double(agree) / kReplicates <= bound);   // wrong agree at ‖Δ‖ = m
             BOOST_TEST(double(differ) / kReplicates <= bound);  // on differ's null edge

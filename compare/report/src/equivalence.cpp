@@ -1,7 +1,7 @@
 #include "sgmp/report/equivalence.hpp"
 
-#include "sgmp/report/statistics.hpp"
 #include "equivalence_detail.hpp"
+#include "sgmp/report/statistics.hpp"
 
 #include <algorithm>
 #include <boost/math/distributions/normal.hpp>

@@ -24,9 +24,13 @@ constexpr std::uint64_t kStudentSeed = 20261207;
 /// The level of a look that spends nothing (a boundary beyond every path).
 constexpr double kSmallestLevel = 1e-12;
 
-double normal_cdf(double x) { return 0.5 * std::erfc(-x / std::numbers::sqrt2); }
+double normal_cdf(double x) {
+    return 0.5 * std::erfc(-x / std::numbers::sqrt2);
+}
 
-double normal_upper(double x) { return 0.5 * std::erfc(x / std::numbers::sqrt2); }
+double normal_upper(double x) {
+    return 0.5 * std::erfc(x / std::numbers::sqrt2);
+}
 
 /// Φ⁻¹(p) by bisection on the CDF (p in (0, 1); the few calls need no speed).
 double normal_quantile(double p) {
@@ -196,10 +200,9 @@ std::vector<double> student_levels(const std::vector<std::size_t>& candidate_n,
             levels.push_back(std::max(spent[0], kSmallestLevel));
             continue;
         }
-        levels.push_back(std::isfinite(c) && df > 0.0
-                             ? boost::math::cdf(boost::math::complement(
-                                   boost::math::students_t(df), c))
-                             : kSmallestLevel);
+        levels.push_back(std::isfinite(c) && df > 0.0 ? boost::math::cdf(boost::math::complement(
+                                                            boost::math::students_t(df), c))
+                                                      : kSmallestLevel);
     }
     return levels;
 }

@@ -361,15 +361,14 @@ bool l2_decides_with(const std::vector<std::vector<double>>& candidate,
     if (!setup.valid || candidate_n < 2 || reference_n < 2) {
         return false;
     }
-    const L2Law now = law_of(setup.variance,
-                             {1.0 / setup.na, 1.0 / setup.nb, setup.na - 1.0, setup.nb - 1.0,
-                              setup.shared},
-                             bin_width);
+    const L2Law now = law_of(
+        setup.variance,
+        {1.0 / setup.na, 1.0 / setup.nb, setup.na - 1.0, setup.nb - 1.0, setup.shared}, bin_width);
     const double u = setup.distance * setup.distance - now.t;  // the same estimate of θ²
     const double n_a = static_cast<double>(setup.swap ? reference_n : candidate_n);
     const double n_b = static_cast<double>(setup.swap ? candidate_n : reference_n);
-    const L2Law law = law_of(setup.variance, {1.0 / n_a, 1.0 / n_b, n_a - 1.0, n_b - 1.0, false},
-                             bin_width);
+    const L2Law law =
+        law_of(setup.variance, {1.0 / n_a, 1.0 / n_b, n_a - 1.0, n_b - 1.0, false}, bin_width);
     if (law.variance(margin) <= 0.0) {
         return setup.distance != margin;
     }

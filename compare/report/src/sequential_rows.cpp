@@ -18,7 +18,9 @@ double level_of(const MetricRule& rule, const Look& look) {
     return rule.kind == MetricKind::Scalar ? look.student_alpha : look.nominal_alpha;
 }
 
-bool decided(Verdict v) { return v == Verdict::Agree || v == Verdict::Differ; }
+bool decided(Verdict v) {
+    return v == Verdict::Agree || v == Verdict::Differ;
+}
 
 /// The rules of every row the comparison can hold, by name.
 std::map<std::string, MetricRule> rules_by_name(const Packs& a, const Packs& b) {
@@ -88,7 +90,8 @@ MetricRow judge_looks(const MetricRule& rule, const Packs& a, const Packs& b,
     MetricRow row;
     std::size_t taken = 0;
     for (std::size_t k = 0; k < looks.size() && looks[k].candidate_n <= a.size(); ++k) {
-        const Packs prefix(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(looks[k].candidate_n));
+        const Packs prefix(a.begin(),
+                           a.begin() + static_cast<std::ptrdiff_t>(looks[k].candidate_n));
         MetricRow at = judge(rule, prefix, b, level_of(rule, looks[k]));
         if (at.verdict == Verdict::Info) {  // not judged at this look's packs
             at.verdict = Verdict::Inconclusive;
@@ -122,8 +125,7 @@ void judge_sequentially(Comparison& comparison, const Packs& candidate, const Pa
     const auto rules = rules_by_name(candidate, reference);
     for (auto& row : comparison.rows) {
         const auto rule = rules.find(row.name);
-        if (row.verdict == Verdict::Info || row.tolerance_rule != "margin" ||
-            rule == rules.end()) {
+        if (row.verdict == Verdict::Info || row.tolerance_rule != "margin" || rule == rules.end()) {
             continue;
         }
         row = judge_looks(rule->second, candidate, reference, looks);
@@ -137,8 +139,8 @@ std::vector<SeedsNeeded> seeds_needed(const Report& report, const SequentialDesi
         for (const auto& row : c.rows) {
             // Every undecided row before the last look: its estimate moves as seeds come,
             // so even a row the projection calls reference-limited may still decide.
-            const bool open = row.look > 0 && row.verdict == Verdict::Inconclusive &&
-                              row.look < row.looks;
+            const bool open =
+                row.look > 0 && row.verdict == Verdict::Inconclusive && row.look < row.looks;
             rows += open ? 1 : 0;
         }
         if (rows == 0) {
@@ -201,8 +203,8 @@ std::string sequential_csv_fields(const MetricRow& row) {
     }
     std::ostringstream out;
     out.precision(6);
-    out << row.look << ',' << row.looks << ',' << row.alpha_spent << ',' << row.nominal_alpha
-        << ',' << row.limited_by << ','
+    out << row.look << ',' << row.looks << ',' << row.alpha_spent << ',' << row.nominal_alpha << ','
+        << row.limited_by << ','
         << (row.pours_to_decide ? std::to_string(*row.pours_to_decide) : "");
     return out.str();
 }

@@ -116,8 +116,7 @@ EquivalenceResult test_l2_curves(const std::vector<std::vector<double>>& candida
 /// estimate of ‖Δ‖² (U) unchanged: what a group-sequential row asks of more seeds or pours.
 bool l2_decides_with(const std::vector<std::vector<double>>& candidate,
                      const std::vector<std::vector<double>>& reference, double bin_width,
-                     double margin, double alpha, std::size_t candidate_n,
-                     std::size_t reference_n);
+                     double margin, double alpha, std::size_t candidate_n, std::size_t reference_n);
 
 /// The total-variation test (header): observed distance `distance`, the per-bin variances of
 /// the noise `variance`; `seeds_now` the smaller group's pack count (seeds_to_decide scales

@@ -87,17 +87,17 @@ struct Look {
 /// The boundaries of the looks at `candidate_n` (increasing) against `reference_n` pours;
 /// the last entry is the design's last look (fraction 1). Throws std::invalid_argument on
 /// an empty or non-increasing list or a zero count.
-std::vector<Look> boundaries(const std::vector<std::size_t>& candidate_n,
-                             std::size_t reference_n, double alpha);
+std::vector<Look> boundaries(const std::vector<std::size_t>& candidate_n, std::size_t reference_n,
+                             double alpha);
 
 /// boundaries() remembered by their arguments (crossval asks for the same few many times);
 /// safe to share between threads.
 class BoundaryCache {
-public:
+  public:
     std::vector<Look> get(const std::vector<std::size_t>& candidate_n, std::size_t reference_n,
                           double alpha);
 
-private:
+  private:
     std::mutex mutex_;
     std::map<std::tuple<std::vector<std::size_t>, std::size_t, double>, std::vector<Look>> cache_;
 };

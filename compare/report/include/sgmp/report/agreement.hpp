@@ -223,7 +223,8 @@ struct Report {
 Report build_report(std::vector<Group> groups, ReportPlan plan);
 
 /// The judgement of one metric at one count, candidate packs against reference packs, by
-/// the rules above.
+/// the rules above, each one-sided test at level `alpha` (a group-sequential look passes
+/// its own, sequential_rows.hpp).
 MetricRow judge(const MetricRule& rule, const std::vector<const PackSummary*>& candidate,
                 const std::vector<const PackSummary*>& reference, double alpha = kTestAlpha);
 

@@ -3,10 +3,12 @@
 // checks of a run's metrics against a stored baseline.
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 
 #include "command_support.hpp"
 #include "sgmp/metrics/metrics_output.hpp"
+#include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/version.hpp"
 #include "sgmp/report/baseline.hpp"
@@ -15,6 +17,7 @@
 #include "sgmp/report/manifest.hpp"
 #include "sgmp/report/report_files.hpp"
 #include "sgmp/report/report_pictures.hpp"
+#include "sgmp/report/sequential_rows.hpp"
 #include "sgmp/report/thesis_table.hpp"
 
 namespace sgmp::compare::cli {
@@ -47,6 +50,8 @@ struct CrossvalOptions {
     std::string tuning;
     bool pictures = false;
     int picture_size = 600;
+    SequentialDesign sequential{5, 5, 0, 0.05};  // --max-seeds (0: not given), --first-look, …
+    std::string seeds_needed;                    // --seeds-needed FILE
     CommonOptions common;
 };
 
@@ -136,6 +141,11 @@ int run_crossval(CrossvalOptions& o, const std::string& command) {
         groups.push_back(measure_group(plan.labels[g], plan.paths[g], o.common));
     }
     check_counts(manifest, groups, o.manifest);
+    plan.plan.sequential = o.sequential;
+    if (o.sequential.max_seeds == 0) {  // no --max-seeds: one look at the seeds there are
+        plan.plan.sequential->first_look = std::numeric_limits<std::size_t>::max();
+        plan.plan.sequential->max_seeds = 1;
+    }
     Report report;
     try {
         report = build_report(std::move(groups), plan.plan);
@@ -187,6 +197,12 @@ int run_crossval(CrossvalOptions& o, const std::string& command) {
         {{"headline.csv", render_headline_csv(cv, command)},
          {"crossval.json", crossval.dump(2) + "\n"},
          {"baseline.json", baseline_json(baseline_entries(report), provenance).dump(2) + "\n"}});
+    if (!o.seeds_needed.empty()) {  // before the report: its directory is replaced whole
+        const std::string text =
+            render_seeds_needed_csv(seeds_needed(report, *report.plan.sequential));
+        sgmp::write_file_atomically(o.seeds_needed, o.common.force,
+                                    [&](std::ostream& out) { out << text; });
+    }
     const auto used = write_report(o.common.out, o.common.force, report, context);
     std::cout << render_headline_text(cv);
     if (!used.plots_made) {
@@ -229,6 +245,26 @@ int run_regress(const RegressOptions& o) {
     return kRegressionFailed;
 }
 
+/// The group-sequential options (compare/README.md, "Seeds added until decided").
+void add_sequential(CLI::App* cmd, CrossvalOptions& o) {
+    cmd->add_option("--max-seeds", o.sequential.max_seeds,
+                    "the last look: candidate seeds per mode and count at most (2 to 10000); "
+                    "each candidate row is judged look by look as seeds are added, with the "
+                    "error rates held at 5 % per side over all looks (default: one look at the "
+                    "seeds there are, the fixed-sample test; scripts/run passes 50)")
+        ->check(CLI::Range(2, 10000));
+    cmd->add_option("--first-look", o.sequential.first_look,
+                    "the seeds the first look sees (scripts/run: its --seeds)")
+        ->check(CLI::Range(1, 10000))
+        ->capture_default_str();
+    cmd->add_option("--seed-block", o.sequential.block, "seeds added between looks (1 to 1000)")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
+    cmd->add_option("--seeds-needed", o.seeds_needed,
+                    "write CSV 'mode,count,seeds_now,seeds_next,rows': each mode and count with "
+                    "rows undecided before the last look, and the seeds of its next look");
+}
+
 }  // namespace
 
 CommandRunner register_crossval(CLI::App& app) {
@@ -262,6 +298,7 @@ CommandRunner register_crossval(CLI::App& app) {
                     "side of each picture in pixels (64 to 2048)")
         ->check(CLI::Range(64, 2048))
         ->capture_default_str();
+    add_sequential(cmd, *options);
     add_common(cmd, options->common);
     add_precomputed(cmd, options->common);
     return [options, cmd](const std::string& command) {

@@ -21,10 +21,20 @@ grep -q '^candidate,loose-random,150,1,[0-9.]*,"'"$scratch"'/run dir, ""quoted""
 engine=$(sha256sum "$build/sgmp/sgmp" | cut -c1-12)
 pack=$(ls "$out"/packs/sgmp-*-"$engine"/loose-random/n0150-seed1.xyz) || fail "no pack under the engine identity $engine"
 
+# Seeds added until decided: the looks ran to the end, and every candidate row carries its look.
+[[ $(wc -l <"$out/.looks/seeds-needed.csv") == 1 ]] || fail "groups left open after the loop"
+head -1 "$out/report/report.csv" | grep -q ',look,looks,alpha_spent,nominal_alpha,limited_by,pours_to_decide$' \
+    || fail "report.csv has no look columns"
+grep -q '^run: look 1: ' "$scratch/log" || fail "no progress line for look 1"
+
 head -5 "$pack" >"$scratch/short" && cat "$scratch/short" >"$pack"  # header intact, lines lost
 run
 [[ "$(wc -l <"$pack")" == 152 ]] || fail "a truncated pack was reused ($(wc -l <"$pack") lines)"
 
+status=0
+scripts/run --max-seeds 1 --build-dir "$build" 2>"$scratch/err" || status=$?
+[[ $status == 2 && "$(cat "$scratch/err")" == "run: --max-seeds '1' must be an integer from 2 to 10000" ]] \
+    || fail "--max-seeds 1: status $status, '$(cat "$scratch/err")'"
 status=0
 scripts/run --counts 2>"$scratch/err" || status=$?
 [[ $status == 2 && "$(cat "$scratch/err")" == "run: --counts needs a value (see --help)" ]] \

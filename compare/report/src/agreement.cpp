@@ -14,6 +14,7 @@
 #include "sgmp/pack/metadata.hpp"
 #include "sgmp/report/equivalence.hpp"
 #include "sgmp/report/group_curves.hpp"
+#include "sgmp/report/sequential_rows.hpp"
 #include "sgmp/report/statistics.hpp"
 
 namespace sgmp::report {
@@ -191,7 +192,7 @@ void take(MetricRow& row, const EquivalenceResult& r) {
 }
 
 MetricRow judge_scalar(const MetricRule& rule, const std::vector<const PackSummary*>& a,
-                       const std::vector<const PackSummary*>& b) {
+                       const std::vector<const PackSummary*>& b, double alpha) {
     MetricRow row;
     const ScalarSample sa = sample_of(scalar_column(rule, a));
     const ScalarSample sb = sample_of(scalar_column(rule, b));
@@ -201,7 +202,7 @@ MetricRow judge_scalar(const MetricRule& rule, const std::vector<const PackSumma
     row.reference_sd = sb.sd;
     row.difference = sa.mean - sb.mean;
     row.seed_spread = b.size() >= 2 ? 2.0 * sb.sd : 0.0;
-    const EquivalenceResult r = test_scalar(sa, sb, rule.margin);
+    const EquivalenceResult r = test_scalar(sa, sb, rule.margin, alpha);
     take(row, r);
     return row;
 }
@@ -230,7 +231,7 @@ std::vector<std::vector<double>> judged_bins(const MetricRule& rule,
 }
 
 MetricRow judge_curve(const MetricRule& rule, const std::vector<const PackSummary*>& a,
-                      const std::vector<const PackSummary*>& b) {
+                      const std::vector<const PackSummary*>& b, double alpha) {
     MetricRow row;
     auto both = a;
     both.insert(both.end(), b.begin(), b.end());
@@ -239,17 +240,37 @@ MetricRow judge_curve(const MetricRule& rule, const std::vector<const PackSummar
         distance_between(rule, *b.front(), mean_values(rule, a), mean_values(rule, b), ranges);
     row.seed_spread = b.size() >= 2 ? mean_replicate_distance(rule, b, ranges) : 0.0;
     if (b.size() < 2) {  // no reference scatter: the noise is unknown
-        take(row, test_scalar({row.difference, 0.0, 1}, {0.0, 0.0, 1}, rule.margin));
+        take(row, test_scalar({row.difference, 0.0, 1}, {0.0, 0.0, 1}, rule.margin, alpha));
         row.ci_low = 0.0;
         return row;
     }
     const auto bins_a = judged_bins(rule, a, ranges);
     const auto bins_b = judged_bins(rule, b, ranges);
     take(row, rule.name == "g_r"
-                  ? test_l2_curves(bins_a, bins_b, b.front()->gr_bin_width, rule.margin)
+                  ? test_l2_curves(bins_a, bins_b, b.front()->gr_bin_width, rule.margin, alpha)
                   : test_total_variation(row.difference, noise_variance(bins_a, bins_b),
-                                         rule.margin, std::min(a.size(), b.size())));
+                                         rule.margin, std::min(a.size(), b.size()), alpha));
     return row;
+}
+
+/// The total-variation test of P(Z) with n_a and n_b packs: the per-bin noise variances
+/// scaled as one shared σ² would scale them, (1/n_a + 1/n_b)/(1/|a| + 1/|b|).
+bool tv_decides_with(const MetricRule& rule, const std::vector<const PackSummary*>& a,
+                     const std::vector<const PackSummary*>& b, double alpha, std::size_t n_a,
+                     std::size_t n_b) {
+    auto both = a;
+    both.insert(both.end(), b.begin(), b.end());
+    const auto ranges = ranges_of(both);
+    const double distance =
+        distance_between(rule, *b.front(), mean_values(rule, a), mean_values(rule, b), ranges);
+    const auto inverse = [](std::size_t n) { return 1.0 / static_cast<double>(n); };
+    const double scale = (inverse(n_a) + inverse(n_b)) / (inverse(a.size()) + inverse(b.size()));
+    auto variance = noise_variance(judged_bins(rule, a, ranges), judged_bins(rule, b, ranges));
+    for (double& v : variance) {
+        v *= scale;
+    }
+    return test_total_variation(distance, variance, rule.margin, std::min(n_a, n_b), alpha)
+               .decision != Decision::Inconclusive;
 }
 
 Comparison compare_at(const Group& candidate, const Group& reference, std::size_t count) {
@@ -316,107 +337,6 @@ std::vector<Comparison> class_comparisons(const Report& report) {
 
 }  // namespace
 
-std::string_view to_string(Verdict verdict) {
-    switch (verdict) {
-        case Verdict::Agree:
-            return "agree";
-        case Verdict::Differ:
-            return "differ";
-        case Verdict::Inconclusive:
-            return "inconclusive";
-        case Verdict::Info:
-            return "info";
-    }
-    return "info";
-}
-
-const std::vector<MetricRule>& metric_rules() {
-    using K = MetricKind;
-    // Margins: compare/README.md "Margins" says why each is what it is. The last field is
-    // the gap tolerance δ/d of a contact metric.
-    static const std::vector<MetricRule> rules{
-        {"phi", "φ (control volume)", "ratio", K::Scalar, 0.010, true, "φ", {}},
-        {"z_mean_tol_1e-6", "Z(δ = 10⁻⁶)", "contacts/particle", K::Scalar, 0.30, true, "Z 10⁻⁶",
-         1e-6},
-        {"z_mean_tol_1e-3", "Z(δ = 10⁻³)", "contacts/particle", K::Scalar, 0.30, true, "Z 10⁻³",
-         1e-3},
-        {"z_mean_tol_1e-2", "Z(δ = 10⁻²)", "contacts/particle", K::Scalar, 0.30, true, "Z 10⁻²",
-         1e-2},
-        {"z_mean_tol_2e-2", "Z(δ = 2·10⁻²)", "contacts/particle", K::Scalar, 0.30, true, "Z 2·10⁻²",
-         2e-2},
-        {"z_mean_tol_5e-2", "Z(δ = 5·10⁻²)", "contacts/particle", K::Scalar, 0.30, true, "Z 5·10⁻²",
-         5e-2},
-        {"split_ratio", "split ratio g(√3·d)/g(2·d)", "ratio", K::Scalar, 0.03, true, "split", {}},
-        {"voronoi_phi_mean",
-         "Voronoi local φ, mean",
-         "ratio",
-         K::Scalar,
-         0.010,
-         true,
-         "Voronoi φ",
-         {}},
-        {"voronoi_phi_sd",
-         "Voronoi local φ, sd",
-         "ratio",
-         K::Scalar,
-         0.002,
-         true,
-         "Voronoi sd",
-         {}},
-        {"q6_global", "Q6 (global)", "dimensionless", K::Scalar, 0.03, true, "Q6", {}},
-        {"q6_local_mean",
-         "Q6 (local mean)",
-         "dimensionless",
-         K::Scalar,
-         0.0025,
-         true,
-         "Q6 local",
-         {}},
-        {"g_r", "g(r), r ≥ 1.1·d", "ratio", K::Curve, kGrMargin, true, "g(r)", {}},
-        {"p_z_tol_1e-3", "P(Z) at δ = 10⁻³", "ratio", K::Curve, 0.08, true, "P(Z) 10⁻³", 1e-3},
-        {"p_z_tol_1e-2", "P(Z) at δ = 10⁻²", "ratio", K::Curve, 0.08, true, "P(Z) 10⁻²", 1e-2},
-        // Information: soft DEM contacts overlap by construction, hard SGMP spheres never.
-        {"z_mean_tol_0", "Z(δ = 0)", "contacts/particle", K::Scalar, 0.30, false, "Z 0", {}},
-        {"overlaps", "overlapping pairs", "pairs", K::Scalar, 1.0, false, "overlaps", {}},
-        {"overlap_max_over_d", "deepest overlap", "d", K::Scalar, 1e-3, false, "deepest", {}},
-        {"overlap_mean_over_d", "mean overlap", "d", K::Scalar, 1e-3, false, "mean overlap", {}},
-        {"wall_overlaps", "wall overlaps", "particles", K::Scalar, 1.0, false, "wall overlaps", {}},
-    };
-    return rules;
-}
-
-const MetricRule& metric_rule(const std::string& name) {
-    for (const auto& rule : metric_rules()) {
-        if (rule.name == name) {
-            return rule;
-        }
-    }
-    throw std::logic_error("no metric rule named " + name);
-}
-
-double PackSummary::scalar(const std::string& name) const {
-    const auto& rules = metric_rules();
-    std::size_t k = 0;
-    for (const auto& rule : rules) {
-        if (rule.kind != MetricKind::Scalar) {
-            continue;
-        }
-        if (rule.name == name) {
-            return scalars.at(k);
-        }
-        ++k;
-    }
-    for (const auto& [key, value] : species_scalars) {
-        if (key == name) {
-            return value;
-        }
-    }
-    if (is_species_metric(name)) {  // a blend's value this pack lacks: not measured
-        return std::numeric_limits<double>::quiet_NaN();
-    }
-    throw std::logic_error("no scalar metric named " + name);
-}
-
 const MetricRow& Comparison::row(const std::string& name) const {
     for (const auto& r : rows) {
         if (r.name == name) {
@@ -445,15 +365,15 @@ static bool all_measured(const MetricRule& rule, const std::vector<const PackSum
 }
 
 MetricRow judge(const MetricRule& rule, const std::vector<const PackSummary*>& candidate,
-                const std::vector<const PackSummary*>& reference) {
+                const std::vector<const PackSummary*>& reference, double alpha) {
     MetricRow row;
     if (!all_measured(rule, candidate) || !all_measured(rule, reference)) {
         row.tolerance_rule = "not measured";  // no interval: inconclusive
         row.margin = row.tolerance = rule.margin;
         row.power = false;
     } else {
-        row = rule.kind == MetricKind::Scalar ? judge_scalar(rule, candidate, reference)
-                                              : judge_curve(rule, candidate, reference);
+        row = rule.kind == MetricKind::Scalar ? judge_scalar(rule, candidate, reference, alpha)
+                                              : judge_curve(rule, candidate, reference, alpha);
     }
     row.name = rule.name;
     row.label = rule.label;
@@ -474,195 +394,37 @@ MetricRow judge(const MetricRule& rule, const std::vector<const PackSummary*>& c
     return row;
 }
 
-PackSummary summarise(const std::string& source, const Pack& pack, const Measurement& m) {
-    PackSummary s;
-    s.source = source;
-    s.provenance = pack.metadata.entries();
-    s.count = m.count;
-    s.diameter = m.mean_diameter;
-    std::vector<double> species_diameters;
-    if (m.species) {
-        for (const auto& one : m.species->species) {
-            species_diameters.push_back(one.diameter_over_d);
+bool decides_with(const MetricRule& rule, const std::vector<const PackSummary*>& candidate,
+                  const std::vector<const PackSummary*>& reference, double alpha,
+                  std::size_t candidate_n, std::size_t reference_n) {
+    if (candidate.empty() || reference.empty() || candidate_n < 1 || reference_n < 1 ||
+        !all_measured(rule, candidate) || !all_measured(rule, reference)) {
+        return false;
+    }
+    if (rule.kind == MetricKind::Scalar) {
+        ScalarSample sa = sample_of(scalar_column(rule, candidate));
+        ScalarSample sb = sample_of(scalar_column(rule, reference));
+        if (sa.n < 2 && sb.n < 2) {
+            return false;
         }
+        sa.sd = sa.n < 2 ? sb.sd : sa.sd;  // a group of one pack scatters as the other
+        sb.sd = sb.n < 2 ? sa.sd : sb.sd;
+        sa.n = candidate_n;
+        sb.n = reference_n;
+        return test_scalar(sa, sb, rule.margin, alpha).decision != Decision::Inconclusive;
     }
-    s.contact_ranges = contact_ranges(species_diameters, 2.0 * m.min_radius / m.mean_diameter,
-                                      2.0 * m.max_radius / m.mean_diameter);
-    const auto& c = m.local.coordination;
-    const auto& names = coordination_tolerance_names();
-    for (const auto& rule : metric_rules()) {
-        if (rule.kind != MetricKind::Scalar) {
-            continue;
-        }
-        double v = 0.0;
-        if (rule.name == "phi") {
-            v = m.phi;
-        } else if (rule.name.rfind("z_mean_tol_", 0) == 0) {
-            const auto it = std::find(names.begin(), names.end(), rule.name.substr(11));
-            v = c.z_mean[static_cast<std::size_t>(it - names.begin())];
-        } else if (rule.name == "split_ratio") {
-            v = m.local.rdf.split_ratio;
-        } else if (rule.name == "voronoi_phi_mean") {
-            v = m.voronoi ? m.voronoi->mean : 0.0;
-        } else if (rule.name == "voronoi_phi_sd") {
-            v = m.voronoi ? m.voronoi->sd : 0.0;
-        } else if (rule.name == "q6_global") {
-            v = m.local.bond_order.q6_global;
-        } else if (rule.name == "q6_local_mean") {
-            v = m.local.bond_order.q6_local_mean;
-        } else if (rule.name == "overlaps") {
-            v = static_cast<double>(m.overlaps.pairs.count);
-        } else if (rule.name == "overlap_max_over_d") {
-            v = m.overlaps.pairs.max_over_d;
-        } else if (rule.name == "overlap_mean_over_d") {
-            v = m.overlaps.pairs.mean_over_d;
-        } else if (rule.name == "wall_overlaps") {
-            v = static_cast<double>(m.overlaps.walls.count);
-        }
-        s.scalars.push_back(v);
+    if (reference.size() < 2) {
+        return false;
     }
-    add_species_scalars(m, s);
-    s.gr_bin_width = m.local.rdf.bin_width_over_d;
-    s.gr_r = m.local.rdf.r_over_d;
-    s.gr = m.local.rdf.g;
-    s.z_mean = c.z_mean;
-    s.p_z = c.p_z;
-    for (std::size_t k = 0; k < m.phi_profile.phi.size(); ++k) {
-        s.phi_y_mid.push_back(0.5 * (m.phi_profile.y_lo[k] + m.phi_profile.y_hi[k]));
+    if (rule.name != "g_r") {
+        return tv_decides_with(rule, candidate, reference, alpha, candidate_n, reference_n);
     }
-    s.phi_y = m.phi_profile.phi;
-    return s;
-}
-
-namespace {
-
-/// Kepler's bound, the densest packing of equal spheres: π/√18.
-constexpr double kKeplerBound = 0.74048;
-
-bool of_several_sizes(const PackSummary& pack) {
-    for (const auto& [key, value] : pack.provenance) {
-        if (key == "size_modes") {
-            return value.find(',') != std::string::npos;
-        }
-    }
-    return false;
-}
-
-[[noreturn]] void impossible(const PackSummary& pack, const std::string& what,
-                             const std::string& rule) {
-    throw std::invalid_argument(pack.source + ": " + what + " is physically impossible (" + rule +
-                                ")");
-}
-
-/// The largest mean coordination Z(δ) a pack can have, δ the gap tolerance in units of
-/// the mean diameter d. One size: 12, the kissing number, for δ ≤ 2·10⁻² (a 13th neighbour
-/// needs a shell out to 1.0454·d, Tammes' problem for 13 points: more than 1 + δ even with
-/// overlaps of 2 % of d); beyond, the cap-area bound 2/(1 − cos θ), sin θ = 1/(2(1 + δ))
-/// (16 at δ = 5·10⁻²). Several sizes: twice that, 24 at contact, a generous bound: Z counts
-/// each contact twice, and at its smaller sphere a contact is one of at most 12 with
-/// spheres at least as large (shrunk to its size, they still do not overlap).
-double coordination_bound(double delta, bool several_sizes) {
-    constexpr double kKissingNumber = 12.0;
-    constexpr double kTammesShell = 0.02;  // the largest δ of the reported ones below 0.0454
-    const double sin_theta = 1.0 / (2.0 * (1.0 + delta));
-    const double one_size = delta <= kTammesShell
-                                ? kKissingNumber
-                                : std::floor(2.0 / (1.0 - std::sqrt(1.0 - sin_theta * sin_theta)));
-    return several_sizes ? 2.0 * one_size : one_size;
-}
-
-/// Refuses a mean coordination `value` at tolerance index `t` outside [0, the bound].
-void check_coordination(const PackSummary& pack, std::size_t t, double value) {
-    const std::string what =
-        "z_mean_tol_" + coordination_tolerance_names().at(t) + " = " + std::to_string(value);
-    if (!std::isfinite(value) || value < 0.0) {
-        impossible(pack, what, "must be finite and >= 0");
-    }
-    const bool several = of_several_sizes(pack);
-    const double bound = coordination_bound(coordination_tolerances().at(t), several);
-    if (value > bound) {
-        impossible(pack, what,
-                   std::string(several ? "spheres of several sizes" : "a sphere of one size") +
-                       " averages at most " + format_number(bound) + " contacts at this tolerance");
-    }
-}
-
-}  // namespace
-
-std::string uncertified_reason(const PackSummary& pack) {
-    std::string relax;
-    std::string certified;
-    std::string residual;
-    for (const auto& [key, value] : pack.provenance) {
-        relax = key == "relax" ? value : relax;
-        certified = key == "certified" ? value : certified;
-        residual = key == "certificate_residual_max" ? value : residual;
-    }
-    if (relax.empty() || relax == "none" || certified == "true") {
-        return "";
-    }
-    if (certified.empty()) {
-        return "relaxed without an equilibrium certificate";
-    }
-    if (residual.empty()) {
-        return "no equilibrium certificate for --relax " + relax;
-    }
-    char text[64];
-    std::snprintf(text, sizeof text, "largest residual %.3g m*g",
-                  std::strtod(residual.c_str(), nullptr));
-    return text;
-}
-
-void check_physical(const PackSummary& pack) {
-    const auto& names = coordination_tolerance_names();
-    for (const auto& rule : metric_rules()) {
-        if (rule.kind != MetricKind::Scalar) {
-            continue;
-        }
-        const double v = pack.scalar(rule.name);
-        if (std::isnan(v)) {
-            continue;  // not measured (a batch summary row): not judged
-        }
-        const std::string what = rule.name + " = " + std::to_string(v);
-        if (!std::isfinite(v) || v < 0.0) {
-            impossible(pack, what, "must be finite and >= 0");
-        }
-        if (rule.name.rfind("z_mean_tol_", 0) == 0) {
-            const auto z = std::find(names.begin(), names.end(), rule.name.substr(11));
-            if (z != names.end()) {
-                check_coordination(pack, static_cast<std::size_t>(z - names.begin()), v);
-            }
-        }
-        if (rule.name == "phi" || rule.name == "voronoi_phi_mean") {
-            if (of_several_sizes(pack) ? v >= 1.0 : v > kKeplerBound) {
-                impossible(
-                    pack, what,
-                    of_several_sizes(pack) ? "must be < 1" : "one size packs to at most 0.74048");
-            }
-        }
-    }
-    for (std::size_t t = 0; t < pack.z_mean.size() && t < names.size(); ++t) {
-        check_coordination(pack, t, pack.z_mean[t]);
-    }
-    for (const double g : pack.gr) {
-        if (!(g >= 0.0) || !std::isfinite(g)) {
-            impossible(pack, "g(r) = " + std::to_string(g), "must be finite and >= 0");
-        }
-    }
-    for (std::size_t t = 0; t < pack.p_z.size(); ++t) {
-        double sum = 0.0;
-        for (const double q : pack.p_z[t]) {
-            if (!(q >= 0.0 && q <= 1.0)) {
-                impossible(pack, "P(Z) at " + names.at(t) + " = " + std::to_string(q),
-                           "must lie in [0, 1]");
-            }
-            sum += q;
-        }
-        if (!pack.p_z[t].empty() && std::abs(sum - 1.0) > 1e-6) {
-            impossible(pack, "P(Z) at " + names.at(t) + " sums to " + std::to_string(sum),
-                       "must sum to 1");
-        }
-    }
+    auto both = candidate;
+    both.insert(both.end(), reference.begin(), reference.end());
+    const auto ranges = ranges_of(both);
+    return l2_decides_with(judged_bins(rule, candidate, ranges),
+                           judged_bins(rule, reference, ranges), reference.front()->gr_bin_width,
+                           rule.margin, alpha, candidate_n, reference_n);
 }
 
 Report build_report(std::vector<Group> groups, ReportPlan plan) {
@@ -685,6 +447,7 @@ Report build_report(std::vector<Group> groups, ReportPlan plan) {
             check_physical(p);
         }
     }
+    static BoundaryCache cache;  // boundaries depend only on the design: shared by reports
     for (const auto& [ci, ri] : report.plan.comparisons) {
         const Group& cand = report.groups[ci];
         const Group& ref = report.groups[ri];
@@ -693,6 +456,10 @@ Report build_report(std::vector<Group> groups, ReportPlan plan) {
         for (const std::size_t n : cand_counts) {
             if (ref_counts.count(n) != 0) {
                 report.comparisons.push_back(compare_at(cand, ref, n));
+                if (report.plan.sequential) {  // SGMP seeds added in blocks (sequential_rows.hpp)
+                    judge_sequentially(report.comparisons.back(), packs_of(cand, n),
+                                       packs_of(ref, n), *report.plan.sequential, cache);
+                }
             } else {
                 report.notes.push_back(cand.label + " has packs of " + std::to_string(n) +
                                        " particles, " + ref.label + " has none: not compared");

@@ -37,6 +37,8 @@
 
 #include "sgmp/metrics/measure.hpp"
 #include "sgmp/report/contact_windows.hpp"
+#include "sgmp/report/equivalence.hpp"
+#include "sgmp/report/group_sequential.hpp"
 
 namespace sgmp::report {
 
@@ -147,6 +149,20 @@ struct MetricRow {
     double p_differ = 1.0;  // p-value of H0 |Δ| ≤ m (Holm in the stand-in rule)
     std::optional<std::size_t> seeds_to_decide;  // for an inconclusive row
     Verdict verdict = Verdict::Inconclusive;
+    /// Group-sequential rows (sequential_rows.hpp): the look that gave the verdict (1-based;
+    /// 0 for a fixed-sample row), the looks planned, the candidate seeds it saw, the α its
+    /// tests had spent by then (cumulative, each side) and the nominal level of that look.
+    std::size_t look = 0;
+    std::size_t looks = 0;
+    std::size_t candidate_n = 0;
+    double alpha_spent = kTestAlpha;
+    double nominal_alpha = kTestAlpha;
+    /// An undecided sequential row: the side whose seeds would decide it ("candidate":
+    /// seeds_to_decide SGMP seeds in all, the reference as it is; "reference":
+    /// pours_to_decide reference pours, the candidate at its last look), or "" when neither
+    /// side alone would up to 10⁴.
+    std::string limited_by;
+    std::optional<std::size_t> pours_to_decide;
 };
 
 /// Mean curves of one group at one count, for plots.
@@ -185,6 +201,10 @@ struct ReportPlan {
     /// of a set is compared class against class (Report::class_comparisons), to report
     /// which classes form one family. Never used to change a verdict.
     std::vector<std::vector<std::size_t>> class_sets;
+    /// Candidate seeds added in blocks (group_sequential.hpp): the planned comparisons are
+    /// judged look by look on the first n packs of the candidate group in manifest order;
+    /// none: one look at every pack (class comparisons are always so).
+    std::optional<SequentialDesign> sequential;
 };
 
 struct Report {
@@ -203,9 +223,18 @@ struct Report {
 Report build_report(std::vector<Group> groups, ReportPlan plan);
 
 /// The judgement of one metric at one count, candidate packs against reference packs, by
-/// the rules above.
+/// the rules above, each one-sided test at level `alpha` (a group-sequential look passes
+/// its own, sequential_rows.hpp).
 MetricRow judge(const MetricRule& rule, const std::vector<const PackSummary*>& candidate,
-                const std::vector<const PackSummary*>& reference);
+                const std::vector<const PackSummary*>& reference, double alpha = kTestAlpha);
+
+/// Whether the test of `rule` at one-sided level `alpha` would decide (agree or differ) with
+/// `candidate_n` candidate and `reference_n` reference packs, each group scattering as it
+/// does now and the estimate unchanged (P(Z): the noise scaled as one shared σ² would be).
+/// sequential_rows.hpp asks it of more seeds or more pours.
+bool decides_with(const MetricRule& rule, const std::vector<const PackSummary*>& candidate,
+                  const std::vector<const PackSummary*>& reference, double alpha,
+                  std::size_t candidate_n, std::size_t reference_n);
 
 /// Why a pack may not be judged, or "" when it may: a relaxed pack (provenance `relax`
 /// frictionless or frictional) claims a mechanical equilibrium and is judged only with

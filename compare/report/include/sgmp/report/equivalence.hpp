@@ -94,8 +94,10 @@ ScalarSample sample_of(const std::vector<double>& values);
 
 /// The scalar test of the candidate against the reference (header). Needs n_B ≥ 2 or
 /// n_A ≥ 2 with n_B ≥ 1; otherwise the result is inconclusive with an infinite interval.
+/// `alpha` is the one-sided level (the interval 1 − 2α); a group-sequential look passes its
+/// nominal level (group_sequential.hpp).
 EquivalenceResult test_scalar(const ScalarSample& candidate, const ScalarSample& reference,
-                              double margin);
+                              double margin, double alpha = kTestAlpha);
 
 /// Per bin, the variance of the mean difference: s_A,k²/n_A + s_B,k²/n_B (a candidate of
 /// one pack takes the reference's s_k). Curves of unequal length are padded with zeros.
@@ -107,12 +109,20 @@ std::vector<double> noise_variance(const std::vector<std::vector<double>>& candi
 /// of ≥ 1; otherwise the result is inconclusive with an infinite interval.
 EquivalenceResult test_l2_curves(const std::vector<std::vector<double>>& candidate,
                                  const std::vector<std::vector<double>>& reference,
-                                 double bin_width, double margin);
+                                 double bin_width, double margin, double alpha = kTestAlpha);
+
+/// Whether the L2 test at one-sided level `alpha` would decide (agree or differ) with
+/// `candidate_n` and `reference_n` curves, each group scattering as it does now and the
+/// estimate of ‖Δ‖² (U) unchanged: what a group-sequential row asks of more seeds or pours.
+bool l2_decides_with(const std::vector<std::vector<double>>& candidate,
+                     const std::vector<std::vector<double>>& reference, double bin_width,
+                     double margin, double alpha, std::size_t candidate_n, std::size_t reference_n);
 
 /// The total-variation test (header): observed distance `distance`, the per-bin variances of
 /// the noise `variance`; `seeds_now` the smaller group's pack count (seeds_to_decide scales
 /// the variances by it).
 EquivalenceResult test_total_variation(double distance, const std::vector<double>& variance,
-                                       double margin, std::size_t seeds_now);
+                                       double margin, std::size_t seeds_now,
+                                       double alpha = kTestAlpha);
 
 }  // namespace sgmp::report

@@ -85,7 +85,8 @@ struct RelaxStats {
     long long finish_lifted = 0;      ///< spheres the finish had to lift straight up
     double finish_move_max = 0.0;     ///< largest displacement by the hard-sphere finish, over d
     double finish_move_mean = 0.0;    ///< mean displacement by the hard-sphere finish, over d
-    int settle_iterations = 0;        ///< LP iterations of the hard-sphere settling (frictionless)
+    int settle_iterations =
+        0;  ///< LP iterations (frictional) or contact-dynamics steps (frictionless)
     bool settle_converged = false;    ///< the settling ended by its trust region or stillness
     bool settle_ended_still = false;  ///< the settling's last step moved nothing
     bool settle_solver_failed = false;  ///< the settling's LP solver failed; it stopped there
@@ -94,17 +95,23 @@ struct RelaxStats {
     /// The settling's contact forces, offered to the certificate as its witness (not
     /// recorded in packs).
     std::vector<ContactForce> settle_forces;
+    bool settle_stalled = false;   ///< the contact dynamics stalled at its smallest step
+    long long settle_sweeps = 0;   ///< NSGS sweeps of the contact dynamics (frictionless)
+    double settle_residual = 0.0;  ///< largest force residual of its last step, m·g
+    double soft_seconds = 0.0;     ///< wall clock of the soft stages and the finish (not recorded)
+    double settle_seconds = 0.0;   ///< wall clock of the settling (not recorded)
 };
 
 /// Where a running relaxation is, for progress lines (it changes no result).
 struct RelaxProgress {
-    enum class Phase { Soft, Clearing, Settling };
+    /// Settling: the frictional LP settling; Dynamics: the frictionless contact dynamics.
+    enum class Phase { Soft, Clearing, Settling, Dynamics };
     Phase phase = Phase::Soft;
     int stage = 0;              ///< soft stage, from 0
     int stages = 0;             ///< soft stages in all
     long long steps = 0;        ///< minimiser steps so far, over all soft stages
-    int settle_iteration = 0;   ///< LP iterations of the settling so far
-    double settle_trust = 0.0;  ///< its trust region, over d
+    int settle_iteration = 0;   ///< LP iterations (Dynamics: time steps) of the settling so far
+    double settle_trust = 0.0;  ///< its trust region, over d (Dynamics: largest residual, m·g)
 };
 using RelaxProgressCallback = std::function<void(const RelaxProgress&)>;
 

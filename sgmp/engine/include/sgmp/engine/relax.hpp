@@ -78,17 +78,17 @@ namespace sgmp::engine {
 
 /// What the relaxation did (also recorded in the pack's metadata).
 struct RelaxStats {
-    long long steps = 0;              ///< minimiser steps over all stages
-    int stages_converged = 0;         ///< stages that reached the force tolerance
-    double force_max = 0.0;           ///< largest net force on a sphere at the end, in m·g
-    double overlap_max = 0.0;         ///< deepest soft overlap at the end (pairs, walls), over d
-    long long finish_lifted = 0;      ///< spheres the finish had to lift straight up
-    double finish_move_max = 0.0;     ///< largest displacement by the hard-sphere finish, over d
-    double finish_move_mean = 0.0;    ///< mean displacement by the hard-sphere finish, over d
-    int settle_iterations =
-        0;  ///< LP iterations (frictional) or contact-dynamics steps (frictionless)
-    bool settle_converged = false;    ///< the settling ended by its trust region or stillness
-    bool settle_ended_still = false;  ///< the settling's last step moved nothing
+    long long steps = 0;            ///< minimiser steps over all stages
+    int stages_converged = 0;       ///< stages that reached the force tolerance
+    double force_max = 0.0;         ///< largest net force on a sphere at the end, in m·g
+    double overlap_max = 0.0;       ///< deepest soft overlap at the end (pairs, walls), over d
+    long long finish_lifted = 0;    ///< spheres the finish had to lift straight up
+    double finish_move_max = 0.0;   ///< largest displacement by the hard-sphere finish, over d
+    double finish_move_mean = 0.0;  ///< mean displacement by the hard-sphere finish, over d
+    /// LP iterations (frictional) or contact-dynamics steps (frictionless) of the settling.
+    int settle_iterations = 0;
+    bool settle_converged = false;      ///< the settling ended by its trust region or stillness
+    bool settle_ended_still = false;    ///< the settling's last step moved nothing
     bool settle_solver_failed = false;  ///< the settling's LP solver failed; it stopped there
     double settle_move_max = 0.0;       ///< largest displacement by the settling, over d
     double settle_energy_drop = 0.0;    ///< potential energy the settling released, m·g·d

@@ -27,9 +27,10 @@
 /// time), but it also keeps the motion the unconverged contact problems cause: at N = 1002
 /// (loose-random, seed 1) the settling with it stalled uncertified after 223 s, without it
 /// the pack was certified (sgmp/engine/docs/relax-certified.md). Keeping every velocity,
-/// damped, pumped energy in the same way. From rest, a step is
-the proximal step min Σᵢ mᵢ· | cᵢ' − cᵢ + h²·ŷ|²/2  over the linearised
-/// hard-sphere constraints. The law is Signorini's at the velocity level with the gap as a
+/// damped, pumped energy in the same way. From rest, a step is the proximal step
+///
+///     min Σᵢ mᵢ·|cᵢ' − cᵢ + h²·ŷ|²/2   over the linearised hard-sphere constraints.
+/// The law is Signorini's at the velocity level with the gap as a
 /// position correction. Since |cⱼ − cᵢ + h·(vⱼ − vᵢ)| ≥ n_c·(cⱼ − cᵢ + h·(vⱼ − vᵢ)) =
 /// rᵢ + rⱼ + g_c + h·u_c, a step that keeps the law makes no overlap (walls are planes:
 /// exactly). NSGS solves it one contact at a time, over-relaxed (projected SOR, ω =
@@ -75,46 +76,46 @@ the proximal step min Σᵢ mᵢ· | cᵢ' − cᵢ + h²·ŷ|²/2  over the lin
 #include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/particle.hpp"
 
-    namespace sgmp::engine {
+namespace sgmp::engine {
 
-    struct ContactDynamicsOptions {
-        double time_step = 0.1;            ///< first h, over √(d/g)
-        double smallest_step = 1.0 / 27;   ///< smallest h, over the first
-        double step_shrink = 3.0;          ///< h is divided by this on a stall
-        long stall_window = 100;           ///< steps over which a stall is judged
-        double shrink_below = 3e-3;        ///< h shrinks only once a residual was below this, m·g
-        double relaxation = 1.8;           ///< ω of the projected SOR, in (0, 2)
-        bool inertia = false;              ///< keep velocities while their power is positive
-        double step_cap = 0.02;            ///< largest displacement per step, over d
-        double sweep_tolerance = 1e-7;     ///< NSGS ends when no force changes by more, m·g
-        int max_sweeps = 500;              ///< NSGS sweeps per step at most
-        double residual_tolerance = 1e-4;  ///< ends when max Rᵢ is below this, m·g
-        long max_steps = 200000;           ///< steps at most
-        /// Called every 100 steps with the steps so far and the largest residual (m·g).
-        std::function<void(long, double)> progress;
-    };
+struct ContactDynamicsOptions {
+    double time_step = 0.1;            ///< first h, over √(d/g)
+    double smallest_step = 1.0 / 27;   ///< smallest h, over the first
+    double step_shrink = 3.0;          ///< h is divided by this on a stall
+    long stall_window = 100;           ///< steps over which a stall is judged
+    double shrink_below = 3e-3;        ///< h shrinks only once a residual was below this, m·g
+    double relaxation = 1.8;           ///< ω of the projected SOR, in (0, 2)
+    bool inertia = false;              ///< keep velocities while their power is positive
+    double step_cap = 0.02;            ///< largest displacement per step, over d
+    double sweep_tolerance = 1e-7;     ///< NSGS ends when no force changes by more, m·g
+    int max_sweeps = 500;              ///< NSGS sweeps per step at most
+    double residual_tolerance = 1e-4;  ///< ends when max Rᵢ is below this, m·g
+    long max_steps = 200000;           ///< steps at most
+    /// Called every 100 steps with the steps so far and the largest residual (m·g).
+    std::function<void(long, double)> progress;
+};
 
-    struct ContactDynamicsStats {
-        long steps = 0;
-        long long sweeps = 0;       ///< NSGS sweeps over all steps
-        bool converged = false;     ///< ended by the residual tolerance
-        bool stalled = false;       ///< ended by a stall at the smallest step
-        double residual_max = 0.0;  ///< max Rᵢ of the last step, m·g
-        double time_step = 0.0;     ///< the last step's h, over √(d/g)
-        std::size_t contacts = 0;   ///< contacts carrying a force at the end
-        double move_max = 0.0;      ///< largest displacement of a sphere, over d
-        double energy_drop = 0.0;   ///< Σ wᵢ·(yᵢ before − yᵢ after)/d, m·g·d
-        /// The last step's forces f_c = p_c/h > 0, in m·g, on the caller's sphere indices.
-        std::vector<ContactForce> forces;
-    };
+struct ContactDynamicsStats {
+    long steps = 0;
+    long long sweeps = 0;       ///< NSGS sweeps over all steps
+    bool converged = false;     ///< ended by the residual tolerance
+    bool stalled = false;       ///< ended by a stall at the smallest step
+    double residual_max = 0.0;  ///< max Rᵢ of the last step, m·g
+    double time_step = 0.0;     ///< the last step's h, over √(d/g)
+    std::size_t contacts = 0;   ///< contacts carrying a force at the end
+    double move_max = 0.0;      ///< largest displacement of a sphere, over d
+    double energy_drop = 0.0;   ///< Σ wᵢ·(yᵢ before − yᵢ after)/d, m·g·d
+    /// The last step's forces f_c = p_c/h > 0, in m·g, on the caller's sphere indices.
+    std::vector<ContactForce> forces;
+};
 
-    /// Settles `particles` (scale diameter `diameter`; no overlaps deeper than rounding) in
-    /// `container` as above. Particle order, ids, radii and colours are kept; with periodic
-    /// sides the centres are wrapped into the cell at the end. Throws std::invalid_argument for
-    /// options out of range (non-finite; step, cap, tolerances or counts ≤ 0; ω outside (0, 2);
-    /// smallest_step outside (0, 1]; step_shrink ≤ 1).
-    ContactDynamicsStats settle_by_contact_dynamics(std::vector<Particle> & particles,
-                                                    const Container& container, double diameter,
-                                                    const ContactDynamicsOptions& options = {});
+/// Settles `particles` (scale diameter `diameter`; no overlaps deeper than rounding) in
+/// `container` as above. Particle order, ids, radii and colours are kept; with periodic
+/// sides the centres are wrapped into the cell at the end. Throws std::invalid_argument for
+/// options out of range (non-finite; step, cap, tolerances or counts ≤ 0; ω outside (0, 2);
+/// smallest_step outside (0, 1]; step_shrink ≤ 1).
+ContactDynamicsStats settle_by_contact_dynamics(std::vector<Particle>& particles,
+                                                const Container& container, double diameter,
+                                                const ContactDynamicsOptions& options = {});
 
 }  // namespace sgmp::engine

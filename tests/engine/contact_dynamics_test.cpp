@@ -13,6 +13,7 @@
 #include "sgmp/engine/contact_dynamics.hpp"
 #include "sgmp/engine/equilibrium_certificate.hpp"
 #include "sgmp/engine/make_pack.hpp"
+#include "sgmp/pack/parameter_error.hpp"
 
 using namespace sgmp;
 using namespace sgmp::engine;
@@ -193,6 +194,7 @@ BOOST_AUTO_TEST_CASE(relaxed_packs_are_certified_by_the_settlings_own_forces) {
             request.seed = seed;
             request.sides = sides;
             request.relax.mode = RelaxMode::Frictionless;
+            request.relax.settle = RelaxSettle::Dynamics;
             const Pack pack = make_pack(request);
             BOOST_TEST(*pack.metadata.get("certified") == "true", "seed " << seed);
             BOOST_TEST(*pack.metadata.get("certificate_forces") == "settling-witness",
@@ -200,6 +202,21 @@ BOOST_AUTO_TEST_CASE(relaxed_packs_are_certified_by_the_settlings_own_forces) {
             BOOST_TEST(*pack.metadata.get_number("certificate_overlap_max") <= 1e-9);
         }
     }
+}
+
+BOOST_AUTO_TEST_CASE(the_settling_is_chosen_for_frictionless_relaxations_only) {
+    PackRequest request;
+    request.count = 40;
+    request.relax.mode = RelaxMode::Frictional;
+    request.relax.settle = RelaxSettle::Dynamics;
+    BOOST_CHECK_THROW(validate(request), ParameterError);
+    request.relax.mode = RelaxMode::Frictionless;
+    BOOST_CHECK_NO_THROW(validate(request));
+    // The LP settling, the default, is not recorded, so its packs keep their headers.
+    request.relax.settle = RelaxSettle::Lp;
+    BOOST_TEST(!make_pack(request).metadata.get("relax_settle").has_value());
+    request.relax.settle = RelaxSettle::Dynamics;
+    BOOST_TEST(*make_pack(request).metadata.get("relax_settle") == "dynamics");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

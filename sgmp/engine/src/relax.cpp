@@ -502,7 +502,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// The frictionless settling: contact dynamics (contact_dynamics.hpp) from the finished pack.
+/// The frictionless settling by contact dynamics (contact_dynamics.hpp, `--relax-settle
+/// dynamics`) from the finished pack.
 void settle_frictionless(std::vector<Particle>& particles, const Container& container,
                          const RelaxParams& params, double diameter, RelaxStats& stats,
                          const RelaxProgressCallback& progress) {
@@ -546,14 +547,16 @@ RelaxStats relax_pack(std::vector<Particle>& particles, const Container& contain
     stats.finish_move_mean = finish.move_sum / static_cast<double>(particles.size()) / diameter;
     stats.soft_seconds = seconds_since(start);
     const auto settling = std::chrono::steady_clock::now();
-    if (params.mode == RelaxMode::Frictionless || params.friction == 0.0) {
+    if (params.mode == RelaxMode::Frictionless && params.settle == RelaxSettle::Dynamics) {
         settle_frictionless(particles, container, params, diameter, stats, progress);
         stats.settle_seconds = seconds_since(settling);
         return stats;
     }
     SettleOptions options;
     options.max_iterations = params.settle_limit;
-    options.friction = params.friction;
+    if (params.mode == RelaxMode::Frictional && params.friction > 0.0) {
+        options.friction = params.friction;  // at μ = 0 the frictionless settling is the same
+    }
     if (progress) {
         const int stages = relax_schedule(params).stages;
         options.progress = [&, stages](int iteration, double trust) {

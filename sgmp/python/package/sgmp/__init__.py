@@ -88,7 +88,7 @@ def pack(count, arrangement, seed=None, *, phi_target=None, size_modes=None,
          relax_stiffness=None, relax_stiffness_factor=None, relax_stages=None,
          relax_shell=None, relax_force_tolerance=None, relax_time=None, relax_crossings=None,
          relax_friction=None, relax_settle_limit=None, relax_tangential_ratio=None,
-         progress=None):
+         relax_settle=None, progress=None):
     """Packs `count` spheres from `arrangement` (single-column, small-dense, large-dense,
     loose-random) with the Spin Gap Move Protocol and returns an sgmp.Pack.
 
@@ -112,7 +112,8 @@ def pack(count, arrangement, seed=None, *, phi_target=None, size_modes=None,
     - relax: 'none', 'frictionless' or 'frictional', and relax_stiffness,
       relax_stiffness_factor, relax_stages, relax_shell, relax_force_tolerance, relax_time,
       relax_crossings, relax_friction (mu of 'frictional', default 0.5),
-      relax_settle_limit, relax_tangential_ratio (k_t/k of 'frictional'): the relaxation (a relaxed pack is returned whether or not it is
+      relax_settle_limit, relax_tangential_ratio (k_t/k of 'frictional'), relax_settle
+      ('lp', the default, or 'dynamics': how 'frictionless' settles): the relaxation (a relaxed pack is returned whether or not it is
       certified: read pack.header['certified']); relax_stiffness, relax_stages and
       relax_time default by mode (frictionless 2e4, 1, 200; frictional 2e3, 5, 5), and the
       header records the values run
@@ -135,7 +136,8 @@ def pack(count, arrangement, seed=None, *, phi_target=None, size_modes=None,
         relax_stages=relax_stages, relax_shell=relax_shell,
         relax_force_tolerance=relax_force_tolerance, relax_time=relax_time,
         relax_crossings=relax_crossings, relax_friction=relax_friction,
-        relax_settle_limit=relax_settle_limit, relax_tangential_ratio=relax_tangential_ratio)))
+        relax_settle_limit=relax_settle_limit, relax_tangential_ratio=relax_tangential_ratio,
+        relax_settle=relax_settle)))
 
 
 def arrange(count, arrangement, seed=None, *, phi_target=None, size_modes=None,

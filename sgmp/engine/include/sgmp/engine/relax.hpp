@@ -49,12 +49,13 @@
 /// steps at N = 1000–3000. The frictional stages' bounds usually end them before the
 /// tolerance is met; `relax_force_max` in the header says what is left.
 ///
-/// Settle: the hard-sphere pack is then settled under gravity into an exact equilibrium.
-/// Frictionless (and frictional at μ = 0): by non-smooth contact dynamics
-/// (contact_dynamics.hpp: Moreau–Jean steps, projected SOR over the contacts), whose
-/// contact forces are offered to the certificate as its witness; frictional: by sequential
-/// linear programming (hard_sphere_settle.hpp) at the relaxation's μ. The pack's
-/// certificate checks either (equilibrium_certificate.hpp).
+/// Settle: the hard-sphere pack is then settled under gravity into an exact equilibrium by
+/// sequential linear programming (hard_sphere_settle.hpp), frictionless or frictional at
+/// the relaxation's μ (at μ = 0 the frictionless settling); with `settle` =
+/// RelaxSettle::Dynamics (`--relax-settle dynamics`, frictionless only) by non-smooth
+/// contact dynamics instead (contact_dynamics.hpp: Moreau–Jean steps, projected SOR over
+/// the contacts), whose contact forces are offered to the certificate as its witness. The
+/// pack's certificate checks either (equilibrium_certificate.hpp).
 ///
 /// Finish: the real spheres are (1 + s) times smaller than the soft ones (default s = 0: the
 /// same), so a soft overlap below s·(rᵢ + rⱼ) is a real gap of at most s·(rᵢ + rⱼ); deeper

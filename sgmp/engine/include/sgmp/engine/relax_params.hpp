@@ -24,6 +24,14 @@ enum class RelaxMode {
     Frictional,
 };
 
+/// How a frictionless relaxation ends (the frictional one always by LP).
+enum class RelaxSettle {
+    /// Sequential linear programming (hard_sphere_settle.hpp), the default.
+    Lp,
+    /// Non-smooth contact dynamics (contact_dynamics.hpp), its forces the certificate's witness.
+    Dynamics,
+};
+
 /// Its rules, names and help are rows of the pack parameter table (pack_parameters.hpp).
 struct RelaxParams {
     RelaxMode mode = RelaxMode::None;
@@ -71,6 +79,8 @@ struct RelaxParams {
     /// leaves a pack that is usually not an equilibrium: the certificate then says so
     /// (certified=false).
     int settle_limit = 5000;
+    /// The frictionless settling: LP (the default) or contact dynamics.
+    RelaxSettle settle = RelaxSettle::Lp;
 };
 
 /// The stiffness schedule a relaxation runs: the values given, else its mode's.
@@ -95,5 +105,7 @@ RelaxSchedule relax_schedule(const RelaxParams& params);
 const NameTable<RelaxMode, 3>& relax_modes();
 std::string_view to_string(RelaxMode mode);
 std::optional<RelaxMode> parse_relax_mode(std::string_view text);
+/// The name table of the frictionless settlings: lp, dynamics.
+const NameTable<RelaxSettle, 2>& relax_settles();
 
 }  // namespace sgmp::engine

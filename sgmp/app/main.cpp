@@ -237,13 +237,13 @@ int run_pack(const Options& o) {
     const Pack pack = make_pack(request, dropped, &stats, relaxing);
     const double seconds = progress.seconds();
     progress.finish();
-    if (request.relax.mode != RelaxMode::None) {
-        print_relax_times(pack, stats);
-    }
     if (pack.metadata.get("certified") == std::optional<std::string>("false") &&
         !o.keep_uncertified) {
         throw std::runtime_error(uncertified_reason(pack) +
                                  "; --keep-uncertified writes it with certified=false");
+    }
+    if (request.relax.mode != RelaxMode::None) {  // after the refusal: that stays one line
+        print_relax_times(pack, stats);
     }
     write_pack_file(o.out, pack, o.force);
     const double d = *pack.metadata.get_number("diameter");

@@ -39,8 +39,13 @@
 ///     p_c ← max(0, p_c − ω·(u_c + g_c/h)/W_c),   W_c = 1/mᵢ + 1/mⱼ   (walls: 1/mᵢ),
 ///
 /// updating vᵢ and vⱼ at once, each sweep from the top of the pack down (the spheres are
-/// ordered bottom up), started from the last step's impulses (warm start: kept per pair
-/// across neighbour-list rebuilds), until no sweep changes any force p_c/h by more than
+/// ordered bottom up) — or, by default (`solver`), as the dual problem
+/// min ½·pᵀWp + pᵀ(g/h + u*) over p ≥ 0 (W = J·M⁻¹·Jᵀ, u* the closing velocities without
+/// impulses) by Nesterov's accelerated projected gradient with gradient restart (APGD, as in
+/// Chrono; step 1/L, L a Gershgorin bound on W), whose convergence degrades less with the
+/// pack's depth (below) — started from the last step's impulses (warm start: kept per pair
+/// across neighbour-list rebuilds), until no sweep or iteration changes any force p_c/h by
+/// more than
 /// `sweep_tolerance`, or `max_sweeps` (times the factor h has shrunk by, below). Displacements per
 /// step are capped at `step_cap`·d (a faster sphere's velocity is scaled down; a gap that opens or
 /// closes by it is corrected by the next step's g_c/h), so every pair that may touch within a step
@@ -78,11 +83,20 @@
 
 namespace sgmp::engine {
 
+/// The solver of each step's contact problem.
+enum class ContactSolver {
+    /// Nesterov's accelerated projected gradient on the dual, with gradient restart.
+    Apgd,
+    /// Projected SOR (NSGS over-relaxed), sweeps from the top down.
+    Sor,
+};
+
 struct ContactDynamicsOptions {
-    double time_step = 0.1;            ///< first h, over √(d/g)
-    double smallest_step = 1.0 / 27;   ///< smallest h, over the first
-    double step_shrink = 3.0;          ///< h is divided by this on a stall
-    long stall_window = 100;           ///< steps over which a stall is judged
+    ContactSolver solver = ContactSolver::Apgd;  ///< of each step's contact problem
+    double time_step = 0.1;                      ///< first h, over √(d/g)
+    double smallest_step = 1.0 / 27;             ///< smallest h, over the first
+    double step_shrink = 3.0;                    ///< h is divided by this on a stall
+    long stall_window = 100;                     ///< steps over which a stall is judged
     double shrink_below = 3e-3;        ///< h shrinks only once a residual was below this, m·g
     double relaxation = 1.8;           ///< ω of the projected SOR, in (0, 2)
     bool inertia = false;              ///< keep velocities while their power is positive

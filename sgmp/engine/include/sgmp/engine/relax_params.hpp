@@ -73,9 +73,9 @@ struct RelaxParams {
     /// tangential oscillation of a contact as fast as the normal one for a solid sphere
     /// (I = 2/5·m·r²), the usual choice of linear-spring DEM.
     double tangential_ratio = 2.0 / 7.0;
-    /// Bound on the settling that ends both relaxations: LP iterations of the frictional one
-    /// (hard_sphere_settle.hpp), hundreds of time steps of the frictionless contact dynamics
-    /// (contact_dynamics.hpp; the default, 5000, allows 500,000). A settling that reaches it
+    /// Bound on the settling that ends both relaxations: its LP iterations
+    /// (hard_sphere_settle.hpp), or hundreds of time steps of the contact dynamics of
+    /// `settle` = Dynamics (contact_dynamics.hpp; the default, 5000, allows 500,000). A settling that reaches it
     /// leaves a pack that is usually not an equilibrium: the certificate then says so
     /// (certified=false).
     int settle_limit = 5000;

@@ -75,9 +75,9 @@ struct RelaxParams {
     double tangential_ratio = 2.0 / 7.0;
     /// Bound on the settling that ends both relaxations: its LP iterations
     /// (hard_sphere_settle.hpp), or hundreds of time steps of the contact dynamics of
-    /// `settle` = Dynamics (contact_dynamics.hpp; the default, 5000, allows 500,000). A settling that reaches it
-    /// leaves a pack that is usually not an equilibrium: the certificate then says so
-    /// (certified=false).
+    /// `settle` = Dynamics (contact_dynamics.hpp; the default, 5000, allows 500,000). A
+    /// settling that reaches it leaves a pack that is usually not an equilibrium: the
+    /// certificate then says so (certified=false).
     int settle_limit = 5000;
     /// The frictionless settling: LP (the default) or contact dynamics.
     RelaxSettle settle = RelaxSettle::Lp;

@@ -190,6 +190,21 @@ std::string uncertified_reason(const Pack& pack) {
            "), deepest overlap " + m.get("certificate_overlap_max").value_or("?") + " d";
 }
 
+/// Where a relaxation's time went, on stderr (the times are not recorded in the pack).
+void print_relax_times(const Pack& pack, const PackStats& stats) {
+    const RelaxStats& r = stats.relax;
+    std::fprintf(stderr,
+                 "sgmp: relaxation: soft stage %.3f s (%lld steps), settling %.3f s (%d "
+                 "iterations, %lld sweeps, residual %.3g m*g), certificate %.3f s (forces: %s, "
+                 "residual %s m*g, %s contacts, %s underconstrained)\n",
+                 r.soft_seconds, r.steps, r.settle_seconds, r.settle_iterations, r.settle_sweeps,
+                 r.settle_residual, stats.certificate_seconds,
+                 pack.metadata.get("certificate_forces").value_or("-").c_str(),
+                 pack.metadata.get("certificate_residual_max").value_or("-").c_str(),
+                 pack.metadata.get("certificate_contacts").value_or("-").c_str(),
+                 pack.metadata.get("certificate_underconstrained").value_or("-").c_str());
+}
+
 int run_pack(const Options& o) {
     const PackRequest request = to_request(o);
     check_out(o);
@@ -210,17 +225,25 @@ int run_pack(const Options& o) {
                       std::to_string(r.stages) + ", " + std::to_string(r.steps) + " steps"
             : r.phase == Phase::Clearing
                 ? "relaxing: clearing the overlaps after " + std::to_string(r.steps) + " steps"
+            : r.phase == Phase::Dynamics
+                ? "settling as hard spheres: contact-dynamics step " +
+                      std::to_string(r.settle_iteration) + ", residual " +
+                      format_number(r.settle_trust) + " m·g"
                 : "settling as hard spheres: LP iteration " + std::to_string(r.settle_iteration) +
                       ", trust region " + format_number(r.settle_trust) + " d";
         progress.update("sgmp: " + text + seconds_text(), 1 + static_cast<int>(r.phase));
     };
-    const Pack pack = make_pack(request, dropped, nullptr, relaxing);
+    PackStats stats;
+    const Pack pack = make_pack(request, dropped, &stats, relaxing);
     const double seconds = progress.seconds();
     progress.finish();
     if (pack.metadata.get("certified") == std::optional<std::string>("false") &&
         !o.keep_uncertified) {
         throw std::runtime_error(uncertified_reason(pack) +
                                  "; --keep-uncertified writes it with certified=false");
+    }
+    if (request.relax.mode != RelaxMode::None) {  // after the refusal: that stays one line
+        print_relax_times(pack, stats);
     }
     write_pack_file(o.out, pack, o.force);
     const double d = *pack.metadata.get_number("diameter");

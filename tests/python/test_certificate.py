@@ -305,3 +305,25 @@ def test_highs_certifies_a_periodic_frictional_pack(tmp_path):
     assert crossing_pairs(centres, radii, d, tolerance) > 0
     assert header["certified"] == "true"
     assert highs_worst_residual(a, b, 6) <= float(header["certificate_residual_tolerance"])
+
+
+@pytest.mark.cli
+def test_highs_certifies_the_contact_dynamics_settling(tmp_path):
+    # `--relax-settle dynamics` ends with contact dynamics, certified by its own forces (no
+    # LP); HiGHS, on scipy's contacts of the same positions, reaches the same decision.
+    out = tmp_path / "dynamics.xyz"
+    r = subprocess.run([str(SGMP), "pack", "--count", "300", "--arrangement", "loose-random",
+                        "--seed", "4", "--relax", "frictionless", "--relax-settle", "dynamics",
+                        "--keep-uncertified", "--out", str(out)],
+                       capture_output=True, text=True, check=False)
+    assert r.returncode == 0, r.stderr
+    header, centres, radii = read_xyz(out)
+    d = float(header["diameter"])
+    a, b = balance_matrix(centres, radii, d, float(header["certificate_gap_tolerance"]))
+    assert a.shape[1] == int(header["certificate_contacts"])
+    worst = highs_worst_residual(a, b, 3)
+    print(f"worst residual: the settling's forces {header['certificate_residual_max']}, "
+          f"HiGHS {worst:.3g} m*g over {a.shape[1]} contacts")
+    assert header["certified"] == "true"
+    assert header["certificate_forces"] == "settling-witness"
+    assert worst <= float(header["certificate_residual_tolerance"])

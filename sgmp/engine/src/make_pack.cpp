@@ -5,6 +5,7 @@
 #include "sgmp/engine/equilibrium_certificate.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -176,12 +177,22 @@ void record_relaxation(const PackRequest& request, const RelaxStats& stats, Meta
     m.set_number("relax_finish_move_mean", stats.finish_move_mean);
     m.set_integer("relax_settle_iterations", stats.settle_iterations);
     m.set("relax_settle_converged", stats.settle_converged ? "true" : "false");
-    // How the settling ended: its trust region shrank away, a step moved nothing, the LP
-    // solver failed, or --relax-settle-limit stopped it.
-    m.set("relax_settle_end", stats.settle_ended_still     ? "still"
+    // How the settling ended. Frictionless (contact dynamics): its residual met the tolerance,
+    // it stalled at its smallest step, or --relax-settle-limit stopped it. Frictional (LP):
+    // its trust region shrank away, a step moved nothing, the LP solver failed, or the limit.
+    const bool dynamics =
+        params.mode == RelaxMode::Frictionless && params.settle == RelaxSettle::Dynamics;
+    m.set("relax_settle_end", dynamics                     ? (stats.settle_converged ? "residual"
+                                                              : stats.settle_stalled ? "stalled"
+                                                                                     : "limit")
+                              : stats.settle_ended_still   ? "still"
                               : stats.settle_converged     ? "trust-region"
                               : stats.settle_solver_failed ? "solver-failed"
                                                            : "limit");
+    if (dynamics) {
+        m.set_integer("relax_settle_sweeps", stats.settle_sweeps);
+        m.set_number("relax_settle_residual", stats.settle_residual);
+    }
     m.set_number("relax_settle_move_max", stats.settle_move_max);
     m.set_number("relax_settle_energy_drop", stats.settle_energy_drop);
 }
@@ -264,10 +275,13 @@ Pack make_pack(const PackRequest& request, const ProgressCallback& progress, Pac
     release_free_memory();  // the neighbour grid's, before the relaxation and the checks
     if (request.relax.mode != RelaxMode::None) {
         local.relax = relax_pack(particles, container, request.relax, d, relax_progress);
+        const auto certifying = std::chrono::steady_clock::now();
         local.certificate =
             request.relax.mode == RelaxMode::Frictionless
                 ? certify_frictionless(particles, container, d, {}, local.relax.settle_forces)
                 : certify_frictional(particles, container, d, request.relax.friction);
+        local.certificate_seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - certifying).count();
         local.relax.settle_forces.clear();
         local.relax.settle_forces.shrink_to_fit();
         local.certificate->residual.clear();  // the summary is kept, not the fields

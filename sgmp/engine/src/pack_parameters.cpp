@@ -430,7 +430,8 @@ void add_relax_rows(std::vector<Row>& rows) {
     rows.push_back(whole(
         "relax_settle_limit", g, [](auto& r) -> auto& { return r.relax.settle_limit; },
         "bound on the LP iterations of the hard-sphere settling that ends the relaxation (1 to "
-        "1000000); a pack that reaches it is usually not a certified equilibrium",
+        "1000000; --relax-settle dynamics: hundreds of time steps); a pack that reaches it is "
+        "usually not a certified equilibrium",
         [](const PackRequest& r, const PackCheckContext&) {
             if (r.relax.settle_limit < 1 || r.relax.settle_limit > 1000000) {
                 refuse("relax_settle_limit", std::to_string(r.relax.settle_limit),
@@ -440,6 +441,21 @@ void add_relax_rows(std::vector<Row>& rows) {
     for (std::size_t i = first; i < rows.size(); ++i) {
         rows[i].recorded = relaxed;
     }
+    Row settle = choice(
+        "relax_settle", g, [](auto& r) -> auto& { return r.relax.settle; },
+        [] { return relax_settles(); },
+        "how --relax frictionless settles as hard spheres: lp (sequential linear programming, "
+        "the default) or dynamics (non-smooth contact dynamics, its forces the certificate's "
+        "witness; slower so far: sgmp/engine/docs/relax-certified.md)");
+    settle.recorded = [](const PackRequest& r) {
+        return r.relax.mode != RelaxMode::None && r.relax.settle != RelaxSettle::Lp;
+    };
+    settle.check = [](const PackRequest& r, const PackCheckContext&) {
+        if (r.relax.settle == RelaxSettle::Dynamics && r.relax.mode != RelaxMode::Frictionless) {
+            refuse("relax_settle", "dynamics", "needs --relax frictionless");
+        }
+    };
+    rows.push_back(std::move(settle));
     Row friction = number(
         "relax_friction", g, [](auto& r) -> auto& { return r.relax.friction; },
         "sliding friction mu of --relax frictional (pairs and walls), in [0, 10]; the DEM "

@@ -1,6 +1,7 @@
 #include "sgmp/engine/relax.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -10,6 +11,7 @@
 
 #include "friction.hpp"
 #include "relax_state.hpp"
+#include "sgmp/engine/contact_dynamics.hpp"
 #include "sgmp/engine/hard_sphere_finish.hpp"
 #include "sgmp/engine/hard_sphere_settle.hpp"
 #include "sgmp/engine/neighbour_list.hpp"
@@ -45,6 +47,9 @@ constexpr long kClearCheckEvery = 20;
 constexpr long kMinStageSteps = 500;
 /// Verlet skin over the smallest diameter.
 constexpr double kSkinOverDmin = 0.25;
+/// Contact-dynamics steps per unit of `settle_limit` (RelaxParams): the limit counts LP
+/// iterations of the frictional settling and hundreds of steps of the frictionless one.
+constexpr long kStepsPerSettleIteration = 100;
 
 State make_state(const std::vector<Particle>& particles, double diameter, double shell) {
     const std::size_t n = particles.size();
@@ -492,6 +497,38 @@ void relax_soft(std::vector<Particle>& particles, const Container& container,
     }
 }
 
+/// Seconds since `start`, on the steady clock (timings only: never recorded in packs).
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// The frictionless settling by contact dynamics (contact_dynamics.hpp, `--relax-settle
+/// dynamics`) from the finished pack.
+void settle_frictionless(std::vector<Particle>& particles, const Container& container,
+                         const RelaxParams& params, double diameter, RelaxStats& stats,
+                         const RelaxProgressCallback& progress) {
+    ContactDynamicsOptions options;
+    options.max_steps = static_cast<long>(params.settle_limit) * kStepsPerSettleIteration;
+    if (progress) {
+        const int stages = relax_schedule(params).stages;
+        options.progress = [&, stages](long step, double residual) {
+            progress({RelaxProgress::Phase::Dynamics, stages - 1, stages, stats.steps,
+                      static_cast<int>(step), residual});
+        };
+    }
+    const ContactDynamicsStats settle =
+        settle_by_contact_dynamics(particles, container, diameter, options);
+
+    stats.settle_iterations = static_cast<int>(settle.steps);
+    stats.settle_sweeps = settle.sweeps;
+    stats.settle_converged = settle.converged;
+    stats.settle_stalled = settle.stalled;
+    stats.settle_move_max = settle.move_max;
+    stats.settle_energy_drop = settle.energy_drop;
+    stats.settle_residual = settle.residual_max;
+    stats.settle_forces = settle.forces;
+}
+
 }  // namespace
 
 RelaxStats relax_pack(std::vector<Particle>& particles, const Container& container,
@@ -501,12 +538,20 @@ RelaxStats relax_pack(std::vector<Particle>& particles, const Container& contain
     if (params.mode == RelaxMode::None || particles.empty()) {
         return stats;
     }
+    const auto start = std::chrono::steady_clock::now();
     relax_soft(particles, container, params, diameter, stats, progress);
     const FinishStats finish =
         finish_as_hard_spheres(particles, container, kFinishToleranceOverD * diameter);
     stats.finish_lifted = static_cast<long long>(finish.lifted);
     stats.finish_move_max = finish.move_max / diameter;
     stats.finish_move_mean = finish.move_sum / static_cast<double>(particles.size()) / diameter;
+    stats.soft_seconds = seconds_since(start);
+    const auto settling = std::chrono::steady_clock::now();
+    if (params.mode == RelaxMode::Frictionless && params.settle == RelaxSettle::Dynamics) {
+        settle_frictionless(particles, container, params, diameter, stats, progress);
+        stats.settle_seconds = seconds_since(settling);
+        return stats;
+    }
     SettleOptions options;
     options.max_iterations = params.settle_limit;
     if (params.mode == RelaxMode::Frictional && params.friction > 0.0) {
@@ -527,6 +572,7 @@ RelaxStats relax_pack(std::vector<Particle>& particles, const Container& contain
     stats.settle_move_max = settle.move_max;
     stats.settle_energy_drop = settle.energy_drop;
     stats.settle_forces = settle.forces;
+    stats.settle_seconds = seconds_since(settling);
     return stats;
 }
 

@@ -9,6 +9,12 @@ const NameTable<RelaxMode, 3>& relax_modes() {
     return table;
 }
 
+const NameTable<RelaxSettle, 2>& relax_settles() {
+    static constexpr NameTable<RelaxSettle, 2> table{
+        {{{RelaxSettle::Lp, "lp"}, {RelaxSettle::Dynamics, "dynamics"}}}};
+    return table;
+}
+
 RelaxSchedule relax_schedule(const RelaxParams& params) {
     const bool frictionless = params.mode == RelaxMode::Frictionless;
     RelaxSchedule schedule;

@@ -222,7 +222,7 @@ void bind_making(py::module_& m) {
                 nullptr,
                 [&](const engine::RelaxProgress& r) {
                     using Phase = engine::RelaxProgress::Phase;
-                    if (r.phase == Phase::Settling) {
+                    if (r.phase == Phase::Settling || r.phase == Phase::Dynamics) {
                         report("settling", static_cast<std::size_t>(r.settle_iteration), 0);
                     } else {
                         report(r.phase == Phase::Soft ? "relaxation" : "clearing",

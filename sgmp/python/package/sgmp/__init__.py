@@ -129,6 +129,7 @@ def pack(count: int, arrangement: str, seed: Optional[int] = None, *,
          relax_time: Optional[float] = None, relax_crossings: Optional[int] = None,
          relax_friction: Optional[float] = None, relax_settle_limit: Optional[int] = None,
          relax_tangential_ratio: Optional[float] = None,
+         relax_settle: Optional[str] = None,
          progress: Optional[Progress] = None) -> Pack:
     """Packs `count` spheres from `arrangement` (single-column, small-dense, large-dense,
     loose-random) with the Spin Gap Move Protocol and returns an sgmp.Pack.
@@ -153,7 +154,8 @@ def pack(count: int, arrangement: str, seed: Optional[int] = None, *,
     - relax: 'none', 'frictionless' or 'frictional', and relax_stiffness,
       relax_stiffness_factor, relax_stages, relax_shell, relax_force_tolerance, relax_time,
       relax_crossings, relax_friction (mu of 'frictional', default 0.5),
-      relax_settle_limit, relax_tangential_ratio (k_t/k of 'frictional'): the relaxation (a relaxed pack is returned whether or not it is
+      relax_settle_limit, relax_tangential_ratio (k_t/k of 'frictional'), relax_settle
+      ('lp', the default, or 'dynamics': how 'frictionless' settles): the relaxation (a relaxed pack is returned whether or not it is
       certified: read pack.header['certified']); relax_stiffness, relax_stages and
       relax_time default by mode (frictionless 2e4, 1, 200; frictional 2e3, 5, 5), and the
       header records the values run
@@ -176,7 +178,8 @@ def pack(count: int, arrangement: str, seed: Optional[int] = None, *,
         relax_stages=relax_stages, relax_shell=relax_shell,
         relax_force_tolerance=relax_force_tolerance, relax_time=relax_time,
         relax_crossings=relax_crossings, relax_friction=relax_friction,
-        relax_settle_limit=relax_settle_limit, relax_tangential_ratio=relax_tangential_ratio)))
+        relax_settle_limit=relax_settle_limit, relax_tangential_ratio=relax_tangential_ratio,
+        relax_settle=relax_settle)))
 
 
 def arrange(count: int, arrangement: str, seed: Optional[int] = None, *,

@@ -61,6 +61,7 @@ struct PackStats {
     RelaxStats relax;            ///< the relaxation's, when one was asked for
     /// The relaxation's equilibrium certificate (its per-sphere fields empty).
     std::optional<EquilibriumCertificate> certificate;
+    double certificate_seconds = 0.0;  ///< wall clock of the certificate (not recorded)
 };
 
 /// Called as (particles dropped, total) now and then while packing.

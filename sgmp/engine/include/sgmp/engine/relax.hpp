@@ -49,10 +49,13 @@
 /// steps at N = 1000–3000. The frictional stages' bounds usually end them before the
 /// tolerance is met; `relax_force_max` in the header says what is left.
 ///
-/// Settle: the hard-sphere pack is then settled under gravity by sequential linear
-/// programming (hard_sphere_settle.hpp) into an exact equilibrium, frictionless or
-/// frictional at the relaxation's μ (at μ = 0 the frictionless settling), which the pack's
-/// certificate checks (equilibrium_certificate.hpp).
+/// Settle: the hard-sphere pack is then settled under gravity into an exact equilibrium by
+/// sequential linear programming (hard_sphere_settle.hpp), frictionless or frictional at
+/// the relaxation's μ (at μ = 0 the frictionless settling); with `settle` =
+/// RelaxSettle::Dynamics (`--relax-settle dynamics`, frictionless only) by non-smooth
+/// contact dynamics instead (contact_dynamics.hpp: Moreau–Jean steps, projected SOR over
+/// the contacts), whose contact forces are offered to the certificate as its witness. The
+/// pack's certificate checks either (equilibrium_certificate.hpp).
 ///
 /// Finish: the real spheres are (1 + s) times smaller than the soft ones (default s = 0: the
 /// same), so a soft overlap below s·(rᵢ + rⱼ) is a real gap of at most s·(rᵢ + rⱼ); deeper
@@ -78,33 +81,40 @@ namespace sgmp::engine {
 
 /// What the relaxation did (also recorded in the pack's metadata).
 struct RelaxStats {
-    long long steps = 0;              ///< minimiser steps over all stages
-    int stages_converged = 0;         ///< stages that reached the force tolerance
-    double force_max = 0.0;           ///< largest net force on a sphere at the end, in m·g
-    double overlap_max = 0.0;         ///< deepest soft overlap at the end (pairs, walls), over d
-    long long finish_lifted = 0;      ///< spheres the finish had to lift straight up
-    double finish_move_max = 0.0;     ///< largest displacement by the hard-sphere finish, over d
-    double finish_move_mean = 0.0;    ///< mean displacement by the hard-sphere finish, over d
-    int settle_iterations = 0;        ///< LP iterations of the hard-sphere settling (frictionless)
-    bool settle_converged = false;    ///< the settling ended by its trust region or stillness
-    bool settle_ended_still = false;  ///< the settling's last step moved nothing
+    long long steps = 0;            ///< minimiser steps over all stages
+    int stages_converged = 0;       ///< stages that reached the force tolerance
+    double force_max = 0.0;         ///< largest net force on a sphere at the end, in m·g
+    double overlap_max = 0.0;       ///< deepest soft overlap at the end (pairs, walls), over d
+    long long finish_lifted = 0;    ///< spheres the finish had to lift straight up
+    double finish_move_max = 0.0;   ///< largest displacement by the hard-sphere finish, over d
+    double finish_move_mean = 0.0;  ///< mean displacement by the hard-sphere finish, over d
+    /// LP iterations (frictional) or contact-dynamics steps (frictionless) of the settling.
+    int settle_iterations = 0;
+    bool settle_converged = false;      ///< the settling ended by its trust region or stillness
+    bool settle_ended_still = false;    ///< the settling's last step moved nothing
     bool settle_solver_failed = false;  ///< the settling's LP solver failed; it stopped there
     double settle_move_max = 0.0;       ///< largest displacement by the settling, over d
     double settle_energy_drop = 0.0;    ///< potential energy the settling released, m·g·d
     /// The settling's contact forces, offered to the certificate as its witness (not
     /// recorded in packs).
     std::vector<ContactForce> settle_forces;
+    bool settle_stalled = false;   ///< the contact dynamics stalled at its smallest step
+    long long settle_sweeps = 0;   ///< NSGS sweeps of the contact dynamics (frictionless)
+    double settle_residual = 0.0;  ///< largest force residual of its last step, m·g
+    double soft_seconds = 0.0;     ///< wall clock of the soft stages and the finish (not recorded)
+    double settle_seconds = 0.0;   ///< wall clock of the settling (not recorded)
 };
 
 /// Where a running relaxation is, for progress lines (it changes no result).
 struct RelaxProgress {
-    enum class Phase { Soft, Clearing, Settling };
+    /// Settling: the frictional LP settling; Dynamics: the frictionless contact dynamics.
+    enum class Phase { Soft, Clearing, Settling, Dynamics };
     Phase phase = Phase::Soft;
     int stage = 0;              ///< soft stage, from 0
     int stages = 0;             ///< soft stages in all
     long long steps = 0;        ///< minimiser steps so far, over all soft stages
-    int settle_iteration = 0;   ///< LP iterations of the settling so far
-    double settle_trust = 0.0;  ///< its trust region, over d
+    int settle_iteration = 0;   ///< LP iterations (Dynamics: time steps) of the settling so far
+    double settle_trust = 0.0;  ///< its trust region, over d (Dynamics: largest residual, m·g)
 };
 using RelaxProgressCallback = std::function<void(const RelaxProgress&)>;
 

@@ -24,6 +24,14 @@ enum class RelaxMode {
     Frictional,
 };
 
+/// How a frictionless relaxation ends (the frictional one always by LP).
+enum class RelaxSettle {
+    /// Sequential linear programming (hard_sphere_settle.hpp), the default.
+    Lp,
+    /// Non-smooth contact dynamics (contact_dynamics.hpp), its forces the certificate's witness.
+    Dynamics,
+};
+
 /// Its rules, names and help are rows of the pack parameter table (pack_parameters.hpp).
 struct RelaxParams {
     RelaxMode mode = RelaxMode::None;
@@ -65,10 +73,14 @@ struct RelaxParams {
     /// tangential oscillation of a contact as fast as the normal one for a solid sphere
     /// (I = 2/5·m·r²), the usual choice of linear-spring DEM.
     double tangential_ratio = 2.0 / 7.0;
-    /// Bound on the LP iterations of the hard-sphere settling that ends both relaxations
-    /// (hard_sphere_settle.hpp). A settling that reaches it leaves a pack that is usually
-    /// not an equilibrium: the certificate then says so (certified=false).
+    /// Bound on the settling that ends both relaxations: its LP iterations
+    /// (hard_sphere_settle.hpp), or hundreds of time steps of the contact dynamics of
+    /// `settle` = Dynamics (contact_dynamics.hpp; the default, 5000, allows 500,000). A
+    /// settling that reaches it leaves a pack that is usually not an equilibrium: the
+    /// certificate then says so (certified=false).
     int settle_limit = 5000;
+    /// The frictionless settling: LP (the default) or contact dynamics.
+    RelaxSettle settle = RelaxSettle::Lp;
 };
 
 /// The stiffness schedule a relaxation runs: the values given, else its mode's.
@@ -93,5 +105,7 @@ RelaxSchedule relax_schedule(const RelaxParams& params);
 const NameTable<RelaxMode, 3>& relax_modes();
 std::string_view to_string(RelaxMode mode);
 std::optional<RelaxMode> parse_relax_mode(std::string_view text);
+/// The name table of the frictionless settlings: lp, dynamics.
+const NameTable<RelaxSettle, 2>& relax_settles();
 
 }  // namespace sgmp::engine

@@ -1,0 +1,433 @@
+#include "sgmp/engine/contact_dynamics.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+
+#include "contact_dynamics_state.hpp"
+#include "sgmp/engine/neighbour_list.hpp"
+
+namespace sgmp::engine {
+
+namespace {
+
+using namespace contact_dynamics;
+constexpr long kProgressEvery = 100;
+
+/// Verlet skin over the smallest diameter (as the soft stage's).
+constexpr double kSkinOverDmin = 0.25;
+void check_options(const ContactDynamicsOptions& o) {
+    const auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
+    if (!positive(o.time_step) || !positive(o.step_cap) || !positive(o.sweep_tolerance) ||
+        !positive(o.residual_tolerance) || !positive(o.smallest_step) || o.smallest_step > 1.0 ||
+        !(std::isfinite(o.step_shrink) && o.step_shrink > 1.0) || !positive(o.relaxation) ||
+        !positive(o.shrink_below) || o.relaxation >= 2.0 || o.max_sweeps < 1 || o.max_steps < 1 ||
+        o.stall_window < 1) {
+        throw std::invalid_argument(
+            "contact dynamics: steps, cap and tolerances must be finite and > 0, relaxation in "
+            "(0, 2), smallest step in (0, 1], shrink > 1, sweeps, steps and window >= 1");
+    }
+}
+
+Dynamics make_dynamics(const std::vector<Particle>& particles, const Container& box,
+                       double diameter, const ContactDynamicsOptions& o) {
+    const std::size_t n = particles.size();
+    std::vector<std::int64_t> key(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec3& c = particles[i].center;
+        const auto cell = [&](double x) {
+            return static_cast<std::int64_t>(std::floor(x / diameter));
+        };
+        key[i] = (cell(c.y()) * 4096 + (cell(c.z()) + 2048)) * 4096 + (cell(c.x()) + 2048);
+    }
+    Dynamics s;
+    s.particle.resize(n);
+    std::iota(s.particle.begin(), s.particle.end(), std::uint32_t{0});
+    std::stable_sort(s.particle.begin(), s.particle.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+    double r_min = INFINITY;
+    for (const std::uint32_t i : s.particle) {
+        const Particle& p = particles[i];
+        s.balls.push_back(Ball{p.center.x(), p.center.y(), p.center.z(), p.radius});
+        s.inv_m.push_back(1.0 / std::pow(2.0 * p.radius / diameter, 3));
+        r_min = std::min(r_min, p.radius);
+    }
+    s.v.assign(n, V3{});
+    s.kept.assign(n, V3{});
+    s.wall_p.assign(5 * n, 0.0);
+    s.box = box;
+    s.h = o.time_step * std::sqrt(diameter);
+    s.skin = kSkinOverDmin * 2.0 * r_min;
+    s.cap = std::min(o.step_cap * diameter, s.skin / 8.0);
+    return s;
+}
+
+/// Rebuilds the neighbour list and carries each pair's impulse over to its new slot.
+void rebuild(Dynamics& s) {
+    std::swap(s.previous, s.list);
+    s.list.build(s.balls, s.skin, s.box);
+    std::vector<double> next(s.list.pairs(), 0.0);
+    if (!s.pair_p.empty()) {
+        for (std::size_t i = 0; i < s.balls.size(); ++i) {
+            const auto old = s.previous.of(i);
+            const auto now = s.list.of(i);
+            for (std::size_t k = 0; k < old.size(); ++k) {
+                const double p = s.pair_p[s.previous.first_slot(i) + k];
+                const auto at = p > 0.0 ? std::find(now.begin(), now.end(), old[k]) : now.end();
+                if (at != now.end()) {
+                    next[s.list.first_slot(i) + static_cast<std::size_t>(at - now.begin())] = p;
+                }
+            }
+        }
+    }
+    s.pair_p.swap(next);
+    s.at_build.resize(s.balls.size());
+    for (std::size_t i = 0; i < s.balls.size(); ++i) {
+        s.at_build[i] = V3{s.balls[i].x, s.balls[i].y, s.balls[i].z};
+    }
+}
+
+/// Rebuilds the list once a sphere may have moved so far since the last build that an
+/// unlisted pair could close within a step: 2·moved > skin − 2·cap.
+void keep_list(Dynamics& s) {
+    double largest = 0.0;
+    for (std::size_t i = 0; i < s.balls.size(); ++i) {
+        const double dx = s.balls[i].x - s.at_build[i].x, dy = s.balls[i].y - s.at_build[i].y,
+                     dz = s.balls[i].z - s.at_build[i].z;
+        largest = std::max(largest, dx * dx + dy * dy + dz * dz);
+    }
+    if (2.0 * std::sqrt(largest) >= s.skin - 2.0 * s.cap) {
+        rebuild(s);
+    }
+}
+
+/// The step's contacts: listed pairs and walls whose gap one step may close (< 2·cap), with
+/// the last step's impulses.
+void gather_contacts(Dynamics& s) {
+    s.contacts.clear();
+    const double reach = 2.0 * s.cap;
+    const std::vector<Ball>& b = s.balls;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        const std::size_t first = s.list.first_slot(i);
+        const auto near = s.list.of(i);
+        for (std::size_t k = 0; k < near.size(); ++k) {
+            const std::uint32_t j = near[k];
+            double dx = b[j].x - b[i].x, dz = b[j].z - b[i].z;
+            const double dy = b[j].y - b[i].y;
+            s.box.to_nearest_image(dx, dz);
+            const double dist = std::sqrt(dx * dx + dy * dy + dz * dz);
+            const double gap = dist - b[i].r - b[j].r;
+            if (gap >= reach) {
+                continue;
+            }
+            const auto slot = static_cast<std::uint32_t>(first + k);
+            s.contacts.push_back(Contact{static_cast<std::uint32_t>(i), j, dx / dist, dy / dist,
+                                         dz / dist, gap, 1.0 / (s.inv_m[i] + s.inv_m[j]),
+                                         s.pair_p[slot], slot, 0});
+        }
+        const Vec3 c(b[i].x, b[i].y, b[i].z);
+        const std::array<WallGap, 5> walls = wall_gaps(c, b[i].r, s.box);
+        for (std::uint32_t w = 0; w < 5; ++w) {
+            if (walls[w].gap < reach) {
+                const Vec3& n = walls[w].normal;  // inward: the contact's normal is −n
+                const auto slot = static_cast<std::uint32_t>(5 * i + w);
+                s.contacts.push_back(Contact{static_cast<std::uint32_t>(i), kWall, -n.x(), -n.y(),
+                                             -n.z(), walls[w].gap, 1.0 / s.inv_m[i], s.wall_p[slot],
+                                             slot, w});
+            }
+        }
+    }
+}
+
+/// v ← −h·ŷ (each step starts at rest), then the warm-start impulses.
+void start_velocities(Dynamics& s) {
+    for (std::size_t i = 0; i < s.v.size(); ++i) {
+        s.v[i] = V3{s.kept[i].x, s.kept[i].y - s.h, s.kept[i].z};
+    }
+    for (const Contact& c : s.contacts) {
+        if (c.p > 0.0) {
+            apply(s, c, c.p);
+        }
+    }
+}
+
+/// One NSGS update of contact c; returns |Δp|.
+inline double relax_contact(Dynamics& s, Contact& c, double inv_h, double omega) {
+    const double u = normal_velocity(s, c);
+    const double p = std::max(0.0, c.p - omega * (u + c.gap * inv_h) * c.inv_w);
+    const double dp = p - c.p;
+    if (dp == 0.0) {
+        return 0.0;
+    }
+    c.p = p;
+    apply(s, c, dp);
+    return std::abs(dp);
+}
+
+/// Projected SOR sweeps over the contacts from the top of the pack down (the contacts are
+/// stored bottom up, so a sweep carries each weight down in one pass), until no closing
+/// force changes by more than `tolerance` (m·g); returns the sweeps taken.
+int solve_contacts(Dynamics& s, double tolerance, double omega, int max_sweeps) {
+    const double inv_h = 1.0 / s.h;
+    const double bound = tolerance * s.h;
+    std::vector<Contact>& cs = s.contacts;
+    for (int sweep = 1; sweep <= max_sweeps; ++sweep) {
+        double largest = 0.0;
+        for (auto c = cs.rbegin(); c != cs.rend(); ++c) {
+            largest = std::max(largest, relax_contact(s, *c, inv_h, omega));
+        }
+        if (largest <= bound) {
+            return sweep;
+        }
+    }
+    return max_sweeps;
+}
+
+/// The velocities v* + M⁻¹·Jᵀ·p of impulses p (in contact order), v* = v° − h·ŷ.
+void velocities_for(Dynamics& s, const std::vector<double>& p) {
+    for (std::size_t i = 0; i < s.v.size(); ++i) {
+        s.v[i] = V3{s.kept[i].x, s.kept[i].y - s.h, s.kept[i].z};
+    }
+    for (std::size_t c = 0; c < s.contacts.size(); ++c) {
+        if (p[c] != 0.0) {
+            apply(s, s.contacts[c], p[c]);
+        }
+    }
+}
+
+/// A bound on the largest eigenvalue of W (Gershgorin: each row's sum of |W_cd| is at most
+/// Σ over its spheres of 1/mᵢ times the contacts on the sphere).
+double delassus_bound(const Dynamics& s) {
+    std::vector<std::uint32_t> degree(s.v.size(), 0);
+    for (const Contact& c : s.contacts) {
+        ++degree[c.a];
+        if (c.b != kWall) {
+            ++degree[c.b];
+        }
+    }
+    double bound = 0.0;
+    for (const Contact& c : s.contacts) {
+        const double row =
+            s.inv_m[c.a] * degree[c.a] + (c.b == kWall ? 0.0 : s.inv_m[c.b] * degree[c.b]);
+        bound = std::max(bound, row);
+    }
+    return bound;
+}
+
+/// The contact problem as min ½·pᵀWp + qᵀp over p ≥ 0 (its gradient Wp + q = g/h + u(p)),
+/// by Nesterov's accelerated projected gradient with step 1/L (L: delassus_bound) and the
+/// gradient restart of O'Donoghue & Candès (APGD, as in Chrono), from the warm start, until
+/// no force changes by more than `tolerance` (m·g); returns the iterations.
+int solve_apgd(Dynamics& s, double tolerance, int max_iterations) {
+    const std::size_t n = s.contacts.size();
+    const double inv_h = 1.0 / s.h;
+    const double step = 1.0 / std::max(delassus_bound(s), 1e-300);
+    std::vector<double> p(n), y(n), next(n);
+    for (std::size_t c = 0; c < n; ++c) {
+        p[c] = y[c] = s.contacts[c].p;
+    }
+    double theta = 1.0;
+    int k = 1;
+    for (; k <= max_iterations; ++k) {
+        velocities_for(s, y);
+        double largest = 0.0;
+        double ascent = 0.0;  // gradient·(p_next − p) > 0: restart the momentum
+        for (std::size_t c = 0; c < n; ++c) {
+            const double grad = s.contacts[c].gap * inv_h + normal_velocity(s, s.contacts[c]);
+            next[c] = std::max(0.0, y[c] - step * grad);
+            largest = std::max(largest, std::abs(next[c] - p[c]));
+            ascent += grad * (next[c] - p[c]);
+        }
+        const double theta_next = 0.5 * theta * (std::sqrt(theta * theta + 4.0) - theta);
+        const double beta =
+            ascent > 0.0 ? 0.0 : theta * (1.0 - theta) / (theta * theta + theta_next);
+        theta = ascent > 0.0 ? 1.0 : theta_next;
+        for (std::size_t c = 0; c < n; ++c) {
+            y[c] = next[c] + beta * (next[c] - p[c]);
+        }
+        p.swap(next);
+        if (largest <= tolerance * s.h) {
+            break;
+        }
+    }
+    for (std::size_t c = 0; c < n; ++c) {
+        s.contacts[c].p = p[c];
+    }
+    velocities_for(s, p);
+    return std::min(k, max_iterations);
+}
+
+/// Keeps the impulses for the next step's warm start (a pair or wall not in the step's
+/// contacts is open: 0).
+void store_impulses(Dynamics& s) {
+    std::fill(s.pair_p.begin(), s.pair_p.end(), 0.0);
+    std::fill(s.wall_p.begin(), s.wall_p.end(), 0.0);
+    for (const Contact& c : s.contacts) {
+        (c.b == kWall ? s.wall_p : s.pair_p)[c.slot] = c.p;
+    }
+}
+
+/// The largest residual mᵢ·|vᵢ⁺|/h of the step (it started at rest), in m·g.
+double step_residual(const Dynamics& s) {
+    double largest = 0.0;
+    for (std::size_t i = 0; i < s.v.size(); ++i) {
+        const V3& v = s.v[i];
+        const V3& k = s.kept[i];
+        const double dx = v.x - k.x, dy = v.y - k.y, dz = v.z - k.z;
+        const double r2 = std::max(v.x * v.x + v.y * v.y + v.z * v.z, dx * dx + dy * dy + dz * dz);
+        largest = std::max(largest, std::sqrt(r2) / s.inv_m[i]);
+    }
+    return largest / s.h;
+}
+
+/// Keeps a sphere's velocity for the next step while the net force on it pushes along it
+/// (power F·v > 0, F = m·(v⁺ − v_kept)/h), else stops it (FIRE's rule, sphere by sphere).
+void keep_velocities(Dynamics& s, bool inertia) {
+    for (std::size_t i = 0; i < s.v.size(); ++i) {
+        const V3& v = s.v[i];
+        V3& k = s.kept[i];
+        const double power = (v.x - k.x) * v.x + (v.y - k.y) * v.y + (v.z - k.z) * v.z;
+        k = inertia && power > 0.0 ? v : V3{};
+    }
+}
+
+/// c ← c + h·v, each displacement capped at `cap` (the velocity scaled down).
+void move(Dynamics& s) {
+    for (std::size_t i = 0; i < s.balls.size(); ++i) {
+        V3& v = s.v[i];
+        const double step = s.h * std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+        if (step > s.cap) {
+            const double scale = s.cap / step;
+            v = V3{scale * v.x, scale * v.y, scale * v.z};
+        }
+        s.balls[i].x += s.h * v.x;
+        s.balls[i].y += s.h * v.y;
+        s.balls[i].z += s.h * v.z;
+    }
+}
+
+/// The last step's forces p/h > 0 on the caller's indices.
+std::vector<ContactForce> contact_forces(const Dynamics& s) {
+    static constexpr std::array<Partner, 5> kWalls{Partner::Floor, Partner::XMin, Partner::XMax,
+                                                   Partner::ZMin, Partner::ZMax};
+    std::vector<ContactForce> forces;
+    for (const Contact& c : s.contacts) {
+        if (c.p <= 0.0) {
+            continue;
+        }
+        ContactForce f;
+        f.first = s.particle[c.a];
+        if (c.b == kWall) {
+            f.partner = kWalls[c.wall];
+        } else {
+            f.second = s.particle[c.b];
+        }
+        f.force = c.p / s.h;
+        forces.push_back(f);
+    }
+    return forces;
+}
+
+/// Writes the positions back (wrapped when periodic) and fills the move and energy figures.
+void write_back(const Dynamics& s, std::vector<Particle>& particles, double diameter,
+                ContactDynamicsStats& stats) {
+    for (std::size_t k = 0; k < s.particle.size(); ++k) {
+        Particle& p = particles[s.particle[k]];
+        const Vec3 c(s.balls[k].x, s.balls[k].y, s.balls[k].z);
+        stats.move_max = std::max(stats.move_max, (c - p.center).norm() / diameter);
+        stats.energy_drop += (p.center.y() - c.y()) / (s.inv_m[k] * diameter);
+        p.center = s.box.wrapped(c);
+    }
+}
+
+/// Divides the step by `factor`, and the kept impulses with it (the forces p/h stay).
+void shrink_step(Dynamics& s, double factor) {
+    s.h /= factor;
+    for (double& p : s.pair_p) {
+        p /= factor;
+    }
+    for (double& p : s.wall_p) {
+        p /= factor;
+    }
+}
+
+/// One time step; returns its largest residual, m·g.
+double step(Dynamics& s, const ContactDynamicsOptions& o, int sweeps, ContactDynamicsStats& stats) {
+    keep_list(s);
+    gather_contacts(s);
+    start_velocities(s);
+    stats.sweeps += o.solver == ContactSolver::Apgd
+                        ? solve_apgd(s, o.sweep_tolerance, sweeps)
+                        : solve_contacts(s, o.sweep_tolerance, o.relaxation, sweeps);
+    store_impulses(s);
+    const double residual = step_residual(s);
+    move(s);
+    keep_velocities(s, o.inertia);
+    ++stats.steps;
+    return residual;
+}
+
+}  // namespace
+
+ContactDynamicsStats settle_by_contact_dynamics(std::vector<Particle>& particles,
+                                                const Container& container, double diameter,
+                                                const ContactDynamicsOptions& options) {
+    check_options(options);
+    if (!(diameter > 0.0) || !std::isfinite(diameter)) {
+        throw std::invalid_argument("contact dynamics: diameter must be finite and > 0");
+    }
+    ContactDynamicsStats stats;
+    if (particles.empty()) {
+        stats.converged = true;
+        return stats;
+    }
+    Dynamics s = make_dynamics(particles, container, diameter, options);
+    rebuild(s);
+    const double h_min = options.time_step * options.smallest_step * std::sqrt(diameter);
+    double best_before = INFINITY;  // the least residual before the present window
+    double best = INFINITY;
+    while (stats.steps < options.max_steps) {
+        // Each shrink of h multiplies the sweeps by the same factor: the smaller steps are
+        // there to converge the contact problem, not to move.
+        const double ratio = std::round(options.time_step * std::sqrt(diameter) / s.h);
+        const int sweeps = static_cast<int>(std::min(1e8, options.max_sweeps * ratio));
+        stats.residual_max = step(s, options, sweeps, stats);
+        best = std::min(best, stats.residual_max);
+        const bool smallest = s.h <= h_min * (1.0 + 1e-12);
+        if (stats.residual_max <= options.residual_tolerance) {
+            if (smallest) {
+                stats.converged = true;
+                break;
+            }
+            shrink_step(s, std::min(options.step_shrink, s.h / h_min));  // polish the gaps
+            continue;
+        }
+        if (stats.steps % options.stall_window == 0) {
+            // Stalled near an equilibrium (a creep far from one goes on at the same h):
+            // smaller steps, or the end.
+            if (best > 0.5 * best_before && best_before < options.shrink_below) {
+                if (smallest) {
+                    stats.stalled = true;
+                    break;
+                }
+                shrink_step(s, std::min(options.step_shrink, s.h / h_min));
+            }
+            best_before = std::min(best_before, best);
+            best = INFINITY;
+        }
+        if (options.progress && stats.steps % kProgressEvery == 0) {
+            options.progress(stats.steps, stats.residual_max);
+        }
+    }
+    stats.time_step = s.h / std::sqrt(diameter);
+    stats.forces = contact_forces(s);
+    stats.contacts = stats.forces.size();
+    write_back(s, particles, diameter, stats);
+    return stats;
+}
+
+}  // namespace sgmp::engine

@@ -1,0 +1,222 @@
+// The contact-dynamics settling (contact_dynamics.hpp): closed-form equilibria (a sphere on
+// the floor, a column, a sphere on three held by the walls), its forces checked sphere by
+// sphere against the weights here (brute force) and by the certificate (whose LP sees only
+// the final positions), relaxed packs over seeds, and the refusal of bad options.
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <stdexcept>
+#include <vector>
+
+#include "sgmp/engine/contact_dynamics.hpp"
+#include "sgmp/engine/equilibrium_certificate.hpp"
+#include "sgmp/engine/make_pack.hpp"
+#include "sgmp/pack/parameter_error.hpp"
+
+using namespace sgmp;
+using namespace sgmp::engine;
+
+namespace {
+
+constexpr double kD = 0.1;
+
+Particle sphere(double x, double y, double z) {
+    return Particle{0, Vec3(x, y, z), 0.5 * kD, 0};
+}
+
+/// The force a settling's witness puts on the contact (first, second, partner), 0 if none.
+double force_on(const ContactDynamicsStats& s, std::size_t first, std::size_t second,
+                Partner partner) {
+    for (const ContactForce& f : s.forces) {
+        const bool same =
+            f.partner == partner &&
+            (partner != Partner::Sphere ? f.first == first
+                                        : (f.first == first && f.second == second) ||
+                                              (f.first == second && f.second == first));
+        if (same) {
+            return f.force;
+        }
+    }
+    return 0.0;
+}
+
+/// The largest |Σ forces − weight| over the spheres, recomputed here from the witness and
+/// the final positions (brute force, independent of the settling's own bookkeeping).
+double largest_residual(const std::vector<Particle>& p, const Container& box, double d,
+                        const std::vector<ContactForce>& forces) {
+    std::vector<Vec3> net(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        net[i] = Vec3(0.0, -std::pow(2.0 * p[i].radius / d, 3), 0.0);
+    }
+    for (const ContactForce& f : forces) {
+        if (f.partner == Partner::Sphere) {
+            Vec3 n = p[f.second].center - p[f.first].center;
+            double dx = n.x(), dz = n.z();
+            box.to_nearest_image(dx, dz);
+            n = Vec3(dx, n.y(), dz).normalized();
+            net[f.first] -= f.force * n;
+            net[f.second] += f.force * n;
+            continue;
+        }
+        for (const WallGap& w : wall_gaps(p[f.first].center, p[f.first].radius, box)) {
+            if (w.wall == f.partner) {
+                net[f.first] += f.force * w.normal;
+            }
+        }
+    }
+    double largest = 0.0;
+    for (const Vec3& r : net) {
+        largest = std::max(largest, r.norm());
+    }
+    return largest;
+}
+
+/// Options converging the closed-form cases far below the default residual tolerance.
+ContactDynamicsOptions tight() {
+    ContactDynamicsOptions o;
+    o.residual_tolerance = 1e-9;
+    o.sweep_tolerance = 1e-13;
+    return o;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(contact_dynamics)
+
+BOOST_AUTO_TEST_CASE(a_sphere_falls_onto_the_floor_and_rests_on_its_weight) {
+    const Container box;
+    std::vector<Particle> p{sphere(0.1, box.floor + 0.6 * kD, -0.2)};
+    const ContactDynamicsStats s = settle_by_contact_dynamics(p, box, kD, tight());
+    BOOST_TEST(s.converged);
+    BOOST_TEST(std::abs(p[0].center.y() - (box.floor + 0.5 * kD)) <= 1e-9 * kD);
+    BOOST_TEST(p[0].center.x() == 0.1);  // nothing pushes it sideways
+    BOOST_TEST(s.forces.size() == 1u);
+    BOOST_TEST(force_on(s, 0, 0, Partner::Floor) == 1.0, boost::test_tools::tolerance(1e-6));
+    BOOST_TEST(s.energy_drop == 0.1, boost::test_tools::tolerance(1e-6));
+    const EquilibriumCertificate c = certify_frictionless(p, box, kD, {}, s.forces);
+    BOOST_TEST(c.certified);
+    BOOST_TEST(c.by_witness);
+}
+
+BOOST_AUTO_TEST_CASE(a_column_lands_and_carries_its_weights_down) {
+    // Three spheres one above the other with gaps 0.3·d, 0.2·d, 0.1·d: they end touching,
+    // the floor carries 3 weights, the pairs 2 and 1 (closed form).
+    const Container box;
+    std::vector<Particle> p{sphere(0, box.floor + 0.8 * kD, 0), sphere(0, box.floor + 2.0 * kD, 0),
+                            sphere(0, box.floor + 3.1 * kD, 0)};
+    const ContactDynamicsStats s = settle_by_contact_dynamics(p, box, kD, tight());
+    BOOST_TEST(s.converged);
+    for (int k = 0; k < 3; ++k) {
+        BOOST_TEST(std::abs(p[k].center.y() - (box.floor + (0.5 + k) * kD)) <= 1e-9 * kD);
+    }
+    BOOST_TEST(force_on(s, 0, 0, Partner::Floor) == 3.0, boost::test_tools::tolerance(1e-6));
+    BOOST_TEST(force_on(s, 0, 1, Partner::Sphere) == 2.0, boost::test_tools::tolerance(1e-6));
+    BOOST_TEST(force_on(s, 1, 2, Partner::Sphere) == 1.0, boost::test_tools::tolerance(1e-6));
+    BOOST_TEST(s.energy_drop == 1.4, boost::test_tools::tolerance(1e-6));
+    BOOST_TEST(largest_residual(p, box, kD, s.forces) <= 1e-6);
+    BOOST_TEST(certify_frictionless(p, box, kD, {}, s.forces).by_witness);
+}
+
+BOOST_AUTO_TEST_CASE(a_sphere_on_three_held_by_the_walls_splits_its_weight) {
+    // Three spheres on the floor at distance ρ = 0.7·d from the axis x = z = 0, at angles 0,
+    // 120° and 240°, each against the walls that hold it outward (the box is cut to them),
+    // apart from each other (their centres 0.7·√3·d > d apart); a fourth is dropped onto
+    // them. With cos θ = √(1 − ρ²/d²) the contact normal's vertical part, each upper contact
+    // carries 1/(3·cos θ), the floor 1 + 1/3 under each lower sphere, and the walls the
+    // contacts' horizontal part ρ/(3·d·cos θ), split by the normals of the two walls at 120°
+    // and 240°.
+    const double rho = 0.7 * kD;
+    const double r = 0.5 * kD;
+    Container box;
+    box.x_max = rho + r;
+    box.x_min = -0.5 * rho - r;
+    box.z_max = 0.5 * std::sqrt(3.0) * rho + r;
+    box.z_min = -box.z_max;
+    const double y0 = box.floor + r;
+    std::vector<Particle> p;
+    for (int k = 0; k < 3; ++k) {
+        const double a = 2.0 * std::numbers::pi * k / 3.0;
+        p.push_back(sphere(rho * std::cos(a), y0, rho * std::sin(a)));
+    }
+    const double cos_theta = std::sqrt(1.0 - 0.49);
+    p.push_back(sphere(0, y0 + cos_theta * kD + 0.05 * kD, 0));
+    const ContactDynamicsStats s = settle_by_contact_dynamics(p, box, kD, tight());
+    BOOST_TEST(s.converged);
+    BOOST_TEST(std::abs(p[3].center.y() - (y0 + cos_theta * kD)) <= 1e-8 * kD);
+    const double upper = 1.0 / (3.0 * cos_theta);
+    const double push = upper * 0.7;
+    const auto close = boost::test_tools::tolerance(1e-6);
+    for (std::size_t k = 0; k < 3; ++k) {
+        BOOST_TEST(force_on(s, k, 3, Partner::Sphere) == upper, close);
+        BOOST_TEST(force_on(s, k, 0, Partner::Floor) == 4.0 / 3.0, close);
+    }
+    BOOST_TEST(force_on(s, 0, 0, Partner::XMax) == push, close);
+    BOOST_TEST(force_on(s, 1, 0, Partner::XMin) == 0.5 * push, close);
+    BOOST_TEST(force_on(s, 1, 0, Partner::ZMax) == 0.5 * std::sqrt(3.0) * push, close);
+    BOOST_TEST(force_on(s, 2, 0, Partner::ZMin) == 0.5 * std::sqrt(3.0) * push, close);
+    BOOST_TEST(largest_residual(p, box, kD, s.forces) <= 1e-5);
+    const EquilibriumCertificate c = certify_frictionless(p, box, kD, {}, s.forces);
+    BOOST_TEST(c.certified);
+    BOOST_TEST(c.by_witness);
+    BOOST_TEST(c.overlap_max_over_d <= 1e-9);
+}
+
+BOOST_AUTO_TEST_CASE(bad_options_are_refused) {
+    std::vector<Particle> p{sphere(0, -0.5, 0)};
+    const Container box;
+    const auto refused = [&](auto change) {
+        ContactDynamicsOptions o;
+        change(o);
+        BOOST_CHECK_THROW(settle_by_contact_dynamics(p, box, kD, o), std::invalid_argument);
+    };
+    refused([](ContactDynamicsOptions& o) { o.time_step = 0.0; });
+    refused([](ContactDynamicsOptions& o) { o.time_step = NAN; });
+    refused([](ContactDynamicsOptions& o) { o.residual_tolerance = -1.0; });
+    refused([](ContactDynamicsOptions& o) { o.sweep_tolerance = INFINITY; });
+    refused([](ContactDynamicsOptions& o) { o.relaxation = 2.0; });
+    refused([](ContactDynamicsOptions& o) { o.step_shrink = 1.0; });
+    refused([](ContactDynamicsOptions& o) { o.smallest_step = 0.0; });
+    refused([](ContactDynamicsOptions& o) { o.max_steps = 0; });
+    refused([](ContactDynamicsOptions& o) { o.max_sweeps = 0; });
+    BOOST_CHECK_THROW(settle_by_contact_dynamics(p, box, 0.0), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(relaxed_packs_are_certified_by_the_settlings_own_forces) {
+    // `--relax frictionless` ends with the contact dynamics; its forces certify the pack
+    // (certificate_forces=settling-witness: no certificate LP), on walls and periodic sides.
+    for (const Sides sides : {Sides::Walls, Sides::Periodic}) {
+        for (const std::uint64_t seed : {1u, 2u, 3u}) {
+            PackRequest request;
+            request.count = 150;
+            request.arrangement = Arrangement::LooseRandom;
+            request.seed = seed;
+            request.sides = sides;
+            request.relax.mode = RelaxMode::Frictionless;
+            request.relax.settle = RelaxSettle::Dynamics;
+            const Pack pack = make_pack(request);
+            BOOST_TEST(*pack.metadata.get("certified") == "true", "seed " << seed);
+            BOOST_TEST(*pack.metadata.get("certificate_forces") == "settling-witness",
+                       "seed " << seed);
+            BOOST_TEST(*pack.metadata.get_number("certificate_overlap_max") <= 1e-9);
+        }
+    }
+}
+
+BOOST_AUTO_TEST_CASE(the_settling_is_chosen_for_frictionless_relaxations_only) {
+    PackRequest request;
+    request.count = 40;
+    request.relax.mode = RelaxMode::Frictional;
+    request.relax.settle = RelaxSettle::Dynamics;
+    BOOST_CHECK_THROW(validate(request), ParameterError);
+    request.relax.mode = RelaxMode::Frictionless;
+    BOOST_CHECK_NO_THROW(validate(request));
+    // The LP settling, the default, is not recorded, so its packs keep their headers.
+    request.relax.settle = RelaxSettle::Lp;
+    BOOST_TEST(!make_pack(request).metadata.get("relax_settle").has_value());
+    request.relax.settle = RelaxSettle::Dynamics;
+    BOOST_TEST(*make_pack(request).metadata.get("relax_settle") == "dynamics");
+}
+
+BOOST_AUTO_TEST_SUITE_END()

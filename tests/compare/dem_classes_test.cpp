@@ -413,7 +413,9 @@ BOOST_AUTO_TEST_CASE(split_ratio_and_g_r_at_their_information_limit) {
         }
     }
     BOOST_TEST(g_r_above == 6);    // 2 seeds cannot agree on g(r), however many references
-    BOOST_TEST(split_above == 5);  // nor on the split ratio against 5, but at N = 3000 μ = 0.01
+    // The split ratio at its margin of 0.05 (raised for the material spread, compare/notes/
+    // material-spread-2026-12-07.md): 2 seeds against 5 decide it at all but one class × count.
+    BOOST_TEST(split_above == 1);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

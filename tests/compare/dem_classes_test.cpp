@@ -412,7 +412,7 @@ BOOST_AUTO_TEST_CASE(split_ratio_and_g_r_at_their_information_limit) {
                                       << g_r_seeds(var, true) << "; m " << kGrMargin);
         }
     }
-    BOOST_TEST(g_r_above == 6);    // 2 seeds cannot agree on g(r), however many references
+    BOOST_TEST(g_r_above == 6);  // 2 seeds cannot agree on g(r), however many references
     // The split ratio at its margin of 0.05 (raised for the material spread, compare/notes/
     // material-spread-2026-12-07.md): 2 seeds against 5 decide it at all but one class × count.
     BOOST_TEST(split_above == 1);

@@ -137,19 +137,8 @@ EquivalenceResult test_scalar(const ScalarSample& candidate, const ScalarSample&
             const Pooled wn = pooled(var_a, n, var_b, n);
             return t_quantile(1.0 - alpha, wn.df) * wn.se < std::abs(excess);
         };
-        std::size_t lo = first_seeds_to_try(candidate.n, reference.n);
-        std::size_t hi = kMostSeeds;
-        if (lo <= hi && decides(hi)) {
-            while (lo < hi) {
-                const std::size_t mid = lo + (hi - lo) / 2;
-                if (decides(mid)) {
-                    hi = mid;
-                } else {
-                    lo = mid + 1;
-                }
-            }
-            r.seeds_to_decide = lo;
-        }
+        r.seeds_to_decide = detail::smallest_deciding(first_seeds_to_try(candidate.n, reference.n),
+                                                      kMostSeeds, decides);
     }
     return r;
 }

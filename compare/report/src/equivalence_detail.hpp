@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <limits>
+#include <optional>
 
 #include "sgmp/report/equivalence.hpp"
 
@@ -18,6 +19,25 @@ inline constexpr std::size_t kMostSeeds = 1000;
 /// weights), and more than both when they are equal.
 inline std::size_t first_seeds_to_try(std::size_t n_a, std::size_t n_b) {
     return std::max<std::size_t>(2, std::max(n_a, n_b) + (n_a == n_b ? 1 : 0));
+}
+
+/// The smallest n in [lo, hi] with decides(n), by bisection, assuming that once it decides
+/// it keeps deciding (an interval narrows as n grows); none when lo > hi or decides(hi) is
+/// false. What seeds_to_decide, the L2 test and the sequential rows' projections name.
+template <class F>
+std::optional<std::size_t> smallest_deciding(std::size_t lo, std::size_t hi, const F& decides) {
+    if (lo > hi || !decides(hi)) {
+        return std::nullopt;
+    }
+    while (lo < hi) {
+        const std::size_t mid = lo + (hi - lo) / 2;
+        if (decides(mid)) {
+            hi = mid;
+        } else {
+            lo = mid + 1;
+        }
+    }
+    return lo;
 }
 
 inline EquivalenceResult undecidable(double estimate, double margin) {

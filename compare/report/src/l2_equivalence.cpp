@@ -336,19 +336,8 @@ EquivalenceResult test_l2_curves(const std::vector<std::vector<double>>& candida
                 bounds_of(law_of(variance, {c, c, f, f, false}, bin_width), u, margin, z);
             return bn.high < margin || bn.low > margin;
         };
-        std::size_t lo = first_seeds_to_try(size_a, size_b);
-        std::size_t hi = kMostSeeds;
-        if (lo <= hi && decided(hi)) {
-            while (lo < hi) {
-                const std::size_t mid = lo + (hi - lo) / 2;
-                if (decided(mid)) {
-                    hi = mid;
-                } else {
-                    lo = mid + 1;
-                }
-            }
-            r.seeds_to_decide = lo;
-        }
+        r.seeds_to_decide =
+            detail::smallest_deciding(first_seeds_to_try(size_a, size_b), kMostSeeds, decided);
     }
     return r;
 }

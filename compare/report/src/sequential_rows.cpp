@@ -5,6 +5,7 @@
 #include <optional>
 #include <sstream>
 
+#include "equivalence_detail.hpp"
 #include "sgmp/report/species_rows.hpp"
 
 namespace sgmp::report {
@@ -34,24 +35,11 @@ std::map<std::string, MetricRule> rules_by_name(const Packs& a, const Packs& b) 
     return rules;
 }
 
-/// The smallest n in (from, kMostProjected] with decides(n), assuming that once it decides
-/// it keeps deciding (the bounds narrow as n grows); none when kMostProjected does not.
+/// The smallest n in (from, kMostProjected] with decides(n); none when kMostProjected
+/// does not decide.
 template <class F>
 std::optional<std::size_t> smallest_deciding(std::size_t from, const F& decides) {
-    if (from >= kMostProjected || !decides(kMostProjected)) {
-        return std::nullopt;
-    }
-    std::size_t lo = from + 1;
-    std::size_t hi = kMostProjected;
-    while (lo < hi) {
-        const std::size_t mid = lo + (hi - lo) / 2;
-        if (decides(mid)) {
-            hi = mid;
-        } else {
-            lo = mid + 1;
-        }
-    }
-    return lo;
+    return detail::smallest_deciding(from + 1, kMostProjected, decides);
 }
 
 /// Names the side that limits an undecided row (sequential_rows.hpp) at look `taken`.

@@ -26,10 +26,19 @@ pack=$(ls "$out"/packs/sgmp-*-"$engine"/loose-random/n0150-seed1.xyz) || fail "n
 head -1 "$out/report/report.csv" | grep -q ',look,looks,alpha_spent,nominal_alpha,limited_by,pours_to_decide$' \
     || fail "report.csv has no look columns"
 grep -q '^run: look 1: ' "$scratch/log" || fail "no progress line for look 1"
+grep -Eq '^run: done in [0-9.]+ s: [0-9]+ SGMP packs \(([0-9]+) packed and timed now, 0 reused\), [0-9]+ DEM pours, [0-9]+ looks; headline [0-9]+ agree, [0-9]+ differ, [0-9]+ inconclusive; report ' \
+    "$scratch/log" || fail "no closing line: $(tail -n 1 "$scratch/log")"
 
 head -5 "$pack" >"$scratch/short" && cat "$scratch/short" >"$pack"  # header intact, lines lost
 run
 [[ "$(wc -l <"$pack")" == 152 ]] || fail "a truncated pack was reused ($(wc -l <"$pack") lines)"
+# Only the pack made anew carries a time: a reused one was timed by another run.
+grep -Eq '^candidate,loose-random,150,1,[0-9.]+,' "$out/manifest.csv" || fail "the remade pack has no time"
+grep -q '^candidate,loose-random,150,2,,' "$out/manifest.csv" || fail "a reused pack carries its old time"
+grep -Eq '^run: done in .* \(1 packed and timed now, [1-9][0-9]* reused\)' "$scratch/log" \
+    || fail "the closing line does not count the reused packs: $(tail -n 1 "$scratch/log")"
+grep -q 'of [0-9]* packs timed in this run' "$out/report/report.md" \
+    || fail "the report does not say how many packs this run timed"
 
 status=0
 scripts/run --max-seeds 1 --build-dir "$build" 2>"$scratch/err" || status=$?
@@ -51,6 +60,8 @@ scripts/run --blends bimodal --counts 1002 --seeds 1 --modes "loose-random loose
     --frictions 0.5 --out "$out" --build-dir "$build" --no-pictures >"$scratch/log" 2>&1 \
     || { cat "$scratch/log" >&2; fail "scripts/run --blends failed"; }
 [[ -f "$out/blends/bimodal/report/report.md" ]] || fail "no blend report"
+# Progress lines name their pack; none is left in the program's own unnamed form.
+! grep -q '^sgmp: ' "$scratch/log" || fail "an unnamed progress line: $(grep -m1 '^sgmp: ' "$scratch/log")"
 grep -q '^## Per-species verdict matrix' "$out/blends/bimodal/report/report.md" \
     || fail "no per-species verdict matrix in the blend report"
 blend_manifest="$out/blends/bimodal/manifest.csv"

@@ -8,24 +8,27 @@
 namespace sgmp::report {
 namespace {
 
-/// Mean wall seconds of the manifest's packs of `group` at `count` (any role).
-std::optional<double> mean_seconds(const std::vector<ManifestEntry>& manifest,
-                                   const std::string& group, Role role, std::size_t count) {
+/// Mean wall seconds of the manifest's packs of `group` at `count` (any role) over the rows
+/// that give seconds, and how many do: a row without seconds is a pack this run did not time.
+struct TimedMean {
+    std::optional<double> mean;
+    std::size_t timed = 0;
+};
+TimedMean mean_seconds(const std::vector<ManifestEntry>& manifest, const std::string& group,
+                       Role role, std::size_t count) {
     double sum = 0.0;
-    std::size_t n = 0;
+    TimedMean result;
     for (const auto& entry : manifest) {
-        if (entry.role == role && entry.group == group && entry.count == count) {
-            if (!entry.seconds) {
-                return std::nullopt;
-            }
+        if (entry.role == role && entry.group == group && entry.count == count &&
+            entry.seconds) {
             sum += *entry.seconds;
-            ++n;
+            ++result.timed;
         }
     }
-    if (n == 0) {
-        return std::nullopt;
+    if (result.timed > 0) {
+        result.mean = sum / static_cast<double>(result.timed);
     }
-    return sum / static_cast<double>(n);
+    return result;
 }
 
 /// The diameter and the mean starting height (the engine's `start_height` key) of the
@@ -352,7 +355,7 @@ CrossValidation cross_validate(const Report& report, const std::vector<ManifestE
         v.reference = c.reference;
         v.rows = c.rows;
         v.invalid = c.invalid;
-        v.reference_seconds = mean_seconds(manifest, c.reference, Role::Reference, c.count);
+        v.reference_seconds = mean_seconds(manifest, c.reference, Role::Reference, c.count).mean;
     }
     cv.counts.assign(counts.begin(), counts.end());
     cv.dem_parameters = dem_parameter_table(report, cv.references);
@@ -368,7 +371,9 @@ CrossValidation cross_validate(const Report& report, const std::vector<ManifestE
             if (key.first != label) {
                 continue;
             }
-            row.seconds = mean_seconds(manifest, label, Role::Candidate, row.count);
+            const TimedMean timed = mean_seconds(manifest, label, Role::Candidate, row.count);
+            row.seconds = timed.mean;
+            row.timed_packs = timed.timed;
             row.thesis = find_thesis_result(thesis.results, label, row.count);
             row.thesis_start = find_thesis_start(thesis.starts, label, row.count);
             if (row.thesis && row.seconds && *row.seconds > 0.0) {

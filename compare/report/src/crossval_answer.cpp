@@ -147,20 +147,28 @@ std::string stability(const std::vector<const HeadlineRow*>& rows) {
            " contacts per sphere, below the 4 a rigid frictional packing needs.";
 }
 
-/// The mode's time against the pours', saying what is compared.
+/// The mode's time against the pours', saying what is compared: SGMP packs timed by the run
+/// that wrote the manifest (reused packs carry no time), DEM pours by their recorded times.
 std::string pace(const std::vector<const HeadlineRow*>& rows) {
     for (auto it = rows.rbegin(); it != rows.rend(); ++it) {
         const HeadlineRow& row = **it;
         for (const auto& v : row.against) {
             if (row.seconds && v.reference_seconds && v.speedup) {
                 return "Time at N = " + std::to_string(row.count) + ": " +
-                       decimals(*row.seconds, *row.seconds < 1.0 ? 2 : 1) + " s a pack, " +
-                       decimals(*v.reference_seconds, 0) + " s a pour of " + v.reference +
-                       " (recorded times, not one run).";
+                       decimals(*row.seconds, *row.seconds < 1.0 ? 2 : 1) + " s a pack (" +
+                       std::to_string(row.timed_packs) + " of " + std::to_string(row.packs) +
+                       " packs timed in this run), " + decimals(*v.reference_seconds, 0) +
+                       " s a pour of " + v.reference +
+                       " (the pours' recorded times, from another run and load: a ratio of "
+                       "recorded times, not one measurement).";
             }
         }
     }
-    return "";
+    const bool untimed = std::any_of(rows.begin(), rows.end(), [](const HeadlineRow* row) {
+        return row->packs > 0 && row->timed_packs == 0;
+    });
+    return untimed ? "Not timed in this run: its packs were made by an earlier run and reused."
+                   : "";
 }
 
 }  // namespace

@@ -311,7 +311,9 @@ void headline_markdown(std::ostringstream& md, const CrossValidation& cv) {
     md << "SGMP means over seeds; against each DEM class the marks of φ, Z(δ = 10⁻³), "
           "Z(δ = 10⁻²), split ratio, P(Z) at δ = 10⁻³ and g(r) (in that order), the g(r) "
           "ratio (distance over its margin) and the speed-up over the DEM pour. Seconds: mean wall "
-          "time per SGMP pack.\n\n";
+          "time per SGMP pack, of the packs timed by the run that wrote the manifest (a reused "
+          "pack carries no time); the speed-up sets it against the pours' recorded wall times, "
+          "from other runs and loads.\n\n";
     md << "| N | SGMP mode | s | φ | Z(10⁻³) | Z(10⁻²) | split |";
     for (const auto& ref : cv.references) {
         md << " " << ref << ": marks | g(r) ratio | speed-up |";

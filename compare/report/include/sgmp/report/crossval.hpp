@@ -40,7 +40,9 @@ struct HeadlineRow {
     std::string group;
     std::size_t count = 0;
     std::size_t packs = 0;
-    std::optional<double> seconds;  // mean wall seconds per pack
+    std::optional<double> seconds;  // mean wall seconds per pack, of those timed (below)
+    std::size_t timed_packs = 0;    // packs whose manifest row gives seconds (timed by the run
+                                    // that wrote the manifest; reused packs give none)
     double diameter = 0.0;
     std::vector<HeadlineVerdict> against;  // in reference order
     std::optional<ThesisResult> thesis;

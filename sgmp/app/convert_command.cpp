@@ -1,5 +1,6 @@
 #include "convert_command.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -18,6 +19,8 @@
 #include "sgmp/pack/pack_format.hpp"
 #include "sgmp/pack/pack_origin.hpp"
 #include "sgmp/pack/parameter_error.hpp"
+#include "sgmp/pack/particle_density.hpp"
+#include "sgmp/pack/size_modes.hpp"
 #include "sgmp/pack/stated_container.hpp"
 #include "sgmp/pack/text_precision.hpp"
 #include "sgmp/pack/version.hpp"
@@ -121,10 +124,6 @@ OutputFrame output_frame(const ConvertOptions& o) {
         throw UsageError{"--length-scale " + format_number(o.length_scale) +
                          ": name the unit it is in with --length-unit (for example m or um)"};
     }
-    if (!o.length_unit.empty() && o.length_scale == 0.0) {
-        throw UsageError{"--length-unit '" + o.length_unit +
-                         "': give --length-scale, the length of one control-volume side in it"};
-    }
     if (o.origin == "zero" && (o.up == "z" || o.length_scale > 0.0)) {
         throw UsageError{
             "--origin zero: not with --up z or --length-scale yet (it moves the "
@@ -138,6 +137,50 @@ OutputFrame output_frame(const ConvertOptions& o) {
         frame.density = o.density;
     }
     return frame;
+}
+
+/// --length-unit without --length-scale: the scale from the pack's `largest_diameter` (a
+/// physical length, size_modes.hpp) and its diameters in control-volume sides,
+/// L = D_largest · (metres per its unit) / (metres per --length-unit) / d_largest.
+void scale_from_pack(const ConvertOptions& o, const Pack& pack, OutputFrame& frame) {
+    if (o.length_unit.empty() || o.length_scale > 0.0) {
+        return;
+    }
+    const auto stated = parse_physical_length(pack.metadata.get("largest_diameter").value_or(""));
+    const auto to_metres = metres_per_unit(o.length_unit);
+    if (!stated || !to_metres) {
+        throw UsageError{"--length-unit '" + o.length_unit +
+                         "': give --length-scale, the length of one control-volume side in it" +
+                         (stated ? " (or a unit of " + std::string(length_units()) +
+                                       ", to scale by the pack's largest_diameter)"
+                                 : std::string())};
+    }
+    if (pack.metadata.contains("length_scale")) {
+        throw UsageError{"--length-unit '" + o.length_unit +
+                         "': the pack is already in a unit; give --length-scale"};
+    }
+    double largest = 0.0;
+    for (const Particle& p : pack.particles) {
+        largest = std::max(largest, 2.0 * p.radius);
+    }
+    if (!(largest > 0.0)) {
+        throw UsageError{"--length-unit '" + o.length_unit +
+                         "': the pack has no sphere to scale by"};
+    }
+    frame.length_scale = stated->first * *metres_per_unit(stated->second) / *to_metres / largest;
+}
+
+/// --density on a pack that states a density per species would overwrite them all.
+void check_density(const ConvertOptions& o, const Pack& pack) {
+    if (o.density <= 0.0 || pack.metadata.contains("particle_density")) {
+        return;
+    }
+    if (const auto densities = particle_densities(pack); densities && densities_vary(*densities)) {
+        throw UsageError{"--density " + format_number(o.density) +
+                         ": the pack states a density per species (size_modes " +
+                         pack.metadata.get("size_modes").value_or("") +
+                         "); leave --density out to write them"};
+    }
 }
 
 /// --container, parsed by the header key's parser (stated_container.hpp).
@@ -154,7 +197,7 @@ std::optional<StatedContainer> stated_container(const ConvertOptions& o) {
 
 int convert(const ConvertOptions& o) {
     const PackFormat format = output_format(o);
-    const OutputFrame frame = output_frame(o);
+    OutputFrame frame = output_frame(o);
     try {
         check_writable(o.out, o.force);
         if (has_container_file(format)) {
@@ -173,6 +216,8 @@ int convert(const ConvertOptions& o) {
     }
     read_options.container = stated_container(o);
     PackRead read = read_pack_file(o.in, read_options);
+    scale_from_pack(o, read.pack, frame);  // option errors before any warning
+    check_density(o, read.pack);
     for (const std::string& warning : read.warnings) {
         std::fprintf(stderr, "sgmp convert: warning: %s: %s\n", o.in.c_str(), warning.c_str());
     }

@@ -108,7 +108,7 @@ void read_size_distribution(const Options& o, PackRequest& request) {
         set_pack_parameter(request, "size_distribution", path);
         return;
     }
-    request.size_modes = cli::read_size_distribution_file(path);
+    request.size_modes = cli::read_size_distribution_file(path, &request.largest_diameter);
     request.size_distribution = path;
 }
 

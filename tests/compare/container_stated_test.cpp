@@ -281,6 +281,18 @@ BOOST_AUTO_TEST_CASE(measure_refuses_an_unreached_box_and_takes_stated_walls) {
     BOOST_TEST(outside.err.find("lies outside the container '-0.5 0.625") != std::string::npos);
 }
 
+BOOST_AUTO_TEST_CASE(measure_refuses_a_box_periodic_on_every_axis) {
+    // pp pp pp: no floor for the bed's metrics; refused in one line, status 1, nothing written.
+    write("all-periodic.dump",
+          "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp pp\n"
+          "0 6\n0 6\n0 6\nITEM: ATOMS id x y z radius\n1 1 1.3 1 0.5\n2 3 4.3 3 0.5\n");
+    const auto refused = run(kCompare, "measure all-periodic.dump --out m-periodic");
+    BOOST_TEST(refused.status == 1);
+    BOOST_TEST(refused.err.find("periodic in y too") != std::string::npos, refused.err);
+    BOOST_TEST(std::count(refused.err.begin(), refused.err.end(), '\n') == 1);
+    BOOST_TEST(!fs::exists(cli_scratch() / "m-periodic"));
+}
+
 BOOST_AUTO_TEST_CASE(crossval_takes_the_walls_from_the_option_or_the_manifest) {
     prepare();
     write("originals.csv", manifest("o-", ".xyz.gz", ""));

@@ -110,7 +110,7 @@ BOOST_AUTO_TEST_CASE(size_distribution_files_are_read_and_checked) {
     BOOST_TEST(modes.err.find("sgmp: warning: --size-modes 1:0.3,0.5:0.3: fractions sum to 0.6; "
                               "normalised to 1\n") == 0u);
     const std::string pack = sgmp::testing::read_bytes(s.path("b.xyz"));
-    BOOST_TEST(pack.find(":species_id:I:1 ") != std::string::npos);
+    BOOST_TEST(pack.find(":species_id:I:1:masses:R:1 ") != std::string::npos);  // densities stated
     BOOST_TEST(pack.find(" fraction_basis=mass ") != std::string::npos);
     BOOST_TEST(pack.find(" species_mass_fractions=") != std::string::npos);
     expect_bad_file(s, write("colour.csv", "diameter,fraction,colour\n1,1,2\n"),
@@ -137,7 +137,7 @@ BOOST_AUTO_TEST_CASE(lognormal_distributions_pack_into_equal_classes) {
     BOOST_TEST(ok.status == 0, ok.err);
     const std::string pack = sgmp::testing::read_bytes(s.path("l.xyz"));
     BOOST_TEST(pack.find(" size_distribution=lognormal:200:0.3:5 ") != std::string::npos);
-    BOOST_TEST(pack.find(":species_id:I:1 ") != std::string::npos);
+    BOOST_TEST(pack.find(":species_id:I:1:masses:R:1 ") != std::string::npos);  // densities stated
     expect_refused(s, "--count 100 --size-distribution lognormal:200:-1",
                    "--size-distribution lognormal:200:-1: SIGMA must lie in (0, 3]");
     expect_refused(s, "--count 100 --size-distribution lognormal:200:0.3:0",

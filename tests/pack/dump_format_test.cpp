@@ -4,6 +4,10 @@
 #include <cmath>
 #include <sstream>
 
+#include "sgmp/pack/lammps_data_format.hpp"
+#include "sgmp/pack/pack_file.hpp"
+#include "sgmp/pack/xyz_format.hpp"
+
 #include "test_support.hpp"
 
 using namespace sgmp;
@@ -144,6 +148,35 @@ BOOST_AUTO_TEST_CASE(a_claimed_count_allocates_nothing_before_its_lines_arrive) 
         BOOST_TEST(read_error(claim) ==
                    "pour.dump:11: file ends after 2 of " + count + " atom lines of timestep 1000");
     }
+}
+
+BOOST_AUTO_TEST_CASE(a_box_periodic_on_every_axis_keeps_its_y_extent_in_every_output) {
+    // A fully periodic box (pp pp pp, 0..6 on every axis) has no floor and no top: every writer
+    // keeps y at 0..6, not the spheres' reach (y from 0.8 to 4.8 here).
+    const std::string text =
+        "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp pp\n"
+        "0 6\n0 6\n0 6\nITEM: ATOMS id x y z radius\n1 1 1.3 1 0.5\n2 3 4.3 3 0.5\n";
+    const sgmp::testing::TestDirectory directory("dump_format_periodic");
+    sgmp::testing::write_text(directory.path() / "periodic.dump", text);
+    const Pack pack = read_pack_file(directory.path() / "periodic.dump");  // as convert reads
+    BOOST_TEST(*pack.metadata.get("periodic_y") == "0 6");
+    BOOST_TEST(*pack.metadata.get("container_from") == "periodic box");
+
+    std::ostringstream xyz;
+    write_xyz(xyz, pack);
+    BOOST_TEST(xyz.str().find("Lattice=\"6 0 0 0 6 0 0 0 6\" Origin=\"0 0 0\" pbc=\"T T T\"") !=
+               std::string::npos);
+    std::istringstream xyz_in(xyz.str());
+    const Pack again = read_xyz(xyz_in, "periodic.xyz");
+    BOOST_TEST(*again.metadata.get("periodic_y") == "0 6");
+
+    std::ostringstream data;
+    write_lammps_data(data, again);
+    BOOST_TEST(data.str().find("0 6 ylo yhi") != std::string::npos);
+    std::ostringstream dump;
+    write_dump_custom(dump, again);
+    BOOST_TEST(dump.str().find("ITEM: BOX BOUNDS pp pp pp") != std::string::npos);
+    BOOST_TEST(dump.str().find("\n0 6\n0 6\n0 6\n") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -173,6 +173,16 @@ BOOST_AUTO_TEST_CASE(value_colouring_and_its_key) {
     for (const char* label : {"\"Z\"", "\"gap <= 1e-3 d\"", "\"0\"", "\"3\"", "\"6\"", " d\""}) {
         BOOST_TEST(scene.find(label) != std::string::npos, label);
     }
+    // A fixed range shared by several pictures: 6 on 0..12 is viridis' middle, not its end.
+    o.value_limits = std::pair{0.0, 12.0};
+    const std::string fixed = povray_scene(pack, o);
+    BOOST_TEST(fixed.find(colour_of(height_color(0.5))) != std::string::npos);
+    BOOST_TEST(fixed.find("\"12\"") != std::string::npos);
+    for (const auto& bad : {std::pair{1.0, 1.0}, std::pair{0.0, std::nan("")}}) {
+        o.value_limits = bad;
+        BOOST_CHECK_THROW(povray_scene(pack, o), std::invalid_argument);
+    }
+    o.value_limits.reset();
     o.values.pop_back();
     BOOST_CHECK_THROW(povray_scene(pack, o), std::invalid_argument);
     SceneOptions plain;

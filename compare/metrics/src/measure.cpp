@@ -167,6 +167,11 @@ Container container_of(const Pack& pack, std::string* source) {
         const auto from = pack.metadata.get("container_from");
         *source = !pack.metadata.get("container") ? "thesis default" : from ? *from : "metadata";
     }
+    if (pack.metadata.contains("periodic_y")) {
+        throw std::invalid_argument(
+            "the pack is periodic in y too (periodic_y): it has no floor, and the metrics "
+            "measure a bed on one");
+    }
     return sgmp::container_of(pack);
 }
 

@@ -19,8 +19,7 @@ TimedMean mean_seconds(const std::vector<ManifestEntry>& manifest, const std::st
     double sum = 0.0;
     TimedMean result;
     for (const auto& entry : manifest) {
-        if (entry.role == role && entry.group == group && entry.count == count &&
-            entry.seconds) {
+        if (entry.role == role && entry.group == group && entry.count == count && entry.seconds) {
             sum += *entry.seconds;
             ++result.timed;
         }

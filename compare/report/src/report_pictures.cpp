@@ -11,6 +11,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "sgmp/metrics/measure.hpp"
+#include "sgmp/metrics/sphere_values.hpp"
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/pack/version.hpp"
 #include "sgmp/render/povray.hpp"
@@ -62,6 +64,12 @@ std::string read_bytes(const fs::path& path) {
     bytes << in.rdbuf();
     return bytes.str();
 }
+
+/// Gap tolerance of the pictures' coordination, over the mean diameter (the report's Z(10⁻³)).
+constexpr double kPictureContactGap = 1e-3;
+/// The colour scale's top is the largest Z pictured, never below 6 (a frictionless packing's
+/// isostatic count), so that SGMP's Z near 3 reads as low against DEM's 5–6.
+constexpr double kLeastTopOfScale = 6.0;
 
 std::string caption(const PictureChoice& c) {
     return (c.reference ? "" : "SGMP ") + c.group + ", seed " + std::to_string(c.seed);
@@ -120,7 +128,10 @@ PictureSet render_pictures(const std::vector<PictureChoice>& choices, int size) 
     options.height = size;
     options.view = render::View{35.0, 30.0};
     options.cut = *render::parse_cut("half");
-    options.coloring = render::Coloring::Height;  // layering shows; random bins showed nothing
+    // Coloured by coordination, the gap between SGMP and DEM that matters (Z(10⁻³)), on one
+    // scale for every picture: 0 to the largest Z pictured (at least 6).
+    options.coloring = render::Coloring::Values;
+    options.caption = {"Z", "gap <= 1e-3 d"};
     options.key_text = render::key_font_found();
     std::string scratch_name = (fs::temp_directory_path() / "sgmp-pictures-XXXXXX").string();
     if (::mkdtemp(scratch_name.data()) == nullptr) {
@@ -129,21 +140,36 @@ PictureSet render_pictures(const std::vector<PictureChoice>& choices, int size) 
     }
     const fs::path scratch(scratch_name);
     try {
+        std::vector<Pack> packs;
+        std::vector<std::vector<double>> coordination;
+        double z_top = kLeastTopOfScale;
         for (const auto& c : choices) {
             ReadOptions read;
             read.container = c.container;
-            const Pack pack = read_pack_file(c.path, read).pack;
+            packs.push_back(read_pack_file(c.path, read).pack);
+            coordination.push_back(metrics::sphere_contact_numbers(
+                packs.back().particles, metrics::container_of(packs.back()), kPictureContactGap));
+            for (const double z : coordination.back()) {
+                z_top = std::max(z_top, z);
+            }
+        }
+        options.value_limits = std::pair{0.0, z_top};
+        for (std::size_t i = 0; i < choices.size(); ++i) {
+            const PictureChoice& c = choices[i];
             options.provenance = "pack: " + c.path;
+            options.values = coordination[i];
             render::RenderJob job;
-            job.scene = render::povray_scene(pack, options);
+            job.scene = render::povray_scene(packs[i], options);
             job.width = size;
             job.height = size;
             job.out = scratch / "picture.png";
             job.overwrite = true;
-            job.texts = {
-                {"Software", "sgmp-compare crossval " + std::string(sgmp::version())},
-                {"Source", c.path},
-                {"Comment", caption(c) + "; view 35,30; half cut away; coloured by height"}};
+            job.texts = {{"Software", "sgmp-compare crossval " + std::string(sgmp::version())},
+                         {"Source", c.path},
+                         {"Comment", caption(c) +
+                                         "; view 35,30; half cut away; coloured by coordination "
+                                         "Z (gap <= 1e-3 d), 0 to " +
+                                         std::to_string(static_cast<int>(z_top))}};
             render::render_png(*povray, job);
             set.files.emplace_back(c.file, read_bytes(job.out));
         }
@@ -169,9 +195,11 @@ std::string pictures_markdown(const std::vector<PictureChoice>& choices, const P
        << choices.front().count
        << ", seen from azimuth 35°, elevation 30°, with the half nearer the camera cut away "
           "(spheres whose centre lies in front of the vertical plane through the container's "
-          "axis are not drawn), so the cut face shows the inside; spheres coloured by height "
-          "(viridis: dark at the floor, yellow at the pack's top), the container outlined up "
-          "to the top. Rendered with POV-Ray; each picture opens at full size.\n\n";
+          "axis are not drawn), so the cut face shows the inside; spheres coloured by their "
+          "coordination Z, the spheres within 10⁻³·d of them (viridis on one scale for every "
+          "picture, from 0 to the largest Z pictured: dark for few contacts, yellow for many; "
+          "the key on the right), the container outlined up to the top. Rendered with "
+          "POV-Ray; each picture opens at full size.\n\n";
     md << "|";
     for (const auto& c : choices) {
         md << " " << caption(c) << " |";

@@ -12,7 +12,8 @@
 
 namespace sgmp::cli {
 
-std::vector<SizeMode> read_size_distribution_file(const std::string& path) {
+std::vector<SizeMode> read_size_distribution_file(const std::string& path,
+                                                  std::string* largest_diameter) {
     std::ifstream in(path, std::ios::binary);
     if (!std::filesystem::is_regular_file(path) || !in) {
         throw UsageError("--size-distribution " + path + ": must name a readable file");
@@ -20,7 +21,7 @@ std::vector<SizeMode> read_size_distribution_file(const std::string& path) {
     std::ostringstream text;
     text << in.rdbuf();
     try {
-        return parse_size_distribution_csv(text.str(), path);
+        return parse_size_distribution_csv(text.str(), path, largest_diameter);
     } catch (const InputError& e) {  // a bad input file: exit 1 (docs/command-line.md)
         throw std::runtime_error(std::string("--size-distribution ") + e.what());
     }

@@ -231,6 +231,26 @@ std::vector<Row> count_and_request_rows() {
         "equal fraction, each of its class's median diameter",
         [](auto& r) -> auto& { return r.size_modes; },
         [](auto& r) -> auto& { return r.size_distribution; }));
+    Row largest;
+    largest.name = "largest_diameter";
+    largest.group = "request";
+    largest.kind = ValueKind::Text;
+    largest.help =
+        "the largest species' diameter in a physical unit, e.g. '200 um' (set by a "
+        "--size-distribution CSV whose diameter column names its unit, diameter_um); sgmp "
+        "convert --length-unit then needs no --length-scale";
+    largest.rule = "must be 'VALUE UNIT', VALUE > 0, UNIT one of " + std::string(length_units());
+    largest.parse = [](PackRequest& r, std::string_view text) {
+        if (!parse_physical_length(text)) {
+            return false;
+        }
+        r.largest_diameter = std::string(text);
+        return true;
+    };
+    largest.format = [](const PackRequest& r) { return r.largest_diameter; };
+    largest.recorded = [](const PackRequest& r) { return !r.largest_diameter.empty(); };
+    largest.unset_by_default = true;
+    rows.push_back(std::move(largest));
     Row basis = choice(
         "fraction_basis", "request", [](auto& r) -> auto& { return r.fraction_basis; },
         [] { return fraction_bases(); },

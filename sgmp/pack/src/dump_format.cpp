@@ -183,6 +183,10 @@ Pack read_snapshot(LineReader& reader) {
     set_stated_container(flags, bounds_item, reader, pack);
     if (periodic) {
         pack.metadata.set("sides", "periodic");
+        if (flags[1] == "pp") {  // fully periodic: no floor, the box's y extent kept
+            const auto bounds = detail::split_fields(box);  // xlo xhi ylo yhi zlo zhi
+            pack.metadata.set("periodic_y", std::string(bounds[2]) + ' ' + std::string(bounds[3]));
+        }
     }
     // The count is only a claim until the lines arrive (see read_xyz_lines).
     pack.particles.reserve(static_cast<std::size_t>(std::min<std::int64_t>(count, 1 << 16)));

@@ -3,6 +3,7 @@
 #include "sgmp/pack/atom_types.hpp"
 #include "sgmp/pack/dump_format.hpp"
 #include "sgmp/pack/pack_extent.hpp"
+#include "sgmp/pack/particle_density.hpp"
 #include "text_fields.hpp"
 
 namespace sgmp {
@@ -30,7 +31,10 @@ void write_dump_custom(std::ostream& out, const Pack& pack) {
         out << format_number(box.lo[k]) << ' ' << format_number(box.hi[k]) << '\n';
     }
     const bool species = has_species(pack.particles);
-    out << "ITEM: ATOMS id type x y z radius bin" << (species ? " species" : "") << '\n';
+    // A mass column where the pack states densities (particle_density.hpp), in the file's units.
+    const auto densities = particle_densities(pack);
+    out << "ITEM: ATOMS id type x y z radius bin" << (species ? " species" : "")
+        << (densities ? " mass" : "") << '\n';
     for (std::size_t i = 0; i < pack.particles.size(); ++i) {
         const Particle& p = pack.particles[i];
         out << p.id << ' ' << types.type[i] << ' ' << format_number(p.center.x()) << ' '
@@ -38,6 +42,9 @@ void write_dump_custom(std::ostream& out, const Pack& pack) {
             << format_number(p.radius) << ' ' << p.color;
         if (species) {
             out << ' ' << p.species;
+        }
+        if (densities) {
+            out << ' ' << format_number(sphere_mass((*densities)[i], p.radius));
         }
         out << '\n';
     }

@@ -9,6 +9,7 @@
 
 #include "sgmp/pack/atom_types.hpp"
 #include "sgmp/pack/pack_extent.hpp"
+#include "sgmp/pack/particle_density.hpp"
 #include "text_fields.hpp"
 
 namespace sgmp {
@@ -32,11 +33,29 @@ void write_lammps_data(std::ostream& out, const Pack& pack) {
     for (const auto& [key, value] : pack.metadata.entries()) {
         out << "# " << key << '=' << value << '\n';
     }
-    const double density =
-        pack.metadata.get_number("particle_density").value_or(kLammpsDataDensity);
+    // The density of each sphere (particle_density.hpp): LAMMPS' mass is density * (pi/6) * d^3.
+    const auto stated = particle_densities(pack);
+    const std::vector<double> density =
+        stated.value_or(std::vector<double>(pack.particles.size(), kLammpsDataDensity));
     const std::string unit = pack.metadata.get("length_unit").value_or("control-volume sides");
-    out << "# density " << format_number(density)
-        << ": mass = density * (pi/6) * diameter^3, lengths in " << unit << '\n';
+    if (stated && densities_vary(*stated)) {
+        out << "# density per species (size_modes): mass = density * (pi/6) * diameter^3, "
+               "lengths in "
+            << unit << '\n';
+    } else {
+        out << "# density " << format_number(density.empty() ? kLammpsDataDensity : density[0])
+            << ": mass = density * (pi/6) * diameter^3, lengths in " << unit << '\n';
+    }
+    // LAMMPS' default neighbour skin is 0.3 (units lj) or 0.001 m (units si): many spheres
+    // of a pack scaled to micrometres, so the neighbour lists overflow. A tenth of the
+    // smallest diameter keeps them short.
+    double smallest = 0.0;
+    for (const Particle& p : pack.particles) {
+        smallest = smallest == 0.0 ? 2.0 * p.radius : std::min(smallest, 2.0 * p.radius);
+    }
+    out << "# LAMMPS neighbor " << format_number(0.1 * smallest)
+        << " bin: a skin of 0.1 * the smallest diameter (the default 0.3 of units lj, "
+           "0.001 of units si, spans many spheres: \"Neighbor list overflow\")\n";
     out << "# LAMMPS boundary";
     for (const bool periodic : periodic_axes(pack)) {
         out << (periodic ? " p" : " f");
@@ -53,7 +72,7 @@ void write_lammps_data(std::ostream& out, const Pack& pack) {
     for (std::size_t i = 0; i < pack.particles.size(); ++i) {
         const Particle& p = pack.particles[i];
         out << p.id << ' ' << types.type[i] << ' ' << format_number(2.0 * p.radius) << ' '
-            << format_number(density) << ' ' << format_number(p.center.x()) << ' '
+            << format_number(density[i]) << ' ' << format_number(p.center.x()) << ' '
             << format_number(p.center.y()) << ' ' << format_number(p.center.z()) << " # bin "
             << p.color;
         if (species) {

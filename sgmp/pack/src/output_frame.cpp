@@ -41,6 +41,9 @@ Pack in_output_frame(const Pack& pack, const OutputFrame& frame) {
         const Container scaled{scale * c.x_min, scale * c.x_max, scale * c.z_min, scale * c.z_max,
                                scale * c.floor};
         out.metadata.set("container", scaled.to_string());
+        if (const auto y = periodic_y_extent(pack)) {
+            out.metadata.set("periodic_y", periodic_y_text(scale * y->first, scale * y->second));
+        }
         for (Particle& p : out.particles) {
             p.center *= scale;
             p.radius *= scale;

@@ -1,9 +1,12 @@
 #include "sgmp/pack/pack_extent.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+
+#include "sgmp/pack/metadata.hpp"
 
 namespace sgmp {
 
@@ -42,6 +45,10 @@ Box container_box(const Pack& pack) {
     }
     const Container container = container_of(pack);
     Box box = container.box_up_to(top_of(pack, container));
+    if (const auto y = periodic_y_extent(pack)) {
+        box.lo.y() = y->first;
+        box.hi.y() = y->second;
+    }
     for (const auto& p : pack.particles) {
         box.lo = box.lo.cwiseMin(p.center);
         box.hi = box.hi.cwiseMax(p.center);
@@ -53,8 +60,32 @@ std::array<bool, 3> periodic_axes(const Pack& pack) {
     if (!container_of(pack).periodic) {
         return {false, false, false};
     }
+    if (pack.metadata.contains("periodic_y")) {
+        return {true, true, true};  // a fully periodic cell
+    }
     const bool z_up = pack.metadata.get("up_axis").value_or("y") == "z";
     return {true, z_up, !z_up};
+}
+
+std::optional<std::pair<double, double>> periodic_y_extent(const Pack& pack) {
+    const auto text = pack.metadata.get("periodic_y");
+    if (!text) {
+        return std::nullopt;
+    }
+    std::istringstream in(*text);
+    double lo = 0.0;
+    double hi = 0.0;
+    std::string rest;
+    in >> lo >> hi;
+    if (in.fail() || (in >> rest) || !std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi)) {
+        throw std::invalid_argument("periodic_y '" + *text +
+                                    "': expected 'ylo yhi', finite, lo < hi");
+    }
+    return std::pair{lo, hi};
+}
+
+std::string periodic_y_text(double lo, double hi) {
+    return format_number(lo) + ' ' + format_number(hi);
 }
 
 }  // namespace sgmp

@@ -152,8 +152,35 @@ std::vector<SizeMode> lognormal_modes(std::string_view text) {
     return modes;
 }
 
-std::vector<SizeMode> parse_size_distribution_csv(std::string_view text,
-                                                  const std::string& source) {
+std::string_view length_units() {
+    return "m, cm, mm, um, nm";
+}
+
+std::optional<double> metres_per_unit(std::string_view unit) {
+    return unit == "m"    ? std::optional(1.0)
+           : unit == "cm" ? std::optional(1e-2)
+           : unit == "mm" ? std::optional(1e-3)
+           : unit == "um" ? std::optional(1e-6)
+           : unit == "nm" ? std::optional(1e-9)
+                          : std::nullopt;
+}
+
+std::optional<std::pair<double, std::string>> parse_physical_length(std::string_view text) {
+    const auto space = text.find(' ');
+    if (space == std::string_view::npos) {
+        return std::nullopt;
+    }
+    const auto value = parse_csv_number<double>(std::string(text.substr(0, space)));
+    const std::string unit(text.substr(space + 1));
+    if (!value || !(*value > 0.0) || !std::isfinite(*value) || !metres_per_unit(unit)) {
+        return std::nullopt;
+    }
+    return std::pair{*value, unit};
+}
+
+std::vector<SizeMode> parse_size_distribution_csv(std::string_view text, const std::string& source,
+                                                  std::string* largest_diameter) {
+    std::string diameter_unit;
     std::vector<std::string> header;
     int diameter = -1;
     int fraction = -1;
@@ -179,7 +206,17 @@ std::vector<SizeMode> parse_size_distribution_csv(std::string_view text,
         if (header.empty()) {
             header = *fields;
             for (std::size_t c = 0; c < header.size(); ++c) {
-                const std::string& name = header[c];
+                std::string name = header[c];
+                if (name.rfind("diameter_", 0) == 0) {  // diameter_UNIT: the unit stated
+                    diameter_unit = name.substr(9);
+                    if (!metres_per_unit(diameter_unit)) {
+                        throw InputError(source, number,
+                                         "column '" + name +
+                                             "': the diameter's unit must be one of " +
+                                             std::string(length_units()));
+                    }
+                    name = "diameter";
+                }
                 int* slot = name == "diameter"   ? &diameter
                             : name == "fraction" ? &fraction
                             : name == "density"  ? &density
@@ -187,8 +224,10 @@ std::vector<SizeMode> parse_size_distribution_csv(std::string_view text,
                 if (slot == nullptr) {
                     throw InputError(source, number,
                                      "unknown column '" + name +
-                                         "': the columns are diameter, fraction and "
-                                         "optionally density");
+                                         "': the columns are diameter (or diameter_UNIT, UNIT "
+                                         "one of " +
+                                         std::string(length_units()) +
+                                         "), fraction and optionally density");
                 }
                 if (*slot >= 0) {
                     throw InputError(source, number, "names '" + name + "' twice");
@@ -252,6 +291,9 @@ std::vector<SizeMode> parse_size_distribution_csv(std::string_view text,
     }
     for (SizeMode& m : modes) {
         m.relative_diameter /= largest;  // only ratios matter: the largest is 1
+    }
+    if (largest_diameter != nullptr && !diameter_unit.empty()) {
+        *largest_diameter = format_number(largest) + " " + diameter_unit;
     }
     return modes;
 }

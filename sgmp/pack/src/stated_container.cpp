@@ -134,6 +134,9 @@ void settle_container(Pack& pack, const std::optional<StatedContainer>& stated,
         }
         walls = *own;
         from = pack.metadata.get("container_from").value_or("header");  // not recorded
+    } else if (file_box && pack.metadata.contains("periodic_y")) {
+        walls = *file_box;  // fully periodic: the box is the cell, its y lower bound no floor
+        from = "periodic box";
     } else if (file_box) {
         Container box = *file_box;
         box.periodic = periodic_sides(pack);

@@ -11,6 +11,7 @@
 #include "sgmp/pack/header_entry.hpp"
 #include "sgmp/pack/pack_extent.hpp"
 #include "sgmp/pack/parallel.hpp"
+#include "sgmp/pack/particle_density.hpp"
 #include "text_fields.hpp"
 
 namespace sgmp {
@@ -20,6 +21,8 @@ constexpr std::string_view kProperties = "id:I:1:pos:R:3:radius:R:1:bin:I:1";
 /// The species of a blend (particle.hpp). Not `species`: in extended XYZ that is the
 /// chemical-symbol column (ASE reads it as element symbols and fails on numbers).
 constexpr std::string_view kSpeciesProperty = ":species_id:I:1";
+/// ASE reads (and writes) the `masses` column as the atoms' masses.
+constexpr std::string_view kMassProperty = ":masses:R:1";
 
 /// Most columns a particle line may declare in all; far above any real file, and small
 /// enough that column positions and the line width never overflow an int.
@@ -473,7 +476,7 @@ std::string pbc_text(const Pack& pack) {
 /// The cell written as Lattice and Origin: the container from the floor to the top (not
 /// widened: a pack's own cell), or the output frame's box (output_frame.hpp).
 Box written_xyz_box(const Pack& pack) {
-    if (pack.metadata.contains("box")) {
+    if (pack.metadata.contains("box") || pack.metadata.contains("periodic_y")) {
         return container_box(pack);
     }
     const Container c = container_of(pack);
@@ -524,6 +527,10 @@ PackRead read_frame(const std::string& count_line, std::size_t frame, const Read
         };
         if (flags.size() == 3 && on(flags[0]) && on(flags[2])) {
             read.pack.metadata.set("sides", "periodic");
+            if (on(flags[1]) && lattice.size() == 9) {  // fully periodic: no floor
+                const double oy = origin.size() == 3 ? origin[1] : 0.0;
+                read.pack.metadata.set("periodic_y", periodic_y_text(oy, oy + lattice[4]));
+            }
         }
     }
     take_cell(lattice, origin, read);
@@ -545,16 +552,18 @@ char* append(char* line, char* end, T value) {
     return std::to_chars(line, end, value).ptr;
 }
 
-/// The particle lines "id x y z radius bin [species]", formatted into a block of memory that is
-/// written whenever it fills: one stream call per block instead of eleven per particle.
-void write_particle_lines(std::ostream& out, const std::vector<Particle>& particles, bool species) {
+/// The particle lines "id x y z radius bin [species] [mass]", formatted into a block of memory
+/// that is written whenever it fills: one stream call per block instead of eleven per particle.
+void write_particle_lines(std::ostream& out, const std::vector<Particle>& particles, bool species,
+                          const std::vector<double>* densities) {
     constexpr std::size_t kBlock = 1 << 16;
-    constexpr std::size_t kLongestLine = 7 * 32;  // seven numbers of at most 24 characters each
+    constexpr std::size_t kLongestLine = 8 * 32;  // eight numbers of at most 24 characters each
     std::vector<char> block(kBlock + kLongestLine);
     char* const begin = block.data();
     char* const end = begin + block.size();
     char* at = begin;
-    for (const auto& p : particles) {
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const Particle& p = particles[i];
         at = append(at, end, p.id);
         for (const double value : {p.center.x(), p.center.y(), p.center.z(), p.radius}) {
             *at++ = ' ';
@@ -565,6 +574,10 @@ void write_particle_lines(std::ostream& out, const std::vector<Particle>& partic
         if (species) {
             *at++ = ' ';
             at = append(at, end, p.species);
+        }
+        if (densities != nullptr) {
+            *at++ = ' ';
+            at = append(at, end, sphere_mass((*densities)[i], p.radius));
         }
         *at++ = '\n';
         if (static_cast<std::size_t>(at - begin) >= kBlock) {
@@ -581,10 +594,11 @@ void write_xyz(std::ostream& out, const Pack& pack) {
     const Box box = written_xyz_box(pack);
     out << pack.particles.size() << '\n';
     const bool species = has_species(pack.particles);
-    out << "Properties=" << kProperties << (species ? kSpeciesProperty : "") << " Lattice=\""
-        << lattice_text(box) << "\" Origin=\"" << format_number(box.lo.x()) << ' '
-        << format_number(box.lo.y()) << ' ' << format_number(box.lo.z()) << "\" pbc=\""
-        << pbc_text(pack) << "\"";
+    const auto densities = particle_densities(pack);  // a mass column where they are stated
+    out << "Properties=" << kProperties << (species ? kSpeciesProperty : "")
+        << (densities ? kMassProperty : "") << " Lattice=\"" << lattice_text(box) << "\" Origin=\""
+        << format_number(box.lo.x()) << ' ' << format_number(box.lo.y()) << ' '
+        << format_number(box.lo.z()) << "\" pbc=\"" << pbc_text(pack) << "\"";
     if (!pack.metadata.contains("container")) {  // the walls, always (stated_container.hpp)
         out << " container=\"" << container_of(pack).to_string() << '"';
     }
@@ -601,7 +615,7 @@ void write_xyz(std::ostream& out, const Pack& pack) {
         }
     }
     out << '\n';
-    write_particle_lines(out, pack.particles, species);
+    write_particle_lines(out, pack.particles, species, densities ? &*densities : nullptr);
 }
 
 Pack read_xyz(std::istream& in, const std::string& source) {

@@ -88,7 +88,7 @@ void read_size_distribution(PackRequest& r, const py::handle& value) {
     }
     std::ostringstream content;
     content << in.rdbuf();
-    r.size_modes = sgmp::parse_size_distribution_csv(content.str(), spec);
+    r.size_modes = sgmp::parse_size_distribution_csv(content.str(), spec, &r.largest_diameter);
     r.size_distribution = spec;
 }
 

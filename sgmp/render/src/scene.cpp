@@ -95,9 +95,17 @@ OverlayFrame overlay_frame(const Camera& c, const SceneOptions& o) {
     return f;
 }
 
-/// The colour range of the caller's values: the q and 1 − q quantiles (nearest rank) of the
-/// finite ones, [lo, hi] with hi > lo.
-std::pair<double, double> value_range(const std::vector<double>& values, double q) {
+/// The colour range of the caller's values: the range the caller fixed, else the q and
+/// 1 − q quantiles (nearest rank) of the finite ones, [lo, hi] with hi > lo.
+std::pair<double, double> value_range(const std::vector<double>& values, double q,
+                                      const std::optional<std::pair<double, double>>& fixed) {
+    if (fixed) {
+        if (!std::isfinite(fixed->first) || !std::isfinite(fixed->second) ||
+            fixed->second <= fixed->first) {
+            throw std::invalid_argument("the fixed colour range must be finite with hi > lo");
+        }
+        return *fixed;
+    }
     std::vector<double> finite;
     for (const double v : values) {
         if (std::isfinite(v)) {
@@ -136,7 +144,7 @@ LegendContent legend_content(const Pack& pack, const SceneOptions& o, double flo
     } else if (o.coloring == Coloring::Values) {
         c.caption = o.caption;
         c.bar = true;
-        std::tie(c.lo, c.hi) = value_range(o.values, o.clip_quantile);
+        std::tie(c.lo, c.hi) = value_range(o.values, o.clip_quantile, o.value_limits);
     } else if (o.coloring == Coloring::Species) {
         c.caption = {"species"};
         int species = 1;
@@ -228,7 +236,7 @@ void write_spheres(std::ostream& out, const Pack& pack, const std::vector<std::s
                    const SceneOptions& o, double floor, double top) {
     out << "#declare Shade = finish { ambient 0.10 diffuse 0.75 specular 0.35 roughness 0.015 "
            "}\n";
-    const auto [lo, hi] = value_range(o.values, o.clip_quantile);
+    const auto [lo, hi] = value_range(o.values, o.clip_quantile, o.value_limits);
     if (o.coloring == Coloring::Bin || o.coloring == Coloring::Species) {
         for (int bin = 0; bin < kBinColors; ++bin) {
             out << "#declare Bin" << bin << " = texture { pigment { color " << rgb(bin_color(bin))

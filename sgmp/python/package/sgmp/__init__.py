@@ -115,6 +115,7 @@ def _given(options: Dict[str, Any]) -> Dict[str, Any]:
 def pack(count: int, arrangement: str, seed: Optional[int] = None, *,
          phi_target: Optional[float] = None, size_modes: Optional[str] = None,
          size_distribution: Optional[str] = None, fraction_basis: Optional[str] = None,
+         largest_diameter: Optional[str] = None,
          drop_order: Optional[str] = None, sides: Optional[str] = None,
          circle_factor: Optional[float] = None, sweep_positions: Optional[int] = None,
          sweep_stages: Optional[Union[str, Sequence[int]]] = None,
@@ -144,6 +145,8 @@ def pack(count: int, arrangement: str, seed: Optional[int] = None, *,
     - size_distribution: a CSV file (header diameter,fraction[,density], one row per
       species) or 'lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]]' (not with size_modes)
     - fraction_basis: what the fractions mean: 'number', 'volume' or 'mass'
+    - largest_diameter: the largest species' diameter in a physical unit, '200 um' (set
+      by a size_distribution CSV whose diameter column names its unit, diameter_um)
     - drop_order: a blend's drop order: 'stratified' (the default: each species at its
       share in every run of drops) or 'shuffled'
     - sides: 'walls' (the thesis' container) or 'periodic' (x and z periodic, the floor
@@ -168,7 +171,8 @@ def pack(count: int, arrangement: str, seed: Optional[int] = None, *,
     """
     return _sgmp.pack(count, arrangement, seed, progress, **_given(dict(
         phi_target=phi_target, size_modes=size_modes, size_distribution=size_distribution,
-        fraction_basis=fraction_basis, drop_order=drop_order, sides=sides,
+        fraction_basis=fraction_basis, largest_diameter=largest_diameter,
+        drop_order=drop_order, sides=sides,
         circle_factor=circle_factor,
         sweep_positions=sweep_positions,
         sweep_stages=sweep_stages, lower_neighbours=lower_neighbours, gap=gap, fall=fall,
@@ -185,12 +189,14 @@ def pack(count: int, arrangement: str, seed: Optional[int] = None, *,
 def arrange(count: int, arrangement: str, seed: Optional[int] = None, *,
             phi_target: Optional[float] = None, size_modes: Optional[str] = None,
             size_distribution: Optional[str] = None, fraction_basis: Optional[str] = None,
+            largest_diameter: Optional[str] = None,
             drop_order: Optional[str] = None, sides: Optional[str] = None) -> Pack:
     """The starting arrangement itself (as `sgmp arrange`): `count` spheres of
     `arrangement` before the protocol; options as sgmp.pack."""
     return _sgmp.arrange(count, arrangement, seed, **_given(dict(
         phi_target=phi_target, size_modes=size_modes, size_distribution=size_distribution,
-        fraction_basis=fraction_basis, drop_order=drop_order, sides=sides)))
+        fraction_basis=fraction_basis, largest_diameter=largest_diameter,
+        drop_order=drop_order, sides=sides)))
 
 
 def read(path: PathLike, frame: Optional[int] = None, radius: Optional[float] = None) -> Pack:

@@ -15,7 +15,10 @@ namespace sgmp::cli {
 /// exit 2) for a path that names no readable file, std::runtime_error
 /// ("--size-distribution PATH:LINE: …", exit 1: a bad input file) for one that does not
 /// parse.
-std::vector<SizeMode> read_size_distribution_file(const std::string& path);
+/// `largest_diameter` (when given) receives the largest diameter with the unit the file's
+/// diameter column names ("200 um"), and is left alone when it names none.
+std::vector<SizeMode> read_size_distribution_file(const std::string& path,
+                                                  std::string* largest_diameter = nullptr);
 
 /// Prints "PROGRAM: warning: OPTION: fractions sum to S; normalised to 1" to stderr when
 /// the fractions of `modes` do not sum to 1 (unnormalised_total, size_modes.hpp); OPTION

@@ -39,6 +39,10 @@ struct PackRequest {
     FractionBasis fraction_basis = FractionBasis::Number;
     /// Where the modes came from (a size-distribution file's name), for the header only.
     std::string size_distribution;
+    /// The largest species' diameter in a physical unit, "200 um" (size_modes.hpp,
+    /// parse_physical_length): from a CSV whose diameter column names its unit, or stated.
+    /// `sgmp convert --length-unit` then scales the pack without --length-scale.
+    std::string largest_diameter;
     /// The order a blend's particles drop in (drop_order.hpp): stratified, so every height
     /// of the deposit gets the blend's composition.
     DropOrder drop_order = DropOrder::Stratified;

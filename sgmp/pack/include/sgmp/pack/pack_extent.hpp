@@ -5,6 +5,9 @@
 /// of other formats use these for box bounds and cells.
 
 #include <array>
+#include <optional>
+#include <string>
+#include <utility>
 
 #include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/pack.hpp"
@@ -29,8 +32,16 @@ double top_of(const Pack& pack, const Container& container);
 Box container_box(const Pack& pack);
 
 /// Which written axes (x, y, z) are periodic: x and z for periodic sides, x and y for a
-/// pack written z up (`up_axis=z`), none with walls. LAMMPS' `boundary` flags, extended
-/// XYZ's `pbc` and a dump's BOX BOUNDS follow from it.
+/// pack written z up (`up_axis=z`), none with walls, all three for a fully periodic cell
+/// read from elsewhere (`periodic_y`). LAMMPS' `boundary` flags, extended XYZ's `pbc` and
+/// a dump's BOX BOUNDS follow from it.
 std::array<bool, 3> periodic_axes(const Pack& pack);
+
+/// A fully periodic cell (a LAMMPS dump "pp pp pp", an extended XYZ pbc="T T T") has no
+/// floor: its y extent "YLO YHI" is kept as the key `periodic_y`, in the testbed's frame,
+/// and is the box's y extent in every format written; the metrics refuse such a pack.
+/// nullopt when the key is absent; throws std::invalid_argument when malformed.
+std::optional<std::pair<double, double>> periodic_y_extent(const Pack& pack);
+std::string periodic_y_text(double lo, double hi);
 
 }  // namespace sgmp

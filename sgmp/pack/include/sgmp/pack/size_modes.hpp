@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "sgmp/pack/drop_order.hpp"
@@ -51,7 +52,18 @@ std::string size_modes_to_string(const std::vector<SizeMode>& modes);
 /// by the largest). Throws InputError (source:line: reason) for an unknown or missing
 /// column, a diameter or density ≤ 0 or not finite, a negative fraction, fractions all
 /// zero, or no row; a species of fraction 0 is kept (it gets no particle).
-std::vector<SizeMode> parse_size_distribution_csv(std::string_view text, const std::string& source);
+/// The diameter column may name its unit, `diameter_UNIT` (UNIT one of length_units()):
+/// then `largest_diameter`, when given, receives the largest diameter in it, "200 um".
+std::vector<SizeMode> parse_size_distribution_csv(std::string_view text, const std::string& source,
+                                                  std::string* largest_diameter = nullptr);
+
+/// The length units a size distribution may be stated in: m, cm, mm, um, nm.
+std::string_view length_units();
+/// Metres in one `unit` of length_units(); nullopt for any other text.
+std::optional<double> metres_per_unit(std::string_view unit);
+/// A physical length "VALUE UNIT" (VALUE > 0 and finite, UNIT of length_units()), as the
+/// `largest_diameter` key states it: {VALUE, UNIT}; nullopt when the text is not one.
+std::optional<std::pair<double, std::string>> parse_physical_length(std::string_view text);
 
 /// A continuous size distribution, "lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]]": ln D normal
 /// with median MEDIAN (any unit) and standard deviation SIGMA, its fractions in the stated

@@ -8,7 +8,9 @@
 /// Axes are the testbed's (right-handed, Y up); the camera's `right` vector is mirrored so
 /// POV-Ray's left-handed frame shows the pack unmirrored.
 
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sgmp/pack/pack.hpp"
@@ -37,6 +39,9 @@ struct SceneOptions {
     /// The colour range of the values: from the q to the 1 − q quantile of the finite
     /// values (beyond it the end colours), q = clip_quantile; 0: least to largest.
     double clip_quantile = 0.0;
+    /// A colour range fixed by the caller, [lo, hi] with hi > lo (beyond it the end colours),
+    /// so that several pictures share one scale; it overrides clip_quantile.
+    std::optional<std::pair<double, double>> value_limits;
     /// Draw the key (legend.hpp): the colour bar or species swatches and a length scale,
     /// in a strip on the right of the image.
     bool legend = true;

@@ -8,11 +8,11 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "sgmp/metrics/ball_box_volume.hpp"
 #include "sgmp/metrics/kd_columns.hpp"
 #include "sgmp/metrics/pair_kernels.hpp"
 #include "sgmp/metrics/parallel.hpp"
 #include "sgmp/pack/size_classes.hpp"
+#include "sgmp/pack/sphere_box_volume.hpp"
 
 namespace sgmp::metrics {
 namespace {
@@ -104,7 +104,8 @@ struct SplitWindows {
     void add_volumes(const Vec3& center, const Box& space, double* volume) const {
         for (int w = 0; w < 2; ++w) {
             volume[w] +=
-                ball_box_volume(center, hi[w], space) - ball_box_volume(center, lo[w], space);
+                sphere_box_volume(center, hi[w], space, SphereBoxQuadrature::GaussLegendre) -
+                sphere_box_volume(center, lo[w], space, SphereBoxQuadrature::GaussLegendre);
         }
     }
 

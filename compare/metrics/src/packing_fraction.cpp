@@ -5,7 +5,6 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "sgmp/metrics/ball_box_volume.hpp"
 #include "sgmp/metrics/parallel.hpp"
 #include "sgmp/pack/ball_cut.hpp"
 #include "sgmp/pack/sphere_box_volume.hpp"
@@ -78,7 +77,8 @@ PhiProfile packing_fraction_profile(const std::vector<Particle>& particles,
                 const bool in_x = inside_along(p, cross_section, 0);
                 const bool in_z = inside_along(p, cross_section, 2);
                 // Cut along y only: closed form; by one vertical face too: ball_cut_volume;
-                // by both (near the column's vertical edges): ball_box_volume (~1e-11).
+                // by both (near the column's vertical edges): sphere_box_volume, Gauss–Legendre
+                // (~1e-11).
                 const int cut_axis = in_x ? 2 : 0;
                 const double u0 = cross_section.lo[cut_axis] - p.center[cut_axis];
                 const double u1 = cross_section.hi[cut_axis] - p.center[cut_axis];
@@ -92,7 +92,8 @@ PhiProfile packing_fraction_profile(const std::vector<Particle>& particles,
                     } else {
                         const Box slab{Vec3(column.lo.x(), lo, column.lo.z()),
                                        Vec3(column.hi.x(), hi, column.hi.z())};
-                        sums[k] += ball_box_volume(p.center, r, slab);
+                        sums[k] += sphere_box_volume(p.center, r, slab,
+                                                     SphereBoxQuadrature::GaussLegendre);
                     }
                 }
             }

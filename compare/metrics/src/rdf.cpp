@@ -6,8 +6,8 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "sgmp/metrics/ball_box_volume.hpp"
 #include "sgmp/metrics/pack_content_error.hpp"
+#include "sgmp/pack/sphere_box_volume.hpp"
 
 namespace sgmp::metrics {
 
@@ -49,7 +49,8 @@ void add_shell_volumes(const Vec3& center, double width, std::size_t bins, const
                        std::vector<double>& out) {
     double inner = 0.0;
     for (std::size_t k = 0; k < bins; ++k) {
-        const double outer = ball_box_volume(center, bin_outer(k, width), space);
+        const double outer = sphere_box_volume(center, bin_outer(k, width), space,
+                                               SphereBoxQuadrature::GaussLegendre);
         out[k] += outer - inner;
         inner = outer;
     }

@@ -7,11 +7,11 @@
 #include <numbers>
 #include <utility>
 
-#include "sgmp/metrics/ball_box_volume.hpp"
 #include "sgmp/metrics/kd_columns.hpp"
 #include "sgmp/metrics/local_structure.hpp"
 #include "sgmp/metrics/pair_kernels.hpp"
 #include "sgmp/metrics/parallel.hpp"
+#include "sgmp/pack/sphere_box_volume.hpp"
 
 namespace sgmp::metrics {
 namespace {
@@ -149,8 +149,9 @@ std::vector<double> shell_volumes(const std::vector<Particle>& particles,
                 double inner = 0.0;
                 for (std::size_t k = 0; k < bins.count; ++k) {
                     const double r = bins.outer(k);
-                    const double outer = full ? 4.0 * std::numbers::pi / 3.0 * r * r * r
-                                              : ball_box_volume(c, r, space);
+                    const double outer =
+                        full ? 4.0 * std::numbers::pi / 3.0 * r * r * r
+                             : sphere_box_volume(c, r, space, SphereBoxQuadrature::GaussLegendre);
                     part[k] += outer - inner;
                     inner = outer;
                 }

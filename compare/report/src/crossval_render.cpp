@@ -210,17 +210,18 @@ struct Tally {
         differ += v == Verdict::Differ ? 1 : 0;
         inconclusive += v == Verdict::Inconclusive ? 1 : 0;
     }
-    /// "k of K agree" and the differences and undecided ones, or "·" when none was judged.
+    /// "k ✓ d ✗ i ◌" (the zero ones left out, "0 ✓" kept), or "·" when none was judged:
+    /// short enough for eight counts and the total in 1400 px.
     [[nodiscard]] std::string text() const {
         if (judged() == 0) {
             return "·";
         }
-        std::string s = std::to_string(agree) + " of " + std::to_string(judged()) + " agree";
+        std::string s = std::to_string(agree) + "\u00a0✓";
         if (differ > 0) {
-            s += ", " + std::to_string(differ) + " ✗";
+            s += " " + std::to_string(differ) + "\u00a0✗";
         }
         if (inconclusive > 0) {
-            s += ", " + std::to_string(inconclusive) + " ◌";
+            s += " " + std::to_string(inconclusive) + "\u00a0◌";
         }
         return s;
     }
@@ -240,9 +241,9 @@ std::vector<const MetricRule*> judged_rules() {
 void summary_markdown(std::ostringstream& md, const CrossValidation& cv,
                       const std::vector<const MetricRule*>& judged) {
     md << "\n## Verdicts per count\n\n";
-    md << "Per SGMP mode and DEM class: of the K metrics judged at each particle count, how "
-          "many agree (k of K agree), differ (✗) or stay inconclusive (◌); the last column adds "
-          "up every count. The metric by metric marks are in the verdict matrix below.\n\n";
+    md << "Per SGMP mode and DEM class: of the metrics judged at each particle count, how "
+          "many agree (✓), differ (✗) or stay inconclusive (◌); the last column adds up every "
+          "count. The metric by metric marks are in the verdict matrix below.\n\n";
     md << "| SGMP mode | DEM class |";
     for (const std::size_t n : cv.counts) {
         md << " N = " << n << " |";

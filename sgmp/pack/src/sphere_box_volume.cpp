@@ -81,10 +81,55 @@ boost::math::quadrature::tanh_sinh<double>& integrator() {
     return instance;
 }
 
+constexpr int kGaussNodes = 32;
+
+/// Gauss–Legendre nodes and weights on [−1, 1] (Newton on P_n, once).
+struct GaussLegendre {
+    std::array<double, kGaussNodes> x{};
+    std::array<double, kGaussNodes> w{};
+    GaussLegendre() {
+        for (int i = 0; i < kGaussNodes; ++i) {
+            double z = std::cos(kPi * (i + 0.75) / (kGaussNodes + 0.5));
+            double derivative = 1.0;
+            for (int iteration = 0; iteration < 100; ++iteration) {
+                double p0 = 1.0;
+                double p1 = z;
+                for (int k = 2; k <= kGaussNodes; ++k) {
+                    const double p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
+                    p0 = p1;
+                    p1 = p2;
+                }
+                derivative = kGaussNodes * (z * p1 - p0) / (z * z - 1.0);
+                const double step = p1 / derivative;
+                z -= step;
+                if (std::abs(step) < 1e-16) {
+                    break;
+                }
+            }
+            x[i] = z;
+            w[i] = 2.0 / ((1.0 - z * z) * derivative * derivative);
+        }
+    }
+};
+
+/// ∫_a^b f(u) du by Gauss–Legendre in t with u = a + (b − a)(1 − cos t)/2, t ∈ [0, π].
+template <class F>
+double integrate_smoothed(F&& f, double a, double b) {
+    static const GaussLegendre rule;
+    const double half = 0.5 * kPi;
+    double sum = 0.0;
+    for (int i = 0; i < kGaussNodes; ++i) {
+        const double t = half * (rule.x[i] + 1.0);
+        const double u = a + (b - a) * 0.5 * (1.0 - std::cos(t));
+        sum += rule.w[i] * f(u) * 0.5 * (b - a) * std::sin(t);
+    }
+    return sum * half;
+}
+
 /// ∫ A(u) du where A is the disk-rectangle area of slice u, split at the break points
 /// where the slice's disk meets an edge line or corner of the rectangle.
 double sliced_volume(double radius, const AxisCut& along, const AxisCut& first,
-                     const AxisCut& second) {
+                     const AxisCut& second, SphereBoxQuadrature quadrature) {
     std::vector<double> breaks{along.lo, along.hi};
     const auto add_break = [&](double rho_squared) {
         const double u_squared = radius * radius - rho_squared;
@@ -119,7 +164,9 @@ double sliced_volume(double radius, const AxisCut& along, const AxisCut& first,
     constexpr double kTolerance = 1e-14;
     double volume = 0.0;
     for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
-        if (breaks[i + 1] > breaks[i]) {
+        if (breaks[i + 1] > breaks[i] && quadrature == SphereBoxQuadrature::GaussLegendre) {
+            volume += integrate_smoothed(slice_area, breaks[i], breaks[i + 1]);
+        } else if (breaks[i + 1] > breaks[i]) {
             try {
                 volume += integrator().integrate(slice_area, breaks[i], breaks[i + 1], kTolerance);
             } catch (const std::exception&) {  // boost's text names its internals only
@@ -129,7 +176,7 @@ double sliced_volume(double radius, const AxisCut& along, const AxisCut& first,
             }
         }
     }
-    return volume;
+    return std::clamp(volume, 0.0, 4.0 / 3.0 * kPi * radius * radius * radius);
 }
 
 }  // namespace
@@ -165,7 +212,8 @@ double packing_fraction(const Pack& pack, const Box& region) {
     return packing_fraction(pack.particles, region);
 }
 
-double sphere_box_volume(const Vec3& center, double radius, const Box& box) {
+double sphere_box_volume(const Vec3& center, double radius, const Box& box,
+                         SphereBoxQuadrature quadrature) {
     if (radius <= 0.0) {
         return 0.0;
     }
@@ -217,7 +265,7 @@ double sphere_box_volume(const Vec3& center, double radius, const Box& box) {
     }
     const int first = (along + 1) % 3;
     const int second = (along + 2) % 3;
-    return sliced_volume(radius, cuts[along], cuts[first], cuts[second]);
+    return sliced_volume(radius, cuts[along], cuts[first], cuts[second], quadrature);
 }
 
 }  // namespace sgmp

@@ -12,7 +12,7 @@
 ///     g_k = Σ_i h_k(i) / (ρ · Σ_i V_k(i)).
 /// S is the container shrunk by the mean radius at the walls and the floor, up to the
 /// highest centre. Each V_k(i) is a difference of ball volumes inside S at the shell's two
-/// radii (ball_box_volume); origins farther than the outermost radius from every face of S
+/// radii (sphere_box_volume, Gauss–Legendre); origins farther than the outermost radius from every face of S
 /// need no correction (full shells).
 ///
 /// The density ρ (option gr_density) is by default the one the origins see:

@@ -9,7 +9,8 @@
 - Reference file names: the pours of a reference set are named `nNNNN-muMU-seedS.xyz.gz`
   (count zero-padded to 4 digits, the friction as written, the seed).
   `reference_name(count, mu, seed)` spells one, `parse_reference_name(name)` reads one back
-  (None when it is not such a name), `reference_files(directory, count, mu)` lists the
+  (None when it is not such a name), `reference_pattern(count, mu)` is the glob pattern of
+  a class's pours, `reference_files(directory, count, mu)` lists the
   pours stored for a class, by seed, and `reference_seeds(directory, count, mu)` their
   seeds.
 - CSV: the testbed's tables have their header row first, then `#` lines, then the rows.
@@ -92,6 +93,11 @@ def reference_name(count, mu, seed, suffix=".xyz.gz"):
     return f"n{int(count):04d}-mu{mu_text}-seed{int(seed)}{suffix}"
 
 
+def reference_pattern(count, mu="*"):
+    """The glob pattern of the pours of class (COUNT, MU), any seed and suffix; MU "*" any."""
+    return reference_name(count, mu, 0, "")[:-1] + "*"
+
+
 def parse_reference_name(name):
     """A ReferenceName from a file name (a path's last part), None when it is not one."""
     match = _REFERENCE.match(pathlib.PurePath(str(name)).name)
@@ -103,11 +109,10 @@ def parse_reference_name(name):
 
 def reference_files(directory, count, mu, suffix=".xyz.gz"):
     """The pours of class (COUNT, MU) stored in DIRECTORY, by increasing seed."""
-    prefix = reference_name(count, mu, 0, "")[:-1]  # "nNNNN-muMU-seed"
     found = []
-    for path in pathlib.Path(directory).glob(prefix + "*" + suffix):
+    for path in pathlib.Path(directory).glob(reference_pattern(count, mu) + suffix):
         parsed = parse_reference_name(path.name)
-        if parsed and parsed.suffix == suffix and path.name.startswith(prefix) and path.is_file():
+        if parsed and parsed.suffix == suffix and path.is_file():
             found.append((parsed.seed, path))
     return [path for _, path in sorted(found)]
 

@@ -145,3 +145,35 @@ def test_list_pours(tmp_path, capsys):
                      "--by", "friction"])
     assert capsys.readouterr().out == ("1 a 4 d/n0001-mua-seed4.xyz.gz\n2 a 4 d/n0002-mua-seed4.xyz.gz\n"
                                        "1 b 4 d/n0001-mub-seed4.xyz.gz\n2 b 4 d/n0002-mub-seed4.xyz.gz\n")
+
+
+def run_manifest(args, stdin=b""):
+    return subprocess.run([sys.executable, str(ROOT / "scripts" / "lib" / "manifest.py"), *args],
+                          input=stdin, capture_output=True, check=True).stdout
+
+
+def test_manifest_rows_paths_metrics_select(tmp_path):
+    fields = ["candidate", "loose-random", "150", "1", "0.123", '/tmp/run dir, "quoted"/a.xyz',
+              "reference", "DEM mu=0.5", "150", "2", "", "data/reference/n0150-mu0.5-seed2.xyz.gz"]
+    rows = run_manifest(["rows", "6"], "\0".join(fields).encode() + b"\0")
+    assert rows == (b'candidate,loose-random,150,1,0.123,"/tmp/run dir, ""quoted""/a.xyz"\n'
+                    b"reference,DEM mu=0.5,150,2,,data/reference/n0150-mu0.5-seed2.xyz.gz\n")
+    manifest = tmp_path / "manifest.csv"
+    manifest.write_bytes(b"role,group,count,seed,seconds,path\n" + rows)
+    assert run_manifest(["paths", str(manifest)]).split(b"\0")[:-1] == \
+        [fields[5].encode(), fields[11].encode()]
+    pairs = [fields[5], "m/a, b.metrics.json", fields[11], "m/r.metrics.json"]
+    assert run_manifest(["metrics", str(manifest)], "\0".join(pairs).encode() + b"\0") == (
+        b"role,group,count,seed,seconds,path\n"
+        b'candidate,loose-random,150,1,0.123,"m/a, b.metrics.json"\n'
+        b"reference,DEM mu=0.5,150,2,,m/r.metrics.json\n")
+    assert run_manifest(["select", str(manifest), "--role", "candidate", "--group", "loose-random",
+                         "--count", "150"]) == rows.split(b"\n")[0] + b"\n"
+    assert run_manifest(["select", str(manifest), "--role", "reference", "--count", "300"]) == b""
+
+
+def test_manifest_verdicts(tmp_path):
+    headline = tmp_path / "headline.csv"
+    headline.write_text('count,candidate,metric,verdict\n# tool\n150,"a, b",phi,agree\n'
+                        "150,c,phi,differ\n150,c,g_r,agree\n")
+    assert run_manifest(["verdicts", str(headline)]) == b"2 agree, 1 differ, 0 inconclusive"

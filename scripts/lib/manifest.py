@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The manifests of scripts/run (role,group,count,seed,seconds,path) written and read as CSV
-(packfiles.py), so the shell neither quotes nor splits a CSV line.
+(packfiles.py), so the shell neither quotes nor splits a manifest line.
 
     manifest.py rows N              stdin: fields separated by NUL, N per row; one CSV line
                                     per row on stdout (a field with a comma or quote quoted)

@@ -10,6 +10,8 @@
     manifest.py select FILE --role R [--group G] [--count C]
                                     the lines of FILE's rows with that role, group and count,
                                     as they are
+    manifest.py count FILE --role R [--timed]
+                                    how many rows of FILE have that role (and a time)
     manifest.py verdicts HEADLINE   "A agree, D differ, I inconclusive" of headline.csv
 """
 import argparse
@@ -56,6 +58,10 @@ def main(argv=None):
     p.add_argument("--role", required=True)
     p.add_argument("--group")
     p.add_argument("--count")
+    p = sub.add_parser("count")
+    p.add_argument("file")
+    p.add_argument("--role", required=True)
+    p.add_argument("--timed", action="store_true")
     sub.add_parser("verdicts").add_argument("file")
     args = parser.parse_args(argv)
 
@@ -77,6 +83,9 @@ def main(argv=None):
             if fields[0] == args.role and (args.group is None or fields[1] == args.group) \
                     and (args.count is None or fields[2] == args.count):
                 write(line + "\n")
+    elif args.command == "count":
+        write(str(sum(1 for _, fields in rows_of(args.file)
+                      if fields[0] == args.role and (not args.timed or fields[4] != ""))) + "\n")
     elif args.command == "verdicts":
         _, rows = packfiles.read_csv(args.file)
         n = {v: sum(1 for r in rows if r.get("verdict") == v)

@@ -170,6 +170,9 @@ def test_manifest_rows_paths_metrics_select(tmp_path):
     assert run_manifest(["select", str(manifest), "--role", "candidate", "--group", "loose-random",
                          "--count", "150"]) == rows.split(b"\n")[0] + b"\n"
     assert run_manifest(["select", str(manifest), "--role", "reference", "--count", "300"]) == b""
+    assert run_manifest(["count", str(manifest), "--role", "candidate", "--timed"]) == b"1\n"
+    assert run_manifest(["count", str(manifest), "--role", "reference", "--timed"]) == b"0\n"
+    assert run_manifest(["count", str(manifest), "--role", "reference"]) == b"1\n"
 
 
 def test_manifest_verdicts(tmp_path):

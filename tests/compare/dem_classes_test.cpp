@@ -6,7 +6,7 @@
 // - The holdout test: the same scoring on the holdout set (data/reference/holdout/, a third
 //   input), which no rule was tuned on.
 // - The information limit: how narrow the split ratio's and g(r)'s intervals can be for a
-//   candidate of 2 seeds (compare/docs/verdict-resolution.md).
+//   candidate of 2 seeds (compare/notes/verdict-resolution.md).
 // - Leave one seed out: each held-out pour of a main class, as a candidate of one pack,
 //   stands in for its own class and differs from the other, per count.
 // - The main classes μ = 0.5 and μ = 0.01 differ on φ and Z(10⁻²) at every count ≥ 1002.
@@ -224,7 +224,7 @@ BOOST_AUTO_TEST_CASE(the_truth_set_is_judged_right) {
 // bounds 0.012 and 0.011 > m = 0.01), Z(10⁻³) 11/12 (info at N = 1002 μ = 0.01 against
 // μ = 0.5: the overlap depths differ by 0.53·10⁻³ d > δ/2), Z(10⁻²) 12/12, the split ratio
 // and g(r) 6/12 each (differ across families 6 of 6, inconclusive within them 6 of 6, as in
-// the truth test: compare/docs/verdict-resolution.md). The test keeps the wrong count at 0
+// the truth test: compare/notes/verdict-resolution.md). The test keeps the wrong count at 0
 // and the right share at the measured 57 of 72.
 BOOST_AUTO_TEST_CASE(the_holdout_set_is_judged_right) {
     const Tally t =
@@ -305,7 +305,7 @@ BOOST_AUTO_TEST_CASE(the_friction_classes_differ_at_every_count) {
 }
 
 // The information limit of the two metrics that stay inconclusive within a family in the
-// truth and holdout tests (compare/docs/verdict-resolution.md, measured 2026-12-04), with
+// truth and holdout tests (compare/notes/verdict-resolution.md, measured 2026-12-04), with
 // the rules and margins as they are: what a candidate of 2 seeds can resolve at all.
 // Split ratio: the seed sd s per class and set, and the 90 % half-width at Δ̂ = 0 (the
 // test's zero_bound) for 2 against 5 seeds, t₀.₉₅,₅·s·√(1/2 + 1/5), and against infinitely

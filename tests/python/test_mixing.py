@@ -84,7 +84,7 @@ def test_a_periodic_sgmp_blend_is_mixed_within_the_margin_of_its_dem_pours(tmp_p
                 "--sides", "periodic", "--drop-order", order, *BLEND, "--out", path)
             deviations[order].append(mixing_of(tmp_path, path)["deviation_max"])
     sgmp = deviations["stratified"]
-    # Measured (compare/docs/blends-measured-2026-12-06.md): stratified 0.030-0.040 (mean
+    # Measured (compare/notes/blends-measured-2026-12-06.md): stratified 0.030-0.040 (mean
     # 0.035), shuffled 0.019-0.059 (0.045), the pours 0.025. Every stratified seed stays
     # within +-0.05 of the overall shares, the mean within the mixing row's declared margin
     # (0.05) of the pours' mean; the shuffled order's binomial scatter leaves it worse.

@@ -48,7 +48,7 @@ struct RelaxParams {
     /// at most s·(rᵢ + rⱼ); only deeper soft overlaps are left for the clearing and the
     /// hard-sphere finish. The default 0 makes the soft spheres the real ones: every loaded
     /// contact is parted by the clearing to touching (gaps of 10⁻⁹–10⁻⁷·d), so the pack's
-    /// contacts count at δ = 10⁻⁶ as well (sgmp/engine/docs/relaxation-2026-11.md); with s = 3·10⁻⁴
+    /// contacts count at δ = 10⁻⁶ as well (sgmp/engine/notes/relaxation-2026-11.md); with s = 3·10⁻⁴
     /// they end as gaps of up to 3·10⁻⁴·d and Z(10⁻⁶) is 0.
     double shell = 0.0;
     /// A stage has converged when no sphere feels a net force above this, in m·g.
@@ -67,7 +67,7 @@ struct RelaxParams {
     /// by the frictionless one. The default is the DEM frictional class's own, 0.5: the
     /// relaxation ends in a certified equilibrium at this μ, and no value was chosen by
     /// comparison with the pours (an earlier soft-only relaxation used 0.2, tuned against
-    /// them: sgmp/engine/docs/relaxation-frictional-2026-11.md).
+    /// them: sgmp/engine/notes/relaxation-frictional-2026-11.md).
     double friction = 0.5;
     /// Tangential over normal stiffness k_t/k of the frictional relaxation. 2/7 makes the
     /// tangential oscillation of a contact as fast as the normal one for a solid sphere

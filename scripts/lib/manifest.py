@@ -1,0 +1,98 @@
+#!/usr/bin/env python3
+"""The manifests of scripts/run (role,group,count,seed,seconds,path) written and read as CSV
+(packfiles.py), so the shell neither quotes nor splits a manifest line.
+
+    manifest.py rows N              stdin: fields separated by NUL, N per row; one CSV line
+                                    per row on stdout (a field with a comma or quote quoted)
+    manifest.py paths FILE          the path of every row of FILE, each followed by a NUL
+    manifest.py metrics FILE        stdin: NUL-separated pairs PACK METRICS; FILE with the
+                                    header and each row's path replaced by its metrics file
+    manifest.py select FILE --role R [--group G] [--count C]
+                                    the lines of FILE's rows with that role, group and count,
+                                    as they are
+    manifest.py count FILE --role R [--timed]
+                                    how many rows of FILE have that role (and a time)
+    manifest.py verdicts HEADLINE   "A agree, D differ, I inconclusive" of headline.csv
+"""
+import argparse
+import csv
+import pathlib
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import packfiles  # noqa: E402
+
+HEADER = ["role", "group", "count", "seed", "seconds", "path"]
+
+
+def nul_fields():
+    data = sys.stdin.buffer.read().decode("utf-8", errors="surrogateescape")
+    fields = data.split("\0")
+    if fields and fields[-1] == "":
+        fields.pop()
+    return fields
+
+
+def write(text):
+    sys.stdout.buffer.write(text.encode("utf-8", errors="surrogateescape"))
+
+
+def rows_of(path):
+    """(line, fields) of each row of the manifest PATH, header and '#' lines left out."""
+    with open(path, encoding="utf-8", errors="surrogateescape", newline="") as f:
+        lines = f.read().split("\n")
+    for line in lines[1:]:
+        if line and not line.startswith("#"):
+            yield line, next(csv.reader([line]))
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = parser.add_subparsers(dest="command", required=True)
+    sub.add_parser("rows").add_argument("n", type=int)
+    sub.add_parser("paths").add_argument("file")
+    sub.add_parser("metrics").add_argument("file")
+    p = sub.add_parser("select")
+    p.add_argument("file")
+    p.add_argument("--role", required=True)
+    p.add_argument("--group")
+    p.add_argument("--count")
+    p = sub.add_parser("count")
+    p.add_argument("file")
+    p.add_argument("--role", required=True)
+    p.add_argument("--timed", action="store_true")
+    sub.add_parser("verdicts").add_argument("file")
+    args = parser.parse_args(argv)
+
+    if args.command == "rows":
+        fields = nul_fields()
+        for i in range(0, len(fields) - args.n + 1, args.n):
+            write(packfiles.csv_line(fields[i:i + args.n]) + "\n")
+    elif args.command == "paths":
+        for _, fields in rows_of(args.file):
+            write(fields[5] + "\0")
+    elif args.command == "metrics":
+        pairs = nul_fields()
+        metrics = dict(zip(pairs[0::2], pairs[1::2]))
+        write(packfiles.csv_line(HEADER) + "\n")
+        for _, fields in rows_of(args.file):
+            write(packfiles.csv_line(fields[:5] + [metrics.get(fields[5], "")]) + "\n")
+    elif args.command == "select":
+        for line, fields in rows_of(args.file):
+            if fields[0] == args.role and (args.group is None or fields[1] == args.group) \
+                    and (args.count is None or fields[2] == args.count):
+                write(line + "\n")
+    elif args.command == "count":
+        write(str(sum(1 for _, fields in rows_of(args.file)
+                      if fields[0] == args.role and (not args.timed or fields[4] != ""))) + "\n")
+    elif args.command == "verdicts":
+        _, rows = packfiles.read_csv(args.file)
+        n = {v: sum(1 for r in rows if r.get("verdict") == v)
+             for v in ("agree", "differ", "inconclusive")}
+        write(f"{n['agree']} agree, {n['differ']} differ, {n['inconclusive']} inconclusive")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

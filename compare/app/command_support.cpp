@@ -111,8 +111,8 @@ void apply(CommonOptions& o) {
         o.measure.region = Box{Vec3(o.region[0], o.region[2], o.region[4]),
                                Vec3(o.region[1], o.region[3], o.region[5])};
     }
+    o.measure.threads = o.threads;  // passed to every measurement, never set globally
     validate(o.measure);
-    set_thread_count(o.threads);
     // A directory may be typed with a trailing slash ("--out report/").
     while (o.out.size() > 1 && o.out.back() == '/') {
         o.out.pop_back();
@@ -143,9 +143,10 @@ std::optional<StatedContainer> stated_for(const std::string& path, const CommonO
     return found != o.stated_per_pack.end() ? std::optional(found->second) : o.stated;
 }
 
-Pack read_pack(const std::string& path, const std::optional<StatedContainer>& stated) {
+Pack read_pack(const std::string& path, const std::optional<StatedContainer>& stated,
+               unsigned threads) {
     ReadOptions options;
-    options.threads = thread_count();  // the lines are parsed on the measurement's threads
+    options.threads = resolved_threads(threads);  // parsed on the measurement's threads
     options.container = stated;
     PackRead read = read_pack_file(path, options);
     for (const std::string& warning : read.warnings) {
@@ -209,7 +210,7 @@ Group measure_group(const std::string& label, const std::vector<std::string>& pa
             group.packs.push_back(found->second);
             continue;
         }
-        const Pack pack = read_pack(path, stated_for(path, o));
+        const Pack pack = read_pack(path, stated_for(path, o), o.threads);
         group.packs.push_back(summarise(path, pack, measure_pack(path, pack, o)));
     }
     return group;

@@ -57,7 +57,8 @@ std::string command_line(int argc, char** argv);
 std::optional<StatedContainer> stated_for(const std::string& path, const CommonOptions& o);
 /// Reads a pack with its container settled (sgmp/pack/stated_container.hpp); InputError for
 /// unreadable, empty or malformed files and for a container refused.
-Pack read_pack(const std::string& path, const std::optional<StatedContainer>& stated);
+Pack read_pack(const std::string& path, const std::optional<StatedContainer>& stated,
+               unsigned threads);
 Measurement measure_pack(const std::string& path, const Pack& pack, const CommonOptions& o);
 /// The measurement parameters as recorded in outputs.
 nlohmann::ordered_json measure_parameters(const CommonOptions& o);

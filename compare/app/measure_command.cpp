@@ -56,7 +56,7 @@ int run_measure(MeasureOptions& o, const std::string& cmd) {
     write_directory_atomically(o.common.out, o.common.force, [&](const fs::path& dir) {
         for (const auto& path : o.packs) {
             const auto read_start = std::chrono::steady_clock::now();
-            const Pack pack = read_pack(path, o.common.stated);
+            const Pack pack = read_pack(path, o.common.stated, o.common.threads);
             if (o.common.timings) {
                 std::cerr << "timings " << path << ": read "
                           << std::chrono::duration<double>(std::chrono::steady_clock::now() -

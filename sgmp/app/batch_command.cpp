@@ -97,9 +97,10 @@ const SummarySchema& schema() {
 /// The measure callback of --measure.
 MeasureFields measure_callback(const Settings& s) {
 #if SGMP_WITH_METRICS
-    metrics::set_thread_count(1);  // packs run side by side; each measurement is serial
-    return
-        [voronoi = s.voronoi](const Pack& pack) { return metrics::summary_fields(pack, voronoi); };
+    // Packs run side by side; each measurement is serial (one thread).
+    return [voronoi = s.voronoi](const Pack& pack) {
+        return metrics::summary_fields(pack, voronoi, 1);
+    };
 #else
     (void)s;
     throw BadValue{"--measure: this sgmp was built without the metrics (SGMP_BUILD_REPORT=OFF)"};

@@ -40,7 +40,6 @@ int main(int argc, char** argv) {
         return 2;
     }
     try {
-        set_thread_count(1);
         const Pack pack = read_pack_file(argv[1]);
         const double d = mean_diameter(pack);
         std::vector<Index> all(pack.particles.size());
@@ -48,7 +47,7 @@ int main(int argc, char** argv) {
             all[i] = i;
         }
         std::vector<Particle> particles;
-        for (const Index i : spatial_order(pack.particles, all, d)) {
+        for (const Index i : spatial_order(pack.particles, all, d, 1)) {
             particles.push_back(pack.particles[i]);
         }
         std::vector<Index> origins;
@@ -131,6 +130,7 @@ int main(int argc, char** argv) {
         options.bins = bins;
         options.space = center_space(particles, container_of(pack), 0.5 * d);
         options.container = container_of(pack);
+        options.threads = 1;
         start = cpu_seconds();
         const LocalStructure local = measure_local_structure(particles, origins, options);
         const double pass = cpu_seconds() - start;

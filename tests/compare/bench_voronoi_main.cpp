@@ -34,8 +34,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     try {
-        sgmp::metrics::set_thread_count(argc == 3 ? static_cast<unsigned>(std::stoul(argv[2]))
-                                                  : 0U);
+        sgmp::metrics::VoronoiOptions options;
+        options.threads = argc == 3 ? static_cast<unsigned>(std::stoul(argv[2])) : 0U;
         Stopwatch start;
         const sgmp::Pack pack = sgmp::read_pack_file(argv[1]);
         std::cout << "read " << start << ", " << pack.particles.size() << " particles\n";
@@ -44,7 +44,8 @@ int main(int argc, char** argv) {
         for (const auto& [label, region] :
              {std::pair{"control-volume", sgmp::control_volume()}, std::pair{"all", everything}}) {
             start = Stopwatch{};
-            const auto phi = sgmp::metrics::voronoi_local_phi(pack.particles, container, region);
+            const auto phi =
+                sgmp::metrics::voronoi_local_phi(pack.particles, container, region, options);
             std::cout << "voronoi " << label << ' ' << start << ", " << phi.cells << " cells, mean "
                       << phi.mean << " sd " << phi.sd << " global " << phi.global << '\n';
         }

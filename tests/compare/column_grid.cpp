@@ -44,7 +44,7 @@ ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, const std::vector
         bool finite = true;
     };
     const Bounds bounds = chunked_reduce(
-        n, kPartSize, Bounds{},
+        0, n, kPartSize, Bounds{},
         [&](Bounds& part, std::size_t first, std::size_t last) {
             for (std::size_t i = first; i < last; ++i) {
                 const Vec3& c = particles[members[i]].center;
@@ -91,7 +91,7 @@ ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, const std::vector
     const std::size_t part_count = by_parts ? parts : 1;
     std::vector<std::uint32_t> cell_of(n);
     std::vector<std::uint32_t> counts(part_count * cells, 0);
-    parallel_for(part_count, [&](std::size_t t) {
+    parallel_for(0, part_count, [&](std::size_t t) {
         std::uint32_t* const count = counts.data() + t * cells;
         const std::size_t last = std::min(n, (t + 1) * part_size);
         for (std::size_t i = t * part_size; i < last; ++i) {
@@ -117,7 +117,7 @@ ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, const std::vector
     y.resize(n);
     z.resize(n);
     index.resize(n);
-    parallel_for(part_count, [&](std::size_t t) {
+    parallel_for(0, part_count, [&](std::size_t t) {
         std::uint32_t* const next = counts.data() + t * cells;
         const std::size_t last = std::min(n, (t + 1) * part_size);
         for (std::size_t i = t * part_size; i < last; ++i) {
@@ -132,7 +132,7 @@ ColumnGrid::ColumnGrid(const std::vector<Particle>& particles, const std::vector
     // Each cell's members by z, then index, so that every column is sorted by z (cells
     // apart on the worker threads: each is sorted alone, so the result is the same).
     constexpr std::size_t kCellsPerItem = 256;
-    parallel_for((cells + kCellsPerItem - 1) / kCellsPerItem, [&](std::size_t item) {
+    parallel_for(0, (cells + kCellsPerItem - 1) / kCellsPerItem, [&](std::size_t item) {
         std::vector<std::pair<double, std::uint32_t>> keyed;  // z, position before sorting
         std::vector<double> xs;
         std::vector<double> ys;

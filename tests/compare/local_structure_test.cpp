@@ -111,8 +111,10 @@ Counts brute_force(const Case& c) {
     return n;
 }
 
-LocalStructure fast(const Case& c) {
-    return measure_local_structure(c.particles, c.origins, c.options);
+LocalStructure fast(const Case& c, unsigned threads = 0) {
+    LocalStructureOptions options = c.options;
+    options.threads = threads;
+    return measure_local_structure(c.particles, c.origins, options);
 }
 
 }  // namespace
@@ -146,11 +148,8 @@ BOOST_AUTO_TEST_CASE(fused_pass_matches_brute_force) {
 
 BOOST_AUTO_TEST_CASE(results_are_bit_identical_for_any_thread_count) {
     const Case c = random_case(4, 2000, 0.02, 0.3);
-    set_thread_count(1);
-    const LocalStructure one = fast(c);
-    set_thread_count(2);
-    const LocalStructure two = fast(c);
-    set_thread_count(0);
+    const LocalStructure one = fast(c, 1);
+    const LocalStructure two = fast(c, 2);
     BOOST_TEST(one.rdf.pairs == two.rdf.pairs, boost::test_tools::per_element());
     BOOST_TEST(one.rdf.shell_volume == two.rdf.shell_volume, boost::test_tools::per_element());
     BOOST_TEST(one.coordination.z_mean == two.coordination.z_mean,
@@ -249,7 +248,7 @@ BOOST_AUTO_TEST_CASE(kd_columns_partition_the_centres_sorted_by_height) {
     sets.emplace_back();
     for (const auto& particles : sets) {
         for (const double side : {0.01, 0.2, 3.0}) {
-            const KdColumns columns(particles, side);
+            const KdColumns columns(particles, side, 0);
             BOOST_TEST(columns.column_begin(columns.columns()) == particles.size());
             std::vector<int> seen(particles.size(), 0);
             for (std::size_t c = 0; c < columns.columns(); ++c) {
@@ -287,8 +286,8 @@ BOOST_AUTO_TEST_CASE(kd_column_windows_hold_every_center_within_the_radius) {
         (i % 3 == 0 ? sources : targets).push_back(i);
     }
     for (const double side : {0.05, 0.2, 1.0}) {
-        const KdColumns source(particles, sources, side);
-        const KdColumns target(particles, targets, 0.7 * side);
+        const KdColumns source(particles, sources, side, 0);
+        const KdColumns target(particles, targets, 0.7 * side, 0);
         for (const double radius : {0.0, 0.07, 0.3}) {
             for (std::size_t c = 0; c < source.columns(); ++c) {
                 const std::size_t begin = source.column_begin(c);

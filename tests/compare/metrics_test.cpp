@@ -120,11 +120,11 @@ BOOST_AUTO_TEST_CASE(results_do_not_depend_on_the_thread_count) {
     const Pack pack = sgmp::testing::jittered_fcc_pack(2000, 1.02, 0.05, 11);
     std::vector<std::string> dumps;
     for (const unsigned threads : {1u, 2u, 3u}) {
-        set_thread_count(threads);
-        const Measurement m = measure(pack, MeasureOptions{});
+        MeasureOptions options;
+        options.threads = threads;
+        const Measurement m = measure(pack, options);
         dumps.push_back(metrics_json(m, {}).dump());
     }
-    set_thread_count(0);
     BOOST_TEST(dumps[0] == dumps[1]);
     BOOST_TEST(dumps[0] == dumps[2]);
 }

@@ -186,12 +186,11 @@ BOOST_AUTO_TEST_CASE(pair_counts_and_contacts_equal_brute_force) {
 
 BOOST_AUTO_TEST_CASE(results_do_not_depend_on_the_thread_count) {
     const auto particles = rock_salt(0.1, 0.031, 0.019, 0.5);
-    const auto o = options_for(particles, 0.3, 0.6);
-    set_thread_count(1);
+    auto o = options_for(particles, 0.3, 0.6);
+    o.threads = 1;
     const auto one = measure_species_structure(particles, o);
-    set_thread_count(2);
+    o.threads = 2;
     const auto two = measure_species_structure(particles, o);
-    set_thread_count(0);
     for (std::size_t p = 0; p < one->pairs.size(); ++p) {
         BOOST_TEST(one->pairs[p].pairs == two->pairs[p].pairs, boost::test_tools::per_element());
         BOOST_TEST(one->pairs[p].g == two->pairs[p].g, boost::test_tools::per_element());

@@ -279,11 +279,13 @@ BOOST_AUTO_TEST_CASE(result_does_not_depend_on_the_thread_count) {
     // 45,000 cells: enough for the kernel to split them between two or more containers.
     const Pack pack = sgmp::testing::jittered_fcc_pack(45000, 1.06, 0.015, 5);
     const Container container;
-    set_thread_count(1);
-    const auto serial = voronoi_local_phi(pack.particles, container, everything(container));
-    set_thread_count(4);
-    const auto threaded = voronoi_local_phi(pack.particles, container, everything(container));
-    set_thread_count(0);
+    VoronoiOptions options;
+    options.threads = 1;
+    const auto serial =
+        voronoi_local_phi(pack.particles, container, everything(container), options);
+    options.threads = 4;
+    const auto threaded =
+        voronoi_local_phi(pack.particles, container, everything(container), options);
     BOOST_TEST(serial.cells == 45000);
     BOOST_TEST(serial.mean == threaded.mean);
     BOOST_TEST(serial.sd == threaded.sd);

@@ -110,11 +110,11 @@ struct KdColumns::Tree {
     }
 };
 
-KdColumns::KdColumns(const std::vector<Particle>& particles, double side)
-    : KdColumns(particles, every_index(particles.size()), side) {}
+KdColumns::KdColumns(const std::vector<Particle>& particles, double side, unsigned threads)
+    : KdColumns(particles, every_index(particles.size()), side, threads) {}
 
 KdColumns::KdColumns(const std::vector<Particle>& particles, const std::vector<Index>& members,
-                     double side) {
+                     double side, unsigned threads) {
     if (!(side > 0.0) || !std::isfinite(side)) {
         throw std::invalid_argument("the column side of the neighbour search must be positive");
     }
@@ -165,27 +165,28 @@ KdColumns::KdColumns(const std::vector<Particle>& particles, const std::vector<I
         }
     }
     footprints_.resize(leaves.size());
-    parallel_for((leaves.size() + kColumnsPerPart - 1) / kColumnsPerPart, [&](std::size_t part) {
-        const std::size_t last = std::min(leaves.size(), (part + 1) * kColumnsPerPart);
-        std::vector<std::pair<double, Index>> column;  // (z, particle index)
-        for (std::size_t c = part * kColumnsPerPart; c < last; ++c) {
-            column.clear();
-            for (auto key = leaves[c]->begin(); key != leaves[c]->end(); ++key) {
-                const Index i = members[*key];
-                column.emplace_back(particles[i].center.z(), i);
-            }
-            std::sort(column.begin(), column.end());
-            for (std::size_t k = 0; k < column.size(); ++k) {
-                const std::size_t at = start_[c] + k;
-                const Vec3& p = particles[column[k].second].center;
-                x[at] = p.x();
-                y[at] = p.y();
-                z[at] = column[k].first;
-                index[at] = column[k].second;
-            }
-            footprints_[c] = footprint(start_[c], start_[c + 1]);
-        }
-    });
+    parallel_for(threads, (leaves.size() + kColumnsPerPart - 1) / kColumnsPerPart,
+                 [&](std::size_t part) {
+                     const std::size_t last = std::min(leaves.size(), (part + 1) * kColumnsPerPart);
+                     std::vector<std::pair<double, Index>> column;  // (z, particle index)
+                     for (std::size_t c = part * kColumnsPerPart; c < last; ++c) {
+                         column.clear();
+                         for (auto key = leaves[c]->begin(); key != leaves[c]->end(); ++key) {
+                             const Index i = members[*key];
+                             column.emplace_back(particles[i].center.z(), i);
+                         }
+                         std::sort(column.begin(), column.end());
+                         for (std::size_t k = 0; k < column.size(); ++k) {
+                             const std::size_t at = start_[c] + k;
+                             const Vec3& p = particles[column[k].second].center;
+                             x[at] = p.x();
+                             y[at] = p.y();
+                             z[at] = column[k].first;
+                             index[at] = column[k].second;
+                         }
+                         footprints_[c] = footprint(start_[c], start_[c + 1]);
+                     }
+                 });
 }
 
 KdColumns::~KdColumns() = default;

@@ -453,9 +453,9 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
     // origins' grid (weight 2, both are origins), origin–other pairs from the origin.
     // Origins are visited in the grid's stored order (column by column: near in space).
     const double side = kPairPassColumnSide * options.mean_diameter;
-    const KdColumns origin_grid(particles, origins, side);
+    const KdColumns origin_grid(particles, origins, side, options.threads);
     const std::vector<Index> rest = others(particles.size(), origins);
-    const KdColumns other_grid(particles, rest, side);
+    const KdColumns other_grid(particles, rest, side, options.threads);
     // A wide blend's contacts and bonds: small and large spheres apart (Setup::split_sizes).
     std::vector<std::unique_ptr<KdColumns>> size_grids;
     CloseGrids grids{{&origin_grid, &other_grid}, {s.radius, s.radius}};
@@ -471,16 +471,19 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
                 large_radius =
                     is_large ? std::max(large_radius, particles[i].radius) : large_radius;
             }
-            size_grids.push_back(std::make_unique<KdColumns>(particles, small, side));
+            size_grids.push_back(
+                std::make_unique<KdColumns>(particles, small, side, options.threads));
             grids.grids.push_back(size_grids.back().get());
             grids.max_radius.push_back(s.small_radius);
-            size_grids.push_back(std::make_unique<KdColumns>(particles, large, side));
+            size_grids.push_back(
+                std::make_unique<KdColumns>(particles, large, side, options.threads));
             grids.grids.push_back(size_grids.back().get());
             grids.max_radius.push_back(large_radius);
         }
     }
     const Partial total = chunked_reduce(
-        origin_grid.columns(), kColumnsPerChunk, Partial(s.tolerances, options.bins),
+        options.threads, origin_grid.columns(), kColumnsPerChunk,
+        Partial(s.tolerances, options.bins),
         [&](Partial& part, std::size_t first, std::size_t last) {
             Scratch scratch;
             scratch.z.resize(s.tolerances);

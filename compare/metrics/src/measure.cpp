@@ -177,7 +177,8 @@ Container container_of(const Pack& pack, std::string* source) {
 
 /// The particles sorted along a Morton curve of cells of side d, so that particles near in
 /// space are near in memory (every pass then walks its grids and the arrays in cache).
-std::vector<Particle> spatially_ordered(const std::vector<Particle>& particles, double d) {
+std::vector<Particle> spatially_ordered(const std::vector<Particle>& particles, double d,
+                                        unsigned threads) {
     std::vector<Index> all(particles.size());
     for (std::size_t i = 0; i < all.size(); ++i) {
         all[i] = static_cast<Index>(i);
@@ -187,7 +188,7 @@ std::vector<Particle> spatially_ordered(const std::vector<Particle>& particles, 
     std::vector<Particle> ordered;
     const auto allocate = [&] { ordered.resize(particles.size()); };
     std::vector<Index> order;
-    if (thread_count() > 1) {
+    if (resolved_threads(threads) > 1) {
         std::exception_ptr failure;
         std::thread allocation([&] {
             try {
@@ -197,7 +198,7 @@ std::vector<Particle> spatially_ordered(const std::vector<Particle>& particles, 
             }
         });
         try {
-            order = spatial_order(particles, std::move(all), d);
+            order = spatial_order(particles, std::move(all), d, threads);
         } catch (...) {
             allocation.join();
             throw;
@@ -207,11 +208,11 @@ std::vector<Particle> spatially_ordered(const std::vector<Particle>& particles, 
             std::rethrow_exception(failure);
         }
     } else {
-        order = spatial_order(particles, std::move(all), d);
+        order = spatial_order(particles, std::move(all), d, threads);
         allocate();
     }
     constexpr std::size_t kChunk = 65536;
-    parallel_for((order.size() + kChunk - 1) / kChunk, [&](std::size_t chunk) {
+    parallel_for(threads, (order.size() + kChunk - 1) / kChunk, [&](std::size_t chunk) {
         const std::size_t end = std::min(order.size(), (chunk + 1) * kChunk);
         for (std::size_t k = chunk * kChunk; k < end; ++k) {
             ordered[k] = particles[order[k]];
@@ -256,7 +257,7 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
                                  " slabs from the floor to the top sphere; at most " +
                                  std::to_string(static_cast<long>(kMaxSlabs)) + " are allowed");
     }
-    std::vector<Particle> particles = spatially_ordered(pack.particles, d);
+    std::vector<Particle> particles = spatially_ordered(pack.particles, d, options.threads);
     for (Particle& p : particles) {  // a foreign file's centres may lie a period out
         p.center = m.container.wrapped(p.center);
     }
@@ -283,9 +284,9 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
 
     m.phi = packing_fraction(field, m.region);
     stage_times.phi = watch.lap();
-    m.phi_profile =
-        packing_fraction_profile(field, m.region, m.container.floor,
-                                 std::max(m.top, m.region.hi.y()), options.slab_thickness * d);
+    m.phi_profile = packing_fraction_profile(field, m.region, m.container.floor,
+                                             std::max(m.top, m.region.hi.y()),
+                                             options.slab_thickness * d, options.threads);
     if (has_species(particles)) {
         std::map<int, std::vector<Particle>> of_species;
         for (const Particle& p : field) {
@@ -295,13 +296,13 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
             m.phi_profile_by_species.push_back(
                 {species, packing_fraction_profile(members, m.region, m.container.floor,
                                                    std::max(m.top, m.region.hi.y()),
-                                                   options.slab_thickness * d)
+                                                   options.slab_thickness * d, options.threads)
                               .phi});
         }
     }
     stage_times.phi_profile = watch.lap();
-    m.overlaps =
-        measure_overlaps(particles, m.container, d, options.overlap_floor, options.worst_count);
+    m.overlaps = measure_overlaps(particles, m.container, d, options.overlap_floor,
+                                  options.worst_count, options.threads);
     stage_times.overlaps = watch.lap();
 
     LocalStructureOptions local;
@@ -316,6 +317,7 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
                                            : center_space(particles, m.container, 0.5 * d),
                 m.container, reach);
     local.container = m.container;
+    local.threads = options.threads;
     m.local = measure_local_structure(field, origins, local);
     if (options.gr_thesis) {
         m.thesis_rdf = thesis_rdf(field, m.region, m.phi, options.gr_bin_width * d, local.bins);
@@ -330,10 +332,13 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
     per_species.density_rule = local.density_rule;
     per_species.tolerances = local.tolerances;
     per_species.originals = particles.size();
+    per_species.threads = options.threads;
     m.species = measure_species_structure(field, per_species);
     stage_times.species = watch.lap();
     if (options.voronoi) {
-        m.voronoi = voronoi_local_phi(particles, m.container, m.region);
+        VoronoiOptions voronoi;
+        voronoi.threads = options.threads;
+        m.voronoi = voronoi_local_phi(particles, m.container, m.region, voronoi);
     }
     stage_times.voronoi = watch.lap();
     m.mixing = mixing_profile(particles, m.container.floor);

@@ -150,12 +150,13 @@ std::vector<Index> NeighbourIndex::report_rank() const {
     return rank;
 }
 
-std::vector<std::pair<Index, Index>> pairs_within(const std::vector<Vec3>& points, double cutoff) {
+std::vector<std::pair<Index, Index>> pairs_within(const std::vector<Vec3>& points, double cutoff,
+                                                  unsigned threads) {
     const NeighbourIndex index(points);
     using Pairs = std::vector<std::pair<Index, Index>>;
     constexpr std::size_t kChunk = 4096;
     Pairs pairs = chunked_reduce(
-        points.size(), kChunk, Pairs{},
+        threads, points.size(), kChunk, Pairs{},
         [&](Pairs& partial, std::size_t begin, std::size_t end) {
             std::vector<Index> found;
             for (std::size_t i = begin; i < end; ++i) {

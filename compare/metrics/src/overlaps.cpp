@@ -101,7 +101,8 @@ OverlapSummary summarise(Tally tally, std::size_t limit) {
 }  // namespace
 
 OverlapStats measure_overlaps(const std::vector<Particle>& particles, const Container& container,
-                              double mean_diameter, double floor, std::size_t worst_count) {
+                              double mean_diameter, double floor, std::size_t worst_count,
+                              unsigned threads) {
     // The pairs in work items of fixed size, folded in order: the depth sum is the same
     // for any thread count. With periodic sides, minimum-image pairs through the images
     // (periodic_images.hpp), each once.
@@ -109,7 +110,7 @@ OverlapStats measure_overlaps(const std::vector<Particle>& particles, const Cont
         with_periodic_images(particles, container, 2.0 * max_radius(particles));
     const OverlapSearch search(imaged.particles);
     const Tally pairs = chunked_reduce(
-        particles.size(), kSpheresPerChunk, Tally{},
+        threads, particles.size(), kSpheresPerChunk, Tally{},
         [&](Tally& tally, std::size_t first, std::size_t last) {
             search.pairs_from(first, last, [&](std::size_t i, std::size_t image, double depth) {
                 const std::size_t j = imaged.source[image];

@@ -39,7 +39,7 @@ bool misses(const Particle& p, const Box& box) {
 
 PhiProfile packing_fraction_profile(const std::vector<Particle>& particles,
                                     const Box& cross_section, double y0, double y1,
-                                    double thickness) {
+                                    double thickness, unsigned threads) {
     if (!(thickness > 0.0) || !(y1 > y0)) {
         throw std::invalid_argument("phi profile needs a positive slab thickness and y1 > y0");
     }
@@ -60,7 +60,7 @@ PhiProfile packing_fraction_profile(const std::vector<Particle>& particles,
                      Vec3(cross_section.hi.x(), y1, cross_section.hi.z())};
     using Volumes = std::vector<double>;
     const Volumes volumes = chunked_reduce(
-        particles.size(), kChunk, Volumes(slabs, 0.0),
+        threads, particles.size(), kChunk, Volumes(slabs, 0.0),
         [&](Volumes& sums, std::size_t begin, std::size_t end) {
             for (std::size_t i = begin; i < end; ++i) {
                 const Particle& p = particles[i];

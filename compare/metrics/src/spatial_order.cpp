@@ -23,7 +23,7 @@ std::uint64_t spread_bits(std::uint64_t v) {
 
 /// Sorts by (code, index): eight parts sorted on the worker threads, then merged. The
 /// keys are distinct, so the result is the one sorted order whatever the thread count.
-void sort_in_parts(std::vector<std::pair<std::uint64_t, Index>>& keyed) {
+void sort_in_parts(std::vector<std::pair<std::uint64_t, Index>>& keyed, unsigned threads) {
     constexpr std::size_t kParts = 8;
     if (keyed.size() < 65536) {
         std::sort(keyed.begin(), keyed.end());
@@ -36,9 +36,9 @@ void sort_in_parts(std::vector<std::pair<std::uint64_t, Index>>& keyed) {
     const auto at = [&](std::size_t k) {
         return keyed.begin() + static_cast<std::ptrdiff_t>(bound[k]);
     };
-    parallel_for(kParts, [&](std::size_t k) { std::sort(at(k), at(k + 1)); });
+    parallel_for(threads, kParts, [&](std::size_t k) { std::sort(at(k), at(k + 1)); });
     for (std::size_t width = 1; width < kParts; width *= 2) {
-        parallel_for(kParts / (2 * width), [&](std::size_t m) {
+        parallel_for(threads, kParts / (2 * width), [&](std::size_t m) {
             const std::size_t first = 2 * width * m;
             std::inplace_merge(at(first), at(first + width), at(first + 2 * width));
         });
@@ -50,14 +50,14 @@ void sort_in_parts(std::vector<std::pair<std::uint64_t, Index>>& keyed) {
 /// counting sort in fixed parts on the worker threads (a part's keys go, in their order,
 /// after those of the parts before it), so keys given in increasing index come out sorted
 /// by (code, index): the same order as sort_in_parts.
-void radix_sort(std::vector<std::pair<std::uint64_t, Index>>& keyed) {
+void radix_sort(std::vector<std::pair<std::uint64_t, Index>>& keyed, unsigned threads) {
     constexpr int kBits = 11;
     constexpr std::size_t kDigits = std::size_t{1} << kBits;
     constexpr std::size_t kPart = 1 << 17;
     const std::size_t n = keyed.size();
     const std::size_t parts = (n + kPart - 1) / kPart;
     std::vector<std::uint64_t> tops(parts, 0);
-    parallel_for(parts, [&](std::size_t t) {
+    parallel_for(threads, parts, [&](std::size_t t) {
         for (std::size_t i = t * kPart; i < std::min(n, (t + 1) * kPart); ++i) {
             tops[t] |= keyed[i].first;
         }
@@ -73,7 +73,7 @@ void radix_sort(std::vector<std::pair<std::uint64_t, Index>>& keyed) {
             return static_cast<std::size_t>((code >> shift) & (kDigits - 1));
         };
         std::fill(counts.begin(), counts.end(), 0);
-        parallel_for(parts, [&](std::size_t t) {
+        parallel_for(threads, parts, [&](std::size_t t) {
             std::size_t* const count = counts.data() + t * kDigits;
             for (std::size_t i = t * kPart; i < std::min(n, (t + 1) * kPart); ++i) {
                 ++count[digit(keyed[i].first)];
@@ -87,7 +87,7 @@ void radix_sort(std::vector<std::pair<std::uint64_t, Index>>& keyed) {
                 at += c;
             }
         }
-        parallel_for(parts, [&](std::size_t t) {
+        parallel_for(threads, parts, [&](std::size_t t) {
             std::size_t* const next = counts.data() + t * kDigits;
             for (std::size_t i = t * kPart; i < std::min(n, (t + 1) * kPart); ++i) {
                 other[next[digit(keyed[i].first)]++] = keyed[i];
@@ -100,7 +100,7 @@ void radix_sort(std::vector<std::pair<std::uint64_t, Index>>& keyed) {
 }  // namespace
 
 std::vector<Index> spatial_order(const std::vector<Particle>& points, std::vector<Index> subset,
-                                 double cell) {
+                                 double cell, unsigned threads) {
     if (subset.empty()) {
         return subset;
     }
@@ -110,7 +110,7 @@ std::vector<Index> spatial_order(const std::vector<Particle>& points, std::vecto
     }
     std::vector<std::pair<std::uint64_t, Index>> keyed(subset.size());
     constexpr std::size_t kChunk = 65536;
-    parallel_for((subset.size() + kChunk - 1) / kChunk, [&](std::size_t chunk) {
+    parallel_for(threads, (subset.size() + kChunk - 1) / kChunk, [&](std::size_t chunk) {
         const std::size_t end = std::min(subset.size(), (chunk + 1) * kChunk);
         for (std::size_t k = chunk * kChunk; k < end; ++k) {
             const Index i = subset[k];
@@ -124,9 +124,9 @@ std::vector<Index> spatial_order(const std::vector<Particle>& points, std::vecto
         }
     });
     if (std::is_sorted(subset.begin(), subset.end())) {
-        radix_sort(keyed);
+        radix_sort(keyed, threads);
     } else {
-        sort_in_parts(keyed);
+        sort_in_parts(keyed, threads);
     }
     for (std::size_t k = 0; k < keyed.size(); ++k) {
         subset[k] = keyed[k].second;

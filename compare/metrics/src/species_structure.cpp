@@ -100,11 +100,11 @@ struct PairCounts {
 
 PairCounts count_pairs(const std::vector<Particle>& particles, const KdColumns& origins,
                        const KdColumns& targets, bool same_species, const Bins& bins,
-                       const std::vector<double>& thresholds, double close) {
+                       const std::vector<double>& thresholds, double close, unsigned threads) {
     const double reach = bins.outer(bins.count - 1);
     const double limit = std::max(reach, close);
     return chunked_reduce(
-        origins.columns(), kColumnsPerChunk, PairCounts(bins.count, thresholds.size()),
+        threads, origins.columns(), kColumnsPerChunk, PairCounts(bins.count, thresholds.size()),
         [&](PairCounts& part, std::size_t first, std::size_t last) {
             for (std::size_t column = first; column < last; ++column) {
                 const std::size_t begin = origins.column_begin(column);
@@ -138,10 +138,10 @@ PairCounts count_pairs(const std::vector<Particle>& particles, const KdColumns& 
 /// Σ over `origins` of the volume inside `space` of each bin's shell.
 std::vector<double> shell_volumes(const std::vector<Particle>& particles,
                                   const std::vector<Index>& origins, const Bins& bins,
-                                  const Box& space) {
+                                  const Box& space, unsigned threads) {
     const double last_outer = bins.outer(bins.count - 1);
     return chunked_reduce(
-        origins.size(), kOriginsPerChunk, std::vector<double>(bins.count, 0.0),
+        threads, origins.size(), kOriginsPerChunk, std::vector<double>(bins.count, 0.0),
         [&](std::vector<double>& part, std::size_t first, std::size_t last) {
             for (std::size_t o = first; o < last; ++o) {
                 const Vec3& c = particles[origins[o]].center;
@@ -198,8 +198,9 @@ std::optional<SpeciesStructure> measure_species_structure(const std::vector<Part
     std::vector<std::unique_ptr<KdColumns>> origin_columns;
     std::vector<std::unique_ptr<KdColumns>> all_columns;
     for (const Members& m : members) {
-        origin_columns.push_back(std::make_unique<KdColumns>(particles, m.origins, side));
-        all_columns.push_back(std::make_unique<KdColumns>(particles, m.all, side));
+        origin_columns.push_back(
+            std::make_unique<KdColumns>(particles, m.origins, side, options.threads));
+        all_columns.push_back(std::make_unique<KdColumns>(particles, m.all, side, options.threads));
     }
     const double space_volume = options.space.volume();
 
@@ -215,8 +216,9 @@ std::optional<SpeciesStructure> measure_species_structure(const std::vector<Part
             const double offset =
                 I.one_radius && J.one_radius ? contact - width * std::round(contact / width) : 0.0;
             const Bins bins{width, offset, options.bins};
-            const PairCounts counts = count_pairs(particles, *origin_columns[a], *all_columns[b],
-                                                  a == b, bins, thresholds, close_of(a, b));
+            const PairCounts counts =
+                count_pairs(particles, *origin_columns[a], *all_columns[b], a == b, bins,
+                            thresholds, close_of(a, b), options.threads);
             const auto origins = static_cast<double>(I.origins.size());
             for (const std::int64_t c : counts.contacts) {
                 z[a][b].push_back(origins > 0.0 ? static_cast<double>(c) / origins : 0.0);
@@ -229,7 +231,8 @@ std::optional<SpeciesStructure> measure_species_structure(const std::vector<Part
             pair.j = J.species;
             pair.bin_offset_over_d = offset / d;
             pair.pairs.assign(counts.pairs.begin(), counts.pairs.end() - 1);  // not beyond
-            pair.shell_volume = shell_volumes(particles, I.origins, bins, options.space);
+            pair.shell_volume =
+                shell_volumes(particles, I.origins, bins, options.space, options.threads);
             // g and ρ_J as g(r) normalises them (rdf.hpp: one density rule, one g).
             Rdf rdf;
             rdf.bin_width_over_d = options.bin_width_over_d;

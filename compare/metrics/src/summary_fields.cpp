@@ -8,9 +8,10 @@
 
 namespace sgmp::metrics {
 
-std::vector<std::string> summary_fields(const Pack& pack, bool voronoi) {
+std::vector<std::string> summary_fields(const Pack& pack, bool voronoi, unsigned threads) {
     MeasureOptions options;
     options.voronoi = voronoi;
+    options.threads = threads;
     options.gr_range = kSummaryGrRange;
     const Measurement m = measure(pack, options);
     std::vector<std::string> fields;

@@ -167,8 +167,8 @@ double fill_cell(voro::voronoicell& cell, const Vec3& c, double radius, double c
 template <class VoroContainer, class Put>
 void tessellate(const std::vector<Particle>& particles, const std::vector<int>& sorted,
                 const std::vector<int>& slot, const Box& bounds, const std::optional<Box>& periodic,
-                std::size_t originals, double mean_diameter, std::size_t cells_per_slab, Put put,
-                std::vector<Cell>& cells) {
+                std::size_t originals, double mean_diameter, std::size_t cells_per_slab,
+                unsigned threads, Put put, std::vector<Cell>& cells) {
     const bool open_sides = periodic.has_value();
     const double cap = bounds.hi.y();
     const double cap_tolerance = 1e-9 * (bounds.hi - bounds.lo).maxCoeff();
@@ -182,7 +182,7 @@ void tessellate(const std::vector<Particle>& particles, const std::vector<int>& 
     }
     const std::size_t slabs = std::max<std::size_t>(1, cells.size() / cells_per_slab);
     std::vector<std::vector<std::size_t>> redo(slabs);  // slots whose cell failed the test
-    parallel_for(slabs, [&](std::size_t s) {
+    parallel_for(threads, slabs, [&](std::size_t s) {
         const std::size_t first = s * cells.size() / slabs;
         const std::size_t last = (s + 1) * cells.size() / slabs;
         if (first == last) {
@@ -419,7 +419,7 @@ VoronoiPhi voronoi_local_phi(const std::vector<Particle>& input, const Container
     if (equal_radii) {
         tessellate<voro::container>(
             particles, sorted, slot, bounds, periodic, imaged.originals, mean_diameter,
-            options.cells_per_slab,
+            options.cells_per_slab, options.threads,
             [](voro::container& voro, int k, const Particle& p) {
                 voro.put(k, p.center.x(), p.center.y(), p.center.z());
             },
@@ -427,7 +427,7 @@ VoronoiPhi voronoi_local_phi(const std::vector<Particle>& input, const Container
     } else {
         tessellate<voro::container_poly>(
             particles, sorted, slot, bounds, periodic, imaged.originals, mean_diameter,
-            options.cells_per_slab,
+            options.cells_per_slab, options.threads,
             [](voro::container_poly& voro, int k, const Particle& p) {
                 voro.put(k, p.center.x(), p.center.y(), p.center.z(), p.radius);
             },

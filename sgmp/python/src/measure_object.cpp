@@ -83,8 +83,8 @@ py::dict measure(const py::object& pack_object, const std::optional<std::vector<
         throw ParameterError("threads", std::to_string(threads),
                              "must be in [0, 256] (0: all cores)");
     }
+    o.threads = threads;
     metrics::validate(o);
-    metrics::set_thread_count(threads);
     Measurement m;
     {
         py::gil_scoped_release unlocked;

@@ -34,10 +34,10 @@ namespace sgmp::metrics {
 class KdColumns {
   public:
     /// Columns of about side × side (side > 0) over every particle's centre.
-    KdColumns(const std::vector<Particle>& particles, double side);
+    KdColumns(const std::vector<Particle>& particles, double side, unsigned threads);
     /// The same over the particles `members` only (indices into `particles`).
     KdColumns(const std::vector<Particle>& particles, const std::vector<Index>& members,
-              double side);
+              double side, unsigned threads);
     ~KdColumns();
     KdColumns(const KdColumns&) = delete;
     KdColumns& operator=(const KdColumns&) = delete;

@@ -45,8 +45,9 @@ struct LocalStructureOptions {
     std::size_t bins = 251;  // bins_for(range / width): centred on 0, ΔR, …, 5·d
     RdfDensity density_rule = RdfDensity::Neighbours;
     double q6_cutoff = 1.2;
-    Box space;            // of neighbour centres, for g(r)
-    Container container;  // for wall contacts
+    Box space;             // of neighbour centres, for g(r)
+    Container container;   // for wall contacts
+    unsigned threads = 0;  // worker threads (parallel.hpp: 0 is every CPU the process may use)
 };
 
 /// Side of the pass's columns, over d (kd_columns.hpp sizes its leaves from it): 1.6 took

@@ -33,6 +33,7 @@ struct MeasureOptions {
     double overlap_floor = 1e-9;                     // overlaps deeper than this·d are counted
     bool voronoi = true;           // Voronoi local packing fraction (its own stage)
     std::size_t worst_count = 10;  // worst overlaps listed
+    unsigned threads = 0;          // worker threads (parallel.hpp: 0 is every CPU it may use)
 };
 
 /// Throws std::invalid_argument naming the option and the rule when an option is invalid.

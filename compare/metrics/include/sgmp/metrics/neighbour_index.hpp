@@ -42,6 +42,7 @@ class NeighbourIndex {
 };
 
 /// Every pair (i, j), i < j, with |p_i − p_j| ≤ cutoff, sorted.
-std::vector<std::pair<Index, Index>> pairs_within(const std::vector<Vec3>& points, double cutoff);
+std::vector<std::pair<Index, Index>> pairs_within(const std::vector<Vec3>& points, double cutoff,
+                                                  unsigned threads = 0);
 
 }  // namespace sgmp::metrics

@@ -40,6 +40,7 @@ struct OverlapStats {
 /// depths), in parallel work items of fixed size folded in order (so the depth sum is the
 /// same for any thread count).
 OverlapStats measure_overlaps(const std::vector<Particle>& particles, const Container& container,
-                              double mean_diameter, double floor, std::size_t worst_count);
+                              double mean_diameter, double floor, std::size_t worst_count,
+                              unsigned threads = 0);
 
 }  // namespace sgmp::metrics

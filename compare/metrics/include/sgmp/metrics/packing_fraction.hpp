@@ -24,6 +24,6 @@ struct PhiProfile {
 };
 PhiProfile packing_fraction_profile(const std::vector<Particle>& particles,
                                     const Box& cross_section, double y0, double y1,
-                                    double thickness);
+                                    double thickness, unsigned threads = 0);
 
 }  // namespace sgmp::metrics

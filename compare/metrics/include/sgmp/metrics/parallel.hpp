@@ -12,24 +12,26 @@
 
 namespace sgmp::metrics {
 
-/// Worker threads used by parallel loops; 0 (the default) means the CPUs the process may
-/// use (sgmp/pack/cpu_budget.hpp: affinity mask, OMP_NUM_THREADS, SLURM_CPUS_PER_TASK).
-void set_thread_count(unsigned count);
-unsigned thread_count();
+/// Every loop takes its worker threads from its caller (MeasureOptions::threads and the
+/// options it hands down): `threads` > 0 is that many; 0 means the CPUs the process may use
+/// (sgmp/pack/cpu_budget.hpp: affinity mask, OMP_NUM_THREADS, SLURM_CPUS_PER_TASK).
+unsigned resolved_threads(unsigned threads);
 
-/// sgmp::parallel_for (sgmp/pack/parallel.hpp) on thread_count() threads.
-void parallel_for(std::size_t count, const std::function<void(std::size_t)>& task);
+/// sgmp::parallel_for (sgmp/pack/parallel.hpp) on resolved_threads(threads) threads.
+void parallel_for(unsigned threads, std::size_t count,
+                  const std::function<void(std::size_t)>& task);
 
-/// Folds body(partial, begin, end) over fixed chunks of `chunk` items of [0, n):
-/// each chunk starts from `zero`, and the chunk partials are combined with
-/// fold(total, partial) in chunk order.
+/// Folds body(partial, begin, end), on `threads` workers, over fixed chunks of `chunk` items of [0,
+/// n): each chunk starts from `zero`, and the chunk partials are combined with fold(total, partial)
+/// in chunk order.
 template <class Partial, class Body, class Fold>
-Partial chunked_reduce(std::size_t n, std::size_t chunk, const Partial& zero, Body body,
-                       Fold fold) {
+Partial chunked_reduce(unsigned threads, std::size_t n, std::size_t chunk, const Partial& zero,
+                       Body body, Fold fold) {
     const std::size_t chunks = chunk == 0 ? 0 : (n + chunk - 1) / chunk;
     std::vector<Partial> partials(chunks, zero);
-    parallel_for(
-        chunks, [&](std::size_t c) { body(partials[c], c * chunk, std::min(n, (c + 1) * chunk)); });
+    parallel_for(threads, chunks, [&](std::size_t c) {
+        body(partials[c], c * chunk, std::min(n, (c + 1) * chunk));
+    });
     Partial total = zero;
     for (const Partial& partial : partials) {
         fold(total, partial);

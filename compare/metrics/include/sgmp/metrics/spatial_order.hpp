@@ -12,6 +12,6 @@ namespace sgmp::metrics {
 
 /// `subset` (indices into `points`) sorted by the Morton code of their cell of side `cell`.
 std::vector<Index> spatial_order(const std::vector<Particle>& points, std::vector<Index> subset,
-                                 double cell);
+                                 double cell, unsigned threads = 0);
 
 }  // namespace sgmp::metrics

@@ -47,6 +47,7 @@ struct SpeciesStructureOptions {
     /// Only the first `originals` particles are the pack's (origins, counts); the rest are
     /// periodic images (periodic_images.hpp), neighbours only.
     std::size_t originals = static_cast<std::size_t>(-1);
+    unsigned threads = 0;  // worker threads (parallel.hpp: 0 is every CPU it may use)
 };
 
 /// One species.

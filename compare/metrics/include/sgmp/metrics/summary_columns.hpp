@@ -44,6 +44,6 @@ const SummaryColumn* summary_column_of(const std::string& metric);
 /// Measures `pack` as the summary does (measure's defaults, g(r) to kSummaryGrRange,
 /// Voronoi when asked) and formats every column: the shortest text that reads back exactly,
 /// whole numbers for counts, "" for a value not measured.
-std::vector<std::string> summary_fields(const Pack& pack, bool voronoi);
+std::vector<std::string> summary_fields(const Pack& pack, bool voronoi, unsigned threads);
 
 }  // namespace sgmp::metrics

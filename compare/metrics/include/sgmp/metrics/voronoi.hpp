@@ -40,6 +40,8 @@ struct VoronoiOptions {
     std::size_t cells_per_slab = 50000;
     /// Keep every origin's φ_i in VoronoiPhi::local (pictures coloured by local φ).
     bool keep_local = false;
+    /// Worker threads (parallel.hpp: 0 is every CPU the process may use).
+    unsigned threads = 0;
 };
 
 /// φ_i over the origins of one species of a blend.

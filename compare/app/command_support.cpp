@@ -13,6 +13,7 @@
 #include "sgmp/metrics/metrics_output.hpp"
 #include "sgmp/metrics/parallel.hpp"
 #include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/bounded_file.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/option_rules.hpp"
 #include "sgmp/pack/pack_file.hpp"
@@ -24,14 +25,9 @@ namespace sgmp::compare::cli {
 
 namespace {
 
+/// A measured pack's file (its metrics.json or a curve's CSV), at most kMaxMetricsBytes.
 std::string read_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw InputError(path, 0, "cannot open for reading");
-    }
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+    return read_bounded_file(path, kMaxMetricsBytes, "a measured pack's file");
 }
 
 PackSummary read_measured(const std::string& path, const CommonOptions& o) {
@@ -123,7 +119,10 @@ void apply(CommonOptions& o) {
         throw UsageError(std::string("--out ") + error.what());
     }
     for (const auto& path : o.metrics) {
-        for (auto& [pack, summary] : summaries_from_batch(read_text(path), path)) {
+        const std::string text = ::sgmp::cli::while_doing("reading the summary " + path, [&] {
+            return read_bounded_file(path, kMaxSummaryBytes, "a batch summary");
+        });
+        for (auto& [pack, summary] : summaries_from_batch(text, path)) {
             o.precomputed[fs::path(pack).lexically_normal().string()] = std::move(summary);
         }
     }
@@ -147,7 +146,8 @@ Pack read_pack(const std::string& path, const std::optional<StatedContainer>& st
     ReadOptions options;
     options.threads = thread_count();  // the lines are parsed on the measurement's threads
     options.container = stated;
-    PackRead read = read_pack_file(path, options);
+    PackRead read = ::sgmp::cli::while_doing("reading the pack " + path,
+                                             [&] { return read_pack_file(path, options); });
     for (const std::string& warning : read.warnings) {
         std::cerr << "sgmp-compare: warning: " << path << ": " << warning << "\n";
     }
@@ -167,7 +167,8 @@ Measurement measure_pack(const std::string& path, const Pack& pack, const Common
     const auto start = std::chrono::steady_clock::now();
     Measurement m;
     try {
-        m = measure(pack, o.measure);
+        m = ::sgmp::cli::while_doing("measuring the pack " + path,
+                                     [&] { return measure(pack, o.measure); });
     } catch (const PackContentError& error) {  // the file's fault: status 1
         throw InputError(path, 0, error.what());
     } catch (const ParameterError& error) {  // an option's: status 2

@@ -19,12 +19,24 @@ std::string printable(std::string_view text) {
     return out;
 }
 
+std::string excerpt(std::string_view text, std::size_t max) {
+    if (text.size() <= max) {
+        return std::string(text);
+    }
+    const std::size_t tail = max / 3;
+    const std::size_t head = max - tail;
+    return std::string(text.substr(0, head)) + " ... [" +
+           std::to_string(text.size() - head - tail) + " bytes left out] ... " +
+           std::string(text.substr(text.size() - tail));
+}
+
 namespace {
 std::string compose(const std::string& source, std::size_t line, const std::string& reason) {
+    const std::string cut = excerpt(reason, kMaxReasonBytes);
     if (line == 0) {
-        return printable(source + ": " + reason);
+        return printable(excerpt(source, kMaxReasonBytes) + ": " + cut);
     }
-    return printable(source + ":" + std::to_string(line) + ": " + reason);
+    return printable(excerpt(source, kMaxReasonBytes) + ":" + std::to_string(line) + ": " + cut);
 }
 }  // namespace
 

@@ -315,7 +315,11 @@ ChunkParse parse_chunk(const LineBlock& block, std::size_t begin, std::size_t en
 /// as in a line-by-line read.
 void read_particle_lines(LineReader& reader, std::int64_t count, const Columns& columns,
                          const ReadOptions& options, PackRead& read) {
+    // A block holds at most kBlockLines lines and stops growing once it holds kBlockBytes,
+    // so the text buffered at once is below kBlockBytes + kMaxLineBytes (24 MiB) however
+    // long the lines (a gzip bomb of 15 MiB lines), not kBlockLines · kMaxLineBytes.
     constexpr std::int64_t kBlockLines = 1 << 16;
+    constexpr std::size_t kBlockBytes = std::size_t{8} << 20;
     constexpr std::size_t kChunkLines = 4096;
     std::vector<Particle>& particles = read.pack.particles;
     detail::ParticleValidator ids;
@@ -329,6 +333,9 @@ void read_particle_lines(LineReader& reader, std::int64_t count, const Columns& 
         block.first_line = reader.line_number() + 1;
         bool ended = false;
         for (std::int64_t k = 0; k < std::min(kBlockLines, count - done); ++k) {
+            if (block.text.size() >= kBlockBytes) {
+                break;  // long lines: the block is full before its line count
+            }
             if (!reader.next(line)) {
                 ended = true;
                 break;

@@ -23,6 +23,11 @@ std::string excerpt(std::string_view text, std::size_t max);
 /// a quoted header line of a few hundred bytes.
 inline constexpr std::size_t kMaxReasonBytes = 600;
 
+/// True when `text` is well-formed UTF-8 (no stray continuation byte, no overlong form, no
+/// surrogate, nothing beyond U+10FFFF). Text that reaches a JSON output must be: a Latin-1
+/// byte in a header value or a group name made the JSON writer fail after a whole run.
+bool is_utf8(std::string_view text);
+
 class InputError : public std::runtime_error {
   public:
     /// `line` is 1-based; 0 means the error concerns the file as a whole. A reason longer

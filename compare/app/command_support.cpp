@@ -4,10 +4,14 @@
 
 #include "sgmp/metrics/pack_content_error.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
+#include <map>
 #include <sstream>
 
 #include "sgmp/metrics/metrics_output.hpp"
@@ -17,6 +21,7 @@
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/option_rules.hpp"
 #include "sgmp/pack/pack_file.hpp"
+#include "sgmp/report/json_input.hpp"
 #include "sgmp/report/precomputed.hpp"
 
 namespace fs = std::filesystem;
@@ -31,17 +36,76 @@ std::string read_text(const std::string& path) {
 }
 
 PackSummary read_measured(const std::string& path, const CommonOptions& o) {
-    nlohmann::ordered_json metrics;
-    try {
-        metrics = nlohmann::ordered_json::parse(read_text(path));
-    } catch (const nlohmann::json::parse_error& error) {
-        throw InputError(path, 0, std::string("not valid JSON: ") + error.what());
-    }
+    const auto metrics = parse_json_input<nlohmann::ordered_json>(read_text(path), path);
     return summary_from_measure(path, metrics, read_text(sibling_csv(path, "g_r")),
                                 read_text(sibling_csv(path, "phi_y")), measure_parameters(o));
 }
 
+/// FNV-1a over a file's bytes; nullopt when it cannot be read.
+std::optional<std::uint64_t> content_hash(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        return std::nullopt;
+    }
+    std::uint64_t hash = 14695981039346656037ull;
+    std::vector<char> chunk(1 << 16);
+    while (in) {
+        in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+        const auto got = static_cast<std::size_t>(in.gcount());
+        for (std::size_t i = 0; i < got; ++i) {
+            hash = (hash ^ static_cast<unsigned char>(chunk[i])) * 1099511628211ull;
+        }
+    }
+    return in.bad() ? std::nullopt : std::optional(hash);
+}
+
+bool same_bytes(const std::string& a, const std::string& b) {
+    std::ifstream in_a(a, std::ios::binary);
+    std::ifstream in_b(b, std::ios::binary);
+    return in_a && in_b &&
+           std::equal(std::istreambuf_iterator<char>(in_a), std::istreambuf_iterator<char>(),
+                      std::istreambuf_iterator<char>(in_b), std::istreambuf_iterator<char>());
+}
+
 }  // namespace
+
+std::optional<SamePack> find_same_pack(const std::vector<std::string>& paths) {
+    std::map<std::string, std::size_t> by_path;  // canonical path -> first entry
+    std::map<std::uintmax_t, std::vector<std::size_t>> by_size;
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+        std::error_code error;
+        const std::string key = fs::weakly_canonical(paths[i], error).string();
+        const auto [it, fresh] = by_path.emplace(error ? paths[i] : key, i);
+        if (!fresh) {
+            return SamePack{it->second, i, true};
+        }
+        const auto size = fs::file_size(paths[i], error);
+        if (!error) {
+            by_size[size].push_back(i);
+        }
+    }
+    std::optional<SamePack> found;
+    for (const auto& [size, entries] : by_size) {
+        if (entries.size() < 2) {
+            continue;  // a copy has the size of its original
+        }
+        std::map<std::uint64_t, std::vector<std::size_t>> by_hash;
+        for (const std::size_t i : entries) {
+            const auto hash = content_hash(paths[i]);
+            if (!hash) {
+                continue;
+            }
+            for (const std::size_t earlier : by_hash[*hash]) {
+                if (same_bytes(paths[earlier], paths[i]) &&
+                    (!found || std::pair(i, earlier) < std::pair(found->second, found->first))) {
+                    found = SamePack{earlier, i, false};
+                }
+            }
+            by_hash[*hash].push_back(i);
+        }
+    }
+    return found;
+}
 
 void add_precomputed(CLI::App* command, CommonOptions& o) {
     command->add_option("--metrics", o.metrics,

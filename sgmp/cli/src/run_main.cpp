@@ -34,15 +34,6 @@ int report(std::string_view program, const std::string& message, int status) {
     return status;
 }
 
-/// The command that ran ("sgmp pack"), for a failure that names nothing more precise.
-std::string command_of(std::string_view program, const CLI::App& app) {
-    std::string command(program);
-    for (const CLI::App* sub : app.get_subcommands()) {
-        command += " " + sub->get_name();
-    }
-    return command;
-}
-
 }  // namespace
 
 std::string option_spelling(std::string_view name, const OptionSpellings& exceptions) {
@@ -98,9 +89,7 @@ int run_main(std::string_view program, CLI::App& app, const std::function<void()
         return report(program, usage_message(e, exceptions), 2);
     } catch (const UsageError& e) {
         return report(program, e.what(), 2);
-    } catch (const std::bad_alloc&) {
-        return report(program, out_of_memory_message(command_of(program, app)), 1);
-    } catch (const std::exception& e) {
+    } catch (const std::exception& e) {  // out of memory outside while_doing: failure_message
         return report(program, failure_message(e), 1);
     }
 }

@@ -4,18 +4,24 @@
 
 #include "sgmp/metrics/pack_content_error.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
+#include <map>
 #include <sstream>
 
 #include "sgmp/metrics/metrics_output.hpp"
 #include "sgmp/metrics/parallel.hpp"
 #include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/bounded_file.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/option_rules.hpp"
 #include "sgmp/pack/pack_file.hpp"
+#include "sgmp/report/json_input.hpp"
 #include "sgmp/report/precomputed.hpp"
 
 namespace fs = std::filesystem;
@@ -24,28 +30,82 @@ namespace sgmp::compare::cli {
 
 namespace {
 
+/// A measured pack's file (its metrics.json or a curve's CSV), at most kMaxMetricsBytes.
 std::string read_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw InputError(path, 0, "cannot open for reading");
-    }
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+    return read_bounded_file(path, kMaxMetricsBytes, "a measured pack's file");
 }
 
 PackSummary read_measured(const std::string& path, const CommonOptions& o) {
-    nlohmann::ordered_json metrics;
-    try {
-        metrics = nlohmann::ordered_json::parse(read_text(path));
-    } catch (const nlohmann::json::parse_error& error) {
-        throw InputError(path, 0, std::string("not valid JSON: ") + error.what());
-    }
+    const auto metrics = parse_json_input<nlohmann::ordered_json>(read_text(path), path);
     return summary_from_measure(path, metrics, read_text(sibling_csv(path, "g_r")),
                                 read_text(sibling_csv(path, "phi_y")), measure_parameters(o));
 }
 
+/// FNV-1a over a file's bytes; nullopt when it cannot be read.
+std::optional<std::uint64_t> content_hash(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        return std::nullopt;
+    }
+    std::uint64_t hash = 14695981039346656037ull;
+    std::vector<char> chunk(1 << 16);
+    while (in) {
+        in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+        const auto got = static_cast<std::size_t>(in.gcount());
+        for (std::size_t i = 0; i < got; ++i) {
+            hash = (hash ^ static_cast<unsigned char>(chunk[i])) * 1099511628211ull;
+        }
+    }
+    return in.bad() ? std::nullopt : std::optional(hash);
+}
+
+bool same_bytes(const std::string& a, const std::string& b) {
+    std::ifstream in_a(a, std::ios::binary);
+    std::ifstream in_b(b, std::ios::binary);
+    return in_a && in_b &&
+           std::equal(std::istreambuf_iterator<char>(in_a), std::istreambuf_iterator<char>(),
+                      std::istreambuf_iterator<char>(in_b), std::istreambuf_iterator<char>());
+}
+
 }  // namespace
+
+std::optional<SamePack> find_same_pack(const std::vector<std::string>& paths) {
+    std::map<std::string, std::size_t> by_path;  // canonical path -> first entry
+    std::map<std::uintmax_t, std::vector<std::size_t>> by_size;
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+        std::error_code error;
+        const std::string key = fs::weakly_canonical(paths[i], error).string();
+        const auto [it, fresh] = by_path.emplace(error ? paths[i] : key, i);
+        if (!fresh) {
+            return SamePack{it->second, i, true};
+        }
+        const auto size = fs::file_size(paths[i], error);
+        if (!error) {
+            by_size[size].push_back(i);
+        }
+    }
+    std::optional<SamePack> found;
+    for (const auto& [size, entries] : by_size) {
+        if (entries.size() < 2) {
+            continue;  // a copy has the size of its original
+        }
+        std::map<std::uint64_t, std::vector<std::size_t>> by_hash;
+        for (const std::size_t i : entries) {
+            const auto hash = content_hash(paths[i]);
+            if (!hash) {
+                continue;
+            }
+            for (const std::size_t earlier : by_hash[*hash]) {
+                if (same_bytes(paths[earlier], paths[i]) &&
+                    (!found || std::pair(i, earlier) < std::pair(found->second, found->first))) {
+                    found = SamePack{earlier, i, false};
+                }
+            }
+            by_hash[*hash].push_back(i);
+        }
+    }
+    return found;
+}
 
 void add_precomputed(CLI::App* command, CommonOptions& o) {
     command->add_option("--metrics", o.metrics,
@@ -123,7 +183,10 @@ void apply(CommonOptions& o) {
         throw UsageError(std::string("--out ") + error.what());
     }
     for (const auto& path : o.metrics) {
-        for (auto& [pack, summary] : summaries_from_batch(read_text(path), path)) {
+        const std::string text = ::sgmp::cli::while_doing("reading the summary " + path, [&] {
+            return read_bounded_file(path, kMaxSummaryBytes, "a batch summary");
+        });
+        for (auto& [pack, summary] : summaries_from_batch(text, path)) {
             o.precomputed[fs::path(pack).lexically_normal().string()] = std::move(summary);
         }
     }
@@ -148,7 +211,8 @@ Pack read_pack(const std::string& path, const std::optional<StatedContainer>& st
     ReadOptions options;
     options.threads = resolved_threads(threads);  // parsed on the measurement's threads
     options.container = stated;
-    PackRead read = read_pack_file(path, options);
+    PackRead read = ::sgmp::cli::while_doing("reading the pack " + path,
+                                             [&] { return read_pack_file(path, options); });
     for (const std::string& warning : read.warnings) {
         std::cerr << "sgmp-compare: warning: " << path << ": " << warning << "\n";
     }
@@ -168,7 +232,8 @@ Measurement measure_pack(const std::string& path, const Pack& pack, const Common
     const auto start = std::chrono::steady_clock::now();
     Measurement m;
     try {
-        m = measure(pack, o.measure);
+        m = ::sgmp::cli::while_doing("measuring the pack " + path,
+                                     [&] { return measure(pack, o.measure); });
     } catch (const PackContentError& error) {  // the file's fault: status 1
         throw InputError(path, 0, error.what());
     } catch (const ParameterError& error) {  // an option's: status 2

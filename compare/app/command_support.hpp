@@ -45,6 +45,19 @@ struct CommonOptions {
 };
 
 /// --out, --force and the measurement options.
+/// Two entries of a list of pack files that are one pack, and how: `same_file` (one file
+/// by two spellings, a symbolic link: the same canonical path) or byte-identical copies.
+struct SamePack {
+    std::size_t first = 0;
+    std::size_t second = 0;
+    bool same_file = false;
+};
+/// The first pair of `paths` that is one pack (reliability finding 8: `p1.xyz` and
+/// `./p1.xyz`, or a copy, counted as two seeds with no spread between them), or nullopt.
+/// Files are compared by canonical path, then by their bytes (hashed when two have the same
+/// size, then compared); a file that cannot be opened is left to its reader.
+std::optional<SamePack> find_same_pack(const std::vector<std::string>& paths);
+
 void add_common(CLI::App* command, CommonOptions& o);
 /// --metrics (crossval, report): packs whose metrics are precomputed in batch summaries.
 void add_precomputed(CLI::App* command, CommonOptions& o);

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <sstream>
 
 #include "command_support.hpp"
 #include "sgmp/metrics/metrics_output.hpp"
@@ -14,6 +15,7 @@
 #include "sgmp/report/baseline.hpp"
 #include "sgmp/report/crossval.hpp"
 #include "sgmp/report/crossval_render.hpp"
+#include "sgmp/report/json_input.hpp"
 #include "sgmp/report/manifest.hpp"
 #include "sgmp/report/report_files.hpp"
 #include "sgmp/report/report_pictures.hpp"
@@ -36,11 +38,9 @@ std::ifstream open_input(const std::string& path) {
 
 nlohmann::json read_json(const std::string& path) {
     auto in = open_input(path);
-    try {
-        return nlohmann::json::parse(in);
-    } catch (const nlohmann::json::parse_error& error) {
-        throw InputError(path, 0, std::string("not valid JSON: ") + error.what());
-    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parse_json_input(text.str(), path);
 }
 
 struct CrossvalOptions {
@@ -110,9 +110,32 @@ void state_containers(const std::vector<ManifestEntry>& manifest, const std::str
     }
 }
 
+/// One pack is one seed (reliability finding 8): two rows naming one file (`p1.xyz`,
+/// `./p1.xyz`, a link) or byte-identical copies are refused in one line naming both rows,
+/// before anything is measured.
+void refuse_same_packs(const std::vector<ManifestEntry>& manifest, const std::string& source) {
+    std::vector<std::string> paths;
+    paths.reserve(manifest.size());
+    for (const auto& e : manifest) {
+        paths.push_back(e.path);
+    }
+    const auto same = find_same_pack(paths);
+    if (!same) {
+        return;
+    }
+    const ManifestEntry& a = manifest[same->first];
+    const ManifestEntry& b = manifest[same->second];
+    throw InputError(source, b.line,
+                     "rows " + std::to_string(a.line) + " and " + std::to_string(b.line) +
+                         " name one pack ('" + a.path + "' and '" + b.path + "', " +
+                         (same->same_file ? "the same file" : "byte-identical copies") +
+                         "): each pack counts once");
+}
+
 int run_crossval(CrossvalOptions& o, const std::string& command) {
     auto manifest_in = open_input(o.manifest);
     const auto manifest = read_manifest(manifest_in, o.manifest);
+    refuse_same_packs(manifest, o.manifest);
     ThesisTables thesis;
     if (!o.thesis.empty()) {
         auto in = open_input(o.thesis);

@@ -12,6 +12,7 @@
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/pack_file.hpp"
 #include "sgmp/report/agreement.hpp"
+#include "sgmp/report/manifest.hpp"
 #include "sgmp/report/report_files.hpp"
 
 namespace sgmp::compare::cli {
@@ -38,8 +39,19 @@ struct HeaderOptions {
     bool allow_missing = false;
 };
 
+/// A pack's name reaches the JSON outputs (provenance.input): it must be UTF-8, or the
+/// JSON writer fails after the whole measurement (reliability finding 14).
+void check_utf8_names(const std::vector<std::string>& packs) {
+    for (const auto& path : packs) {
+        if (!is_utf8(path)) {
+            throw UsageError("pack '" + path + "': a file name must be UTF-8 (a Latin-1 byte?)");
+        }
+    }
+}
+
 /// Every pack must write its own output names.
 void check_distinct_stems(const std::vector<std::string>& packs) {
+    check_utf8_names(packs);
     std::map<std::string, std::string> stems;
     for (const auto& path : packs) {
         const auto [it, fresh] = stems.emplace(stem_of(path), path);
@@ -82,24 +94,29 @@ void check_labels(const std::string& label_a, const std::string& label_b) {
             throw UsageError("labels must be non-empty without commas, quotes or line breaks: '" +
                              label + "'");
         }
+        if (const auto rule = report::group_name_rule_broken(label)) {  // the manifest's rule
+            throw UsageError("label '" + label + "': " + *rule);
+        }
     }
 }
 
-/// One pack is one seed: a file given twice (by any spelling of its path) would count as
-/// two seeds with no spread between them.
+/// One pack is one seed: a file given twice (by any spelling of its path, or as a
+/// byte-identical copy) would count as two seeds with no spread between them.
 void check_distinct(const std::vector<std::string>& a, const std::vector<std::string>& b) {
-    std::map<std::string, std::string> seen;  // canonical path -> as given
-    for (const auto* list : {&a, &b}) {
-        for (const auto& path : *list) {
-            std::error_code error;
-            const std::string key = fs::weakly_canonical(path, error).string();
-            const auto [it, fresh] = seen.emplace(error ? path : key, path);
-            if (!fresh) {
-                throw UsageError("pack '" + path + "' is given twice (as '" + it->second +
-                                 "'): each pack counts once");
-            }
-        }
+    std::vector<std::string> all = a;
+    all.insert(all.end(), b.begin(), b.end());
+    check_utf8_names(all);
+    const auto same = find_same_pack(all);
+    if (!same) {
+        return;
     }
+    const std::string& first = all[same->first];
+    const std::string& second = all[same->second];
+    throw UsageError(same->same_file
+                         ? "pack '" + second + "' is given twice (as '" + first +
+                               "'): each pack counts once"
+                         : "packs '" + first + "' and '" + second +
+                               "' are byte-identical copies of one pack: each pack counts once");
 }
 
 int run_report(ReportOptions& o, const std::string& cmd) {

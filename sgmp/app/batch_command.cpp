@@ -35,6 +35,7 @@
 #include "sgmp/metrics/summary_columns.hpp"
 #endif
 #include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/bounded_file.hpp"
 #include "sgmp/pack/cpu_budget.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/output_lock.hpp"
@@ -73,14 +74,13 @@ struct Settings {
     std::vector<std::string> merge;
 };
 
+/// A batch summary's text, at most kMaxSummaryBytes (bounded_file.hpp).
 std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw FileProblem{path.string() + ": cannot be read"};
+    try {
+        return read_bounded_file(path, kMaxSummaryBytes, "a batch summary");
+    } catch (const InputError& e) {
+        throw FileProblem{e.what()};
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
 }
 
 /// The summary's columns: the batch's own and sgmp-compare's metric columns (none in a
@@ -120,7 +120,8 @@ int run_merge(const Settings& s) {
     }
     std::vector<SummaryTable> tables;
     for (const std::string& path : s.merge) {
-        tables.push_back(schema().parse(read_text(path), path));
+        tables.push_back(cli::while_doing("reading the summary " + path,
+                                          [&] { return schema().parse(read_text(path), path); }));
     }
     const std::string text = schema().merge(tables);
     write_file_atomically(s.summary, s.force, [&](std::ostream& out) { out << text; });
@@ -140,19 +141,22 @@ DistributionFiles read_distribution_files(const Settings& s) {
         if (value.empty() || sgmp::is_lognormal(value)) {
             continue;
         }
-        std::ifstream in(value, std::ios::binary);
-        if (!fs::is_regular_file(value) || !in) {
+        if (!fs::is_regular_file(value)) {
             throw BadValue{"--size-distribution " + value +
                            ": must name a readable file or be lognormal:MEDIAN:SIGMA[...]"};
         }
-        std::ostringstream text;
-        text << in.rdbuf();
+        std::string text;
         try {
-            (void)sgmp::parse_size_distribution_csv(text.str(), value);  // refused here, once
+            text = read_bounded_file(value, kMaxSmallFileBytes, "a size distribution file");
+        } catch (const InputError& e) {  // a file that cannot be read: exit 1
+            throw FileProblem{std::string("--size-distribution ") + e.what()};
+        }
+        try {
+            (void)sgmp::parse_size_distribution_csv(text, value);  // refused here, once
         } catch (const InputError& e) {
             throw BadValue{std::string("--size-distribution ") + e.what()};
         }
-        files.emplace(value, text.str());
+        files.emplace(value, std::move(text));
     }
     return files;
 }
@@ -497,10 +501,14 @@ int BatchCommand::run() {
         std::cerr << "sgmp: " << printable(e.what()) << "\n";
         return 2;
     } catch (const FileProblem& e) {
-        std::cerr << "sgmp: " << printable(e.message) << "\n";
+        std::cerr << "sgmp: " << printable(excerpt(e.message, cli::kMaxMessageBytes)) << "\n";
+        return 1;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "sgmp: " << cli::out_of_memory_message("sgmp batch") << "\n";
         return 1;
     } catch (const std::exception& e) {
-        std::cerr << "sgmp: " << printable(e.what()) << "\n";
+        std::cerr << "sgmp: " << printable(excerpt(cli::failure_message(e), cli::kMaxMessageBytes))
+                  << "\n";
         return 1;
     }
 }

@@ -26,6 +26,7 @@
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/engine/pack_parameters.hpp"
 #include "sgmp/pack/atomic_file.hpp"
+#include "sgmp/pack/bounded_file.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/interrupt.hpp"
 #include "sgmp/pack/option_rules.hpp"
@@ -144,7 +145,14 @@ std::vector<std::string> expand_config(std::vector<std::string> args, const CLI:
         if (!std::filesystem::is_regular_file(path)) {
             throw UsageError("--config " + path + ": must name a readable file");
         }
-        std::ifstream in(path);
+        // Read whole and bounded: a file that cannot be read is refused (exit 1), never
+        // taken for an empty one.
+        std::istringstream in;
+        try {
+            in.str(read_bounded_file(path, kMaxSmallFileBytes, "a config file"));
+        } catch (const InputError& e) {  // a bad file: exit 1
+            throw std::runtime_error(std::string("--config ") + e.what());
+        }
         try {
             // A key that names no option of the command is refused here, naming the file.
             const CLI::App* command = nullptr;
@@ -234,7 +242,9 @@ int run_pack(const Options& o) {
         progress.update("sgmp: " + text + seconds_text(), 1 + static_cast<int>(r.phase));
     };
     PackStats stats;
-    const Pack pack = make_pack(request, dropped, &stats, relaxing);
+    const Pack pack =
+        cli::while_doing("building the pack of " + std::to_string(request.count) + " spheres",
+                         [&] { return make_pack(request, dropped, &stats, relaxing); });
     const double seconds = progress.seconds();
     progress.finish();
     if (pack.metadata.get("certified") == std::optional<std::string>("false") &&

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <tuple>
+#include <vector>
 
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/pack_file.hpp"
@@ -469,6 +471,184 @@ BOOST_AUTO_TEST_CASE(crossval_and_regress_end_to_end) {
     write("one-side.csv", "role,group,count,seed,seconds,path\ncandidate,a,300,1,,x1.xyz\n");
     BOOST_TEST(run("crossval --manifest one-side.csv --out cv-bad").status == 1);
     BOOST_TEST(!fs::exists(scratch() / "cv-bad"));
+}
+
+// Reliability finding 8: one pack by two spellings, a link or a byte-identical copy counted
+// as two seeds (sd 0, a "differ" verdict, status 0). Refused in one line naming both rows.
+BOOST_AUTO_TEST_CASE(one_pack_spelled_two_ways_is_refused) {
+    for (int seed = 1; seed <= 3; ++seed) {
+        good_pack("d" + std::to_string(seed) + ".xyz", static_cast<std::uint64_t>(seed));
+    }
+    fs::remove(scratch() / "d1-link.xyz");
+    fs::create_symlink("d1.xyz", scratch() / "d1-link.xyz");
+    fs::copy_file(scratch() / "d1.xyz", scratch() / "d1-copy.xyz",
+                  fs::copy_options::overwrite_existing);
+    const std::string head = "role,group,count,seed,seconds,path\n";
+    const std::string refs = "reference,DEM,300,1,,d2.xyz\nreference,DEM,300,2,,d3.xyz\n";
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {"./d1.xyz",
+         "sgmp-compare: same.csv:3: rows 2 and 3 name one pack ('d1.xyz' and "
+         "'./d1.xyz', the same file): each pack counts once\n"},
+        {"d1-link.xyz",
+         "sgmp-compare: same.csv:3: rows 2 and 3 name one pack ('d1.xyz' and "
+         "'d1-link.xyz', the same file): each pack counts once\n"},
+        {"d1-copy.xyz",
+         "sgmp-compare: same.csv:3: rows 2 and 3 name one pack ('d1.xyz' and "
+         "'d1-copy.xyz', byte-identical copies): each pack counts once\n"}};
+    for (const auto& [second, message] : cases) {
+        write("same.csv",
+              head + "candidate,A,300,1,,d1.xyz\ncandidate,A,300,2,," + second + "\n" + refs);
+        const Result r = run("crossval --manifest same.csv --no-pictures --out cv-same");
+        BOOST_TEST(r.status == 1, second);
+        BOOST_TEST(r.err == message);
+        BOOST_TEST(!fs::exists(scratch() / "cv-same"));
+    }
+    // report: the spellings were caught, a copy was not.
+    const Result copy = run("report --a d1.xyz d1-copy.xyz --b d2.xyz d3.xyz --out r-same");
+    BOOST_TEST(copy.status == 2);
+    BOOST_TEST(copy.err ==
+               "sgmp-compare: packs 'd1.xyz' and 'd1-copy.xyz' are byte-identical "
+               "copies of one pack: each pack counts once\n");
+    BOOST_TEST(!fs::exists(scratch() / "r-same"));
+}
+
+// Reliability finding 10: values of *.metrics.json were taken unchecked (a diameter of 0,
+// -0.39 or 1e300, phi(y) 7.5 or NaN, a count of 61 for a pack of 60: that pack left its
+// group). Each is refused in one line naming the file, the key and the rule.
+BOOST_AUTO_TEST_CASE(metrics_json_values_keep_their_physical_range) {
+    for (int seed = 1; seed <= 3; ++seed) {
+        good_pack("v" + std::to_string(seed) + ".xyz", static_cast<std::uint64_t>(seed));
+    }
+    const Result measured = run("measure v1.xyz v2.xyz v3.xyz --no-voronoi --out vm --force");
+    BOOST_TEST_REQUIRE(measured.status == 0, measured.err);
+    const std::string json = sgmp::testing::read_bytes(scratch() / "vm" / "v1.metrics.json");
+    const std::string phi_y = sgmp::testing::read_bytes(scratch() / "vm" / "v1.phi_y.csv");
+    const std::string g_r = sgmp::testing::read_bytes(scratch() / "vm" / "v1.g_r.csv");
+    const auto replaced = [](std::string text, const std::string& from, const std::string& to) {
+        const auto at = text.find(from);
+        BOOST_TEST_REQUIRE(at != std::string::npos, from);
+        return text.replace(at, from.size(), to);
+    };
+    const auto value_of = [&](const std::string& key) {
+        const auto at = json.find("\"" + key + "\": ") + key.size() + 4;
+        return "\"" + key + "\": " + json.substr(at, json.find_first_of(",\n", at) - at);
+    };
+    const auto last_phi = phi_y.substr(phi_y.rfind(',') + 1);  // "0.5…\n"
+    const std::vector<std::tuple<std::string, std::string, std::string>> bad{
+        {replaced(json, value_of("diameter"), "\"diameter\": 0"), phi_y,
+         "'diameter' is 0: the mean diameter must be finite and > 0"},
+        {replaced(json, value_of("diameter"), "\"diameter\": -0.39"), phi_y,
+         "'diameter' is -0.39: the mean diameter must be finite and > 0"},
+        {replaced(json, value_of("diameter"), "\"diameter\": 1e300"), phi_y,
+         "'diameter' is 1e+300: half the mean diameter must lie between radius_min and "
+         "radius_max"},
+        {json, replaced(phi_y, last_phi, "7.5\n"), "phi(y) = 7.5 is physically impossible"},
+        {json, replaced(phi_y, last_phi, "nan\n"), "phi(y) = nan is physically impossible"},
+        {replaced(json, "\"count\": 300", "\"count\": 301"), phi_y,
+         "'count' is 301: g_r_detail.space_density times the volume of its space holds 300 "
+         "spheres"},
+    };
+    for (const auto& [text, slabs, message] : bad) {
+        write("vm/bad.metrics.json", text);
+        write("vm/bad.phi_y.csv", slabs);
+        write("vm/bad.g_r.csv", g_r);
+        const Result r =
+            run("report --a vm/bad.metrics.json vm/v2.metrics.json --b vm/v3.metrics.json "
+                "--no-voronoi --out r-bad");
+        BOOST_TEST(r.status == 1, message << ": " << r.err);
+        BOOST_TEST(lines(r.err) == 1u, r.err);
+        BOOST_TEST(r.err.find("sgmp-compare: vm/bad.metrics.json: ") == 0u, r.err);
+        BOOST_TEST(r.err.find(message) != std::string::npos, r.err);
+        BOOST_TEST(!fs::exists(scratch() / "r-bad"));
+    }
+    // The files as measured pass.
+    const Result good = run(
+        "report --a vm/v1.metrics.json vm/v2.metrics.json --b vm/v3.metrics.json vm/v1.metrics.json"
+        " --no-voronoi --out r-good --force");
+    BOOST_TEST(good.status == 2);  // v1 twice: one pack
+    const Result fine =
+        run("report --a vm/v1.metrics.json vm/v2.metrics.json --b vm/v3.metrics.json "
+            "--no-voronoi --out r-good --force");
+    BOOST_TEST(fine.status == 0, fine.err);
+}
+
+// Reliability finding 14: nlohmann's own messages escaped, naming no file (a number
+// beyond a double in a baseline), or after a whole run (a Latin-1 byte in a header value
+// or a group name broke the JSON writer). Each is one line naming the file; the Latin-1
+// byte is refused as the input is read.
+BOOST_AUTO_TEST_CASE(json_failures_name_the_file_and_latin1_is_refused_at_input) {
+    write("overflow.json", "{\"entries\": [{\"value\": 0.01e30802}]}\n");
+    const Result big = run("regress --baseline overflow.json --current overflow.json");
+    BOOST_TEST(big.status == 1);
+    BOOST_TEST(big.err ==
+               "sgmp-compare: overflow.json: not valid JSON (numbers must fit a "
+               "double): number overflow parsing '0.01e30802'\n");
+    write("latin1.xyz",
+          "1\nProperties=id:I:1:pos:R:3:radius:R:1:color:I:1 note=caf\xe9\n"
+          "1 0 0 0 0.05 0\n");
+    const Result header = run("measure latin1.xyz --out latin1-out");
+    BOOST_TEST(header.status == 1);
+    BOOST_TEST(lines(header.err) == 1u, header.err);
+    BOOST_TEST(header.err.find("latin1.xyz:2: header entry 'note=caf\\xe9' is not UTF-8") !=
+                   std::string::npos,
+               header.err);
+    BOOST_TEST(!fs::exists(scratch() / "latin1-out"));
+    for (int seed = 1; seed <= 2; ++seed) {
+        good_pack("u" + std::to_string(seed) + ".xyz", static_cast<std::uint64_t>(seed));
+    }
+    write("latin1.csv",
+          "role,group,count,seed,seconds,path\ncandidate,caf\xe9,300,1,,u1.xyz\n"
+          "reference,DEM,300,1,,u2.xyz\n");
+    const Result group = run("crossval --manifest latin1.csv --no-pictures --out latin1-cv");
+    BOOST_TEST(group.status == 1);
+    BOOST_TEST(group.err ==
+               "sgmp-compare: latin1.csv:2: field 'caf\\xe9' is not UTF-8 (a "
+               "Latin-1 byte?): a manifest must be UTF-8 text\n");
+    BOOST_TEST(!fs::exists(scratch() / "latin1-cv"));
+    good_pack("caf\xe9.xyz", 1);  // a file name reaches provenance.input
+    const Result name = run("measure 'caf\xe9.xyz' --no-voronoi --out latin1-name");
+    BOOST_TEST(name.status == 2);
+    BOOST_TEST(name.err ==
+               "sgmp-compare: pack 'caf\\xe9.xyz': a file name must be UTF-8 (a "
+               "Latin-1 byte?)\n");
+    BOOST_TEST(!fs::exists(scratch() / "latin1-name"));
+}
+
+// Reliability finding 17: group names reached report.md raw (`<script>`, `|`) and
+// report.csv and headline.csv as spreadsheet formulas (`=HYPERLINK(…)`). They are refused
+// at input in one line (the manifest's rule, sgmp-compare report's labels too).
+BOOST_AUTO_TEST_CASE(group_names_that_could_act_in_a_report_are_refused) {
+    for (int seed = 1; seed <= 2; ++seed) {
+        good_pack("g" + std::to_string(seed) + ".xyz", static_cast<std::uint64_t>(seed));
+    }
+    for (const std::string group : {"=HYPERLINK(\"\"http://x\"\";\"\"y\"\")", "+1", "-1",
+                                    "@SUM(A1)", "<script>x</script>", "a|b", "[x](javascript:y)"}) {
+        write("names.csv", "role,group,count,seed,seconds,path\ncandidate,\"" + group +
+                               "\",300,1,,g1.xyz\nreference,DEM,300,1,,g2.xyz\n");
+        const Result r = run("crossval --manifest names.csv --no-pictures --out names-cv");
+        BOOST_TEST(r.status == 1, group);
+        BOOST_TEST(lines(r.err) == 1u, r.err);
+        BOOST_TEST(r.err.find("sgmp-compare: names.csv:2: group '") == 0u, r.err);
+        BOOST_TEST(r.err.find("may not start with '=', '+', '-', '@'") != std::string::npos, r.err);
+        BOOST_TEST(!fs::exists(scratch() / "names-cv"));
+    }
+    const Result label = run("report --a g1.xyz --b g2.xyz --label-a '=1+1' --out names-r");
+    BOOST_TEST(label.status == 2);
+    BOOST_TEST(label.err.find("sgmp-compare: label '=1+1': a group name must be") == 0u, label.err);
+}
+
+// Reliability finding 11: the LAMMPS data reader keeps the extended XYZ reader's header
+// rule; `header FILE KEY` printed an escape sequence from a comment raw.
+BOOST_AUTO_TEST_CASE(header_of_a_data_file_never_prints_control_bytes) {
+    write("escape.data",
+          "LAMMPS data file\n# note=\x1b]0;owned\x07\n\n1 atoms\n1 atom types\n\n"
+          "-1 1 xlo xhi\n-1 1 ylo yhi\n-1 1 zlo zhi\n\nAtoms # sphere\n\n1 1 0.2 1 0 -0.9 0\n");
+    const Result r = run("header escape.data note");
+    BOOST_TEST(r.status == 1);
+    BOOST_TEST(r.out.empty());
+    BOOST_TEST(r.err ==
+               "sgmp-compare: escape.data:2: header entry 'note=\\x1b]0;owned\\x07' "
+               "holds a control character\n");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -79,13 +79,14 @@ BOOST_AUTO_TEST_CASE(bad_values_are_refused_with_option_value_and_rule) {
 
 BOOST_AUTO_TEST_CASE(running_out_of_memory_is_one_line_and_no_file) {
     // Under a 200 MB address-space limit a 3·10⁶-sphere pack cannot be made: exit 1, one
-    // line that says so (it was "sgmp: std::bad_alloc").
+    // line that names what was being built (it was "sgmp: std::bad_alloc").
     const Scratch s;
     const Run r =
         s.run("pack --count 3000000 --arrangement loose-random --out '" + s.path("p.xyz") + "'",
               "ulimit -v 200000;");
     BOOST_TEST(r.status == 1);
-    BOOST_TEST(r.err.rfind("sgmp: out of memory: ", 0) == 0, r.err);
+    BOOST_TEST(r.err.rfind("sgmp: building the pack of 3000000 spheres: out of memory: ", 0) == 0,
+               r.err);
     BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     BOOST_TEST(!fs::exists(s.path("p.xyz")));
 }

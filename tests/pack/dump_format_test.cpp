@@ -93,6 +93,29 @@ BOOST_AUTO_TEST_CASE(a_last_snapshot_cut_short_leaves_the_last_complete_one) {
                "pour.dump:21: column 'x' holds '0.x', which is not a number");
 }
 
+// Reliability finding 9: a second snapshot holding `nan` in its last, whole line was
+// taken for one cut short: `convert` wrote the first snapshot with status 0.
+BOOST_AUTO_TEST_CASE(a_corrupt_last_snapshot_is_refused_not_hidden) {
+    std::string nan_last = kSnapshot1;
+    nan_last.replace(nan_last.rfind("0.05"), 4, "nan");
+    BOOST_TEST(read_error(kSnapshot0 + nan_last) ==
+               "pour.dump:22: particle 8 has radius nan; a radius must be finite and > 0");
+    std::string nan_coordinate = kSnapshot1;
+    nan_coordinate.replace(nan_coordinate.rfind("0.6"), 3, "nan");
+    BOOST_TEST(read_error(kSnapshot0 + nan_coordinate) ==
+               "pour.dump:22: particle 8 has a coordinate that is not finite");
+    // The same line without its line break is a line cut short: the first snapshot stands.
+    std::istringstream cut(kSnapshot0 + nan_last.substr(0, nan_last.size() - 1));
+    BOOST_TEST(*read_dump_custom(cut, "pour.dump").metadata.get("timestep") == "0");
+    // The bin rule is the extended XYZ reader's (finding 12).
+    std::string bin = kSnapshot1;
+    bin.replace(bin.find("radius\n"), 7, "radius bin\n");
+    bin.replace(bin.find("0.05\n8"), 6, "0.05 -5\n8");
+    bin.replace(bin.rfind("0.05\n"), 5, "0.05 1\n");
+    BOOST_TEST(read_error(bin) ==
+               "pour.dump:10: column bin '-5' is not an integer in [0, 1000000]");
+}
+
 BOOST_AUTO_TEST_CASE(malformed_dumps_name_the_line_and_the_reason) {
     BOOST_TEST(read_error("") == "pour.dump: empty file: no snapshot");
     BOOST_TEST(read_error("hello\n") == "pour.dump:1: expected 'ITEM: TIMESTEP', found 'hello'");

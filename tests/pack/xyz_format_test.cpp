@@ -209,6 +209,32 @@ BOOST_AUTO_TEST_CASE(readers_refuse_what_would_allocate_without_bound) {
     BOOST_TEST(read_xyz(in, "pack.xyz").metadata.get("note")->size() == comment.size());
 }
 
+// Reliability finding 12: `bin` was cast to int unchecked (4294967297 became 1, -5 was
+// kept); the dump reader refused anything outside [0, 10^6]. One rule for both readers.
+BOOST_AUTO_TEST_CASE(bin_keeps_the_readers_one_range) {
+    for (const std::string bin : {"4294967297", "-5", "1000001"}) {
+        BOOST_TEST(read_error("1\n" + kHeader + "1 0 0 0 0.05 " + bin + "\n") ==
+                   "pack.xyz:3: bin '" + bin + "' is not an integer in [0, 1000000]");
+    }
+    std::istringstream in("1\n" + kHeader + "1 0 0 0 0.05 1000000\n");
+    BOOST_TEST(read_xyz(in, "pack.xyz").particles.at(0).color == 1000000);
+}
+
+// Reliability finding 14: a Latin-1 byte in a header value reached the JSON outputs, whose
+// writer failed after a whole measure ("invalid UTF-8 byte"). Refused at input.
+BOOST_AUTO_TEST_CASE(header_text_must_be_utf8) {
+    BOOST_TEST(read_error("1\nnote=caf\xe9 " + kHeader + "1 0 0 0 0.05 0\n") ==
+               "pack.xyz:2: header entry 'note=caf\\xe9' is not UTF-8 (a Latin-1 byte?): header "
+               "text must be UTF-8");
+    std::istringstream in("1\nnote=caf\xc3\xa9 " + kHeader + "1 0 0 0 0.05 0\n");
+    BOOST_TEST(*read_xyz(in, "pack.xyz").metadata.get("note") == "caf\xc3\xa9");
+    BOOST_TEST(sgmp::is_utf8("\xe2\x82\xac \xf0\x9f\x98\x80"));
+    for (const std::string bad :
+         {"\x80", "\xc0\xaf", "\xed\xa0\x80", "\xf4\x90\x80\x80", "\xe2\x82"}) {
+        BOOST_TEST(!sgmp::is_utf8(bad));
+    }
+}
+
 BOOST_AUTO_TEST_CASE(binary_bytes_are_escaped_in_messages) {
     BOOST_TEST(read_error("\x1b[2J\xff\n") ==
                "pack.xyz:1: expected the particle count, found '\\x1b[2J\\xff'");

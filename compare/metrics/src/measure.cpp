@@ -18,6 +18,7 @@
 
 #include "sgmp/metrics/parallel.hpp"
 #include "sgmp/metrics/spatial_order.hpp"
+#include "sgmp/pack/crowding.hpp"
 #include "sgmp/pack/pack_extent.hpp"
 #include "sgmp/pack/parameter_error.hpp"
 #include "sgmp/pack/periodic_images.hpp"
@@ -256,6 +257,19 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
                              "gives " + format_number(std::ceil(slabs)) +
                                  " slabs from the floor to the top sphere; at most " +
                                  std::to_string(static_cast<long>(kMaxSlabs)) + " are allowed");
+    }
+    // Before any pair search: spheres clumped past the hard-sphere limit (crowding.hpp)
+    // would make every pair pass O(N²), and their metrics mean nothing.
+    if (const auto crowded = overcrowded_cube(input)) {
+        const Particle& p = input[crowded->index];
+        throw PackContentError(
+            "sphere id " + std::to_string(p.id) + " at (" + format_number(p.center.x()) + ", " +
+            format_number(p.center.y()) + ", " + format_number(p.center.z()) +
+            "): " + std::to_string(crowded->centres) +
+            " sphere centres in one cube of side 2*r_min = " + format_number(crowded->cube_side) +
+            " with it; at most " + std::to_string(kMaxCentresPerCube) +
+            " fit unless spheres overlap by more than the smallest radius, which makes the "
+            "pair metrics meaningless");
     }
     std::vector<Particle> particles = spatially_ordered(pack.particles, d, options.threads);
     for (Particle& p : particles) {  // a foreign file's centres may lie a period out

@@ -28,6 +28,27 @@ const char* to_string(Role role) {
     return "candidate";
 }
 
+std::optional<std::string> group_name_rule_broken(std::string_view name) {
+    const std::string rule =
+        "a group name must be UTF-8 text without control characters or '<', '>', '|', '[', "
+        "']', and may not start with '=', '+', '-', '@' or a blank (it reaches Markdown, "
+        "HTML and CSV cells as it is)";
+    if (!is_utf8(name)) {
+        return rule;
+    }
+    if (!name.empty() && std::string_view("=+-@ ").find(name.front()) != std::string_view::npos) {
+        return rule;
+    }
+    for (const char c : name) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte < 0x20 || byte == 0x7f ||
+            std::string_view("<>|[]").find(c) != std::string_view::npos) {
+            return rule;
+        }
+    }
+    return std::nullopt;
+}
+
 namespace {
 
 Role parse_role(const std::string& field, const std::string& source, std::size_t number) {
@@ -55,6 +76,9 @@ ManifestEntry parse_entry(const std::vector<std::string>& fields, const std::str
     entry.group = fields[1];
     if (entry.group.empty()) {
         throw InputError(source, number, "the group is empty");
+    }
+    if (const auto rule = group_name_rule_broken(entry.group)) {
+        throw InputError(source, number, "group '" + entry.group + "': " + *rule);
     }
     const auto count = parse_csv_number<std::size_t>(fields[2]);
     if (!count || *count == 0) {
@@ -121,6 +145,14 @@ std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& so
                              "expected " + std::to_string(width) +
                                  " comma-separated fields, found " +
                                  std::to_string(quoted->size()));
+        }
+        for (const auto& field : *quoted) {  // every field reaches crossval.json
+            if (!is_utf8(field)) {
+                throw InputError(source, number,
+                                 "field '" + field +
+                                     "' is not UTF-8 (a Latin-1 byte?): a "
+                                     "manifest must be UTF-8 text");
+            }
         }
         ManifestEntry entry = parse_entry(*quoted, source, number);
         entry.line = number;

@@ -123,6 +123,21 @@ void check_physical(const PackSummary& pack) {
     for (std::size_t t = 0; t < pack.z_mean.size() && t < names.size(); ++t) {
         check_coordination(pack, t, pack.z_mean[t]);
     }
+    // A slab's φ(y) may pass Kepler's bound (a slab one d thick centred on a dense layer of
+    // a crystal), never 1.
+    for (const double phi : pack.phi_y) {
+        if (!(phi >= 0.0 && phi <= 1.0)) {
+            impossible(pack, "phi(y) = " + format_number(phi), "must lie in [0, 1]");
+        }
+    }
+    for (const auto* positions : {&pack.phi_y_mid, &pack.gr_r}) {
+        for (const double x : *positions) {
+            if (!std::isfinite(x)) {
+                impossible(pack, (positions == &pack.gr_r ? "r/d = " : "y = ") + format_number(x),
+                           "a position must be finite");
+            }
+        }
+    }
     for (const double g : pack.gr) {
         if (!(g >= 0.0) || !std::isfinite(g)) {
             impossible(pack, "g(r) = " + std::to_string(g), "must be finite and >= 0");

@@ -3,12 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <stdexcept>
 
 #include "sgmp/metrics/metrics_output.hpp"
 #include "sgmp/metrics/summary_columns.hpp"
 #include "sgmp/pack/csv_fields.hpp"
+#include "sgmp/pack/geometry.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/metadata.hpp"
+#include "sgmp/report/agreement.hpp"
 
 namespace sgmp::report {
 
@@ -182,6 +186,120 @@ std::vector<ContactRange> contact_ranges_of(const nlohmann::ordered_json& j, dou
     return contact_ranges(species_diameters, 2.0 * smallest / diameter, 2.0 * largest / diameter);
 }
 
+/// "'KEY' is VALUE: RULE", one line naming the file, the key and the rule it breaks.
+[[noreturn]] void out_of_range(const std::string& source, const std::string& key, double value,
+                               const std::string& rule) {
+    throw InputError(source, 0, "'" + key + "' is " + format_number(value) + ": " + rule);
+}
+
+/// A whole number of spheres in [0, most] at j[key], when the key is there.
+void check_sphere_count(const nlohmann::ordered_json& j, const std::string& key,
+                        const std::string& name, double most, const std::string& source) {
+    if (!j.contains(key)) {
+        return;
+    }
+    const double value = number_at(j, key, source);
+    if (!(value >= 0.0 && value <= most) || value != std::floor(value)) {
+        out_of_range(
+            source, name, value,
+            "must be a whole number of spheres from 0 to the count, " + format_number(most));
+    }
+}
+
+/// The values of a metrics file checked against their physical range and against each
+/// other, before anything is judged (reliability finding 10: a diameter of 0 or 1e300, a
+/// count of 61 for a pack of 60, were taken): the mean diameter finite and > 0 and between
+/// the smallest and largest sphere; the counts of origins, species and the g(r) space's
+/// spheres consistent with `count`; each P(Z) a histogram of the origins (every bin a
+/// whole number of them). φ, φ(y), Z and g(r) are check_physical's.
+void check_measure_values(const nlohmann::ordered_json& j, const PackSummary& s,
+                          const std::string& source) {
+    const double count = static_cast<double>(s.count);
+    if (!std::isfinite(s.diameter) || s.diameter <= 0.0) {
+        out_of_range(source, "diameter", s.diameter, "the mean diameter must be finite and > 0");
+    }
+    const double smallest = j.contains("radius_min") ? number_at(j, "radius_min", source) : NAN;
+    const double largest = j.contains("radius_max") ? number_at(j, "radius_max", source) : NAN;
+    for (const auto& [key, radius] : {std::pair{"radius_min", smallest}, {"radius_max", largest}}) {
+        if (j.contains(key) && !(std::isfinite(radius) && radius > 0.0)) {
+            out_of_range(source, key, radius, "a radius must be finite and > 0");
+        }
+    }
+    const double half = 0.5 * s.diameter;
+    constexpr double kRounding = 1e-9;  // relative: d is a mean of the radii, in doubles
+    if ((std::isfinite(smallest) && half < smallest * (1.0 - kRounding)) ||
+        (std::isfinite(largest) && half > largest * (1.0 + kRounding))) {
+        out_of_range(source, "diameter", s.diameter,
+                     "half the mean diameter must lie between radius_min and radius_max");
+    }
+    check_sphere_count(j, "origins", "origins", count, source);
+    if (j.contains("g_r_detail") && j["g_r_detail"].is_object()) {
+        const auto& rdf = j["g_r_detail"];
+        check_sphere_count(rdf, "origins", "g_r_detail.origins", count, source);
+        // N / volume of the g(r) space (local_structure.cpp), when that space lies inside
+        // the walls: with periodic sides it is widened and its N counts the images too.
+        if (rdf.contains("space_density") && rdf.contains("space") && j.contains("container") &&
+            j["container"].is_string()) {
+            const double density = number_at(rdf, "space_density", source);
+            const auto& space = rdf["space"];
+            std::optional<Container> walls;
+            try {
+                walls = Container::parse(j["container"].get<std::string>());
+            } catch (const std::invalid_argument&) {
+                throw InputError(source, 0,
+                                 "'container' is '" + j["container"].get<std::string>() +
+                                     "': must be five finite numbers x_min x_max z_min z_max "
+                                     "floor");
+            }
+            if (space.is_object()) {
+                const auto lo = numbers_at(rdf, "space", "lo", source);
+                const auto hi = numbers_at(rdf, "space", "hi", source);
+                if (lo.size() != 3 || hi.size() != 3) {
+                    throw InputError(source, 0,
+                                     "'g_r_detail.space' must hold lo and hi of 3 numbers");
+                }
+                const double volume = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
+                const bool inside = lo[0] >= walls->x_min && hi[0] <= walls->x_max &&
+                                    lo[2] >= walls->z_min && hi[2] <= walls->z_max;
+                const double spheres = density * volume;
+                if (inside && std::isfinite(spheres) &&
+                    std::abs(spheres - count) > 1e-6 * count + 1e-6) {
+                    out_of_range(source, "count", count,
+                                 "g_r_detail.space_density times the volume of its space holds " +
+                                     format_number(spheres) +
+                                     " spheres; the count must be the pack's");
+                }
+            }
+        }
+    }
+    if (j.contains("species") && j["species"].is_object() && j["species"].contains("species") &&
+        j["species"]["species"].is_array() && !j["species"]["species"].empty()) {
+        double sum = 0.0;
+        for (const auto& one : j["species"]["species"]) {
+            check_sphere_count(one, "count", "species.count", count, source);
+            sum += one.contains("count") ? number_at(one, "count", source) : 0.0;
+        }
+        if (sum != count) {
+            out_of_range(source, "count", count,
+                         "the species' counts add up to " + format_number(sum) +
+                             "; the count must be their sum");
+        }
+    }
+    const double origins = j.contains("origins") ? number_at(j, "origins", source) : NAN;
+    const auto& names = coordination_tolerance_names();
+    for (std::size_t t = 0; t < s.p_z.size() && std::isfinite(origins) && origins > 0.0; ++t) {
+        for (const double q : s.p_z[t]) {
+            const double spheres = q * origins;
+            if (std::abs(spheres - std::round(spheres)) > 1e-6 * origins) {
+                out_of_range(source, "p_z." + names.at(t), q,
+                             "P(Z) is a histogram of the " + format_number(origins) +
+                                 " origins: each bin must be a whole number of them over the "
+                                 "origins");
+            }
+        }
+    }
+}
+
 }  // namespace
 
 bool is_metrics_json(std::string_view path) {
@@ -233,6 +351,12 @@ PackSummary summary_from_measure(const std::string& source, const nlohmann::orde
     auto phi = columns(phi_y_csv, sibling_csv(source, "phi_y"), {"y_mid", "phi"});
     s.phi_y_mid = std::move(phi[0]);
     s.phi_y = std::move(phi[1]);
+    check_measure_values(j, s, source);
+    try {
+        check_physical(s);  // the rule every judged pack keeps, named against this file
+    } catch (const std::invalid_argument& error) {
+        throw InputError(source, 0, error.what());
+    }
     return s;
 }
 
@@ -247,6 +371,14 @@ std::vector<std::pair<std::string, PackSummary>> summaries_from_batch(std::strin
             continue;
         }
         const auto fields = split_csv_line(lines[n]);
+        for (const auto& f : fields) {  // paths and parameters reach the JSON outputs
+            if (!is_utf8(f)) {
+                throw InputError(source, n + 1,
+                                 "field '" + f +
+                                     "' is not UTF-8 (a Latin-1 byte?): a summary "
+                                     "must be UTF-8 text");
+            }
+        }
         if (header.empty()) {
             header = fields;
             if (std::find(header.begin(), header.end(), "split_ratio") == header.end() ||

@@ -30,7 +30,7 @@ std::string one_line(std::string text) {
 }
 
 int report(std::string_view program, const std::string& message, int status) {
-    std::cerr << program << ": " << printable(one_line(message)) << '\n';
+    std::cerr << program << ": " << printable(excerpt(one_line(message), kMaxMessageBytes)) << '\n';
     return status;
 }
 
@@ -59,6 +59,12 @@ std::string failure_message(const std::exception& error) {
     return error.what();
 }
 
+std::string out_of_memory_message(const std::string& what) {
+    return what +
+           ": out of memory: needs more memory than this process may use (ulimit -v, "
+           "the machine)";
+}
+
 int run_main(std::string_view program, CLI::App& app, const std::function<void()>& parse,
              const std::function<int()>& body, const OptionSpellings& exceptions) {
     wrap_help(app);  // every program's --help within kHelpWidth columns
@@ -72,6 +78,10 @@ int run_main(std::string_view program, CLI::App& app, const std::function<void()
         return report(program, usage_message(e, exceptions), 2);
     } catch (const UsageError& e) {
         return report(program, e.what(), 2);
+    } catch (const std::bad_alloc&) {
+        return report(program, out_of_memory_message("reading the command line"), 1);
+    } catch (const std::exception& e) {  // a --config file that cannot be read: exit 1
+        return report(program, failure_message(e), 1);
     }
     try {
         return body();
@@ -79,7 +89,7 @@ int run_main(std::string_view program, CLI::App& app, const std::function<void()
         return report(program, usage_message(e, exceptions), 2);
     } catch (const UsageError& e) {
         return report(program, e.what(), 2);
-    } catch (const std::exception& e) {
+    } catch (const std::exception& e) {  // out of memory outside while_doing: failure_message
         return report(program, failure_message(e), 1);
     }
 }

@@ -1,12 +1,11 @@
 #include "sgmp/cli/size_distribution_file.hpp"
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 #include <stdexcept>
 
 #include "sgmp/cli/run_main.hpp"
+#include "sgmp/pack/bounded_file.hpp"
 #include "sgmp/pack/input_error.hpp"
 #include "sgmp/pack/metadata.hpp"
 
@@ -14,14 +13,13 @@ namespace sgmp::cli {
 
 std::vector<SizeMode> read_size_distribution_file(const std::string& path,
                                                   std::string* largest_diameter) {
-    std::ifstream in(path, std::ios::binary);
-    if (!std::filesystem::is_regular_file(path) || !in) {
+    if (!std::filesystem::is_regular_file(path)) {
         throw UsageError("--size-distribution " + path + ": must name a readable file");
     }
-    std::ostringstream text;
-    text << in.rdbuf();
     try {
-        return parse_size_distribution_csv(text.str(), path, largest_diameter);
+        const std::string text =
+            read_bounded_file(path, kMaxSmallFileBytes, "a size distribution file");
+        return parse_size_distribution_csv(text, path, largest_diameter);
     } catch (const InputError& e) {  // a bad input file: exit 1 (docs/command-line.md)
         throw std::runtime_error(std::string("--size-distribution ") + e.what());
     }

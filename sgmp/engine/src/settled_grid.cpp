@@ -46,9 +46,48 @@ CellRange SettledGrid::z_range(double lo, double hi) const {
     return {clamp_index(lo, z_min_, hz_, nz_), clamp_index(hi, z_min_, hz_, nz_)};
 }
 
+void SettledGrid::make_sparse() {
+    sparse_layers_.assign(static_cast<std::size_t>(layers_), SparseLayer{});
+    for (int l = 0; l < layers_; ++l) {
+        for (int ix = 0; ix < nx_; ++ix) {
+            for (int iz = 0; iz < nz_; ++iz) {
+                std::vector<Sphere> spheres;
+                for_each_in_layer(l, CellRange{ix, ix}, CellRange{iz, iz},
+                                  [&](const Sphere& s) { spheres.push_back(s); });
+                if (!spheres.empty()) {
+                    sparse_layers_[static_cast<std::size_t>(l)].emplace(column_key(ix, iz),
+                                                                        std::move(spheres));
+                }
+            }
+        }
+    }
+    sparse_ = true;
+    layer_blocks_.clear();
+    layer_blocks_.shrink_to_fit();
+    spill_.clear();
+    spill_.shrink_to_fit();
+    reused_layers_ = 0;
+}
+
 void SettledGrid::insert(const Sphere& sphere) {
     const int l = layer_of(sphere.y);
     const std::size_t cells = static_cast<std::size_t>(nx_) * nz_;
+    if (!sparse_ && l >= static_cast<int>(layer_blocks_.size()) &&
+        (static_cast<std::size_t>(l) + 1) * cells >
+            std::max(kDenseCellFloor, kDenseCellsPerSphere * (size_ + 1))) {
+        make_sparse();
+    }
+    if (sparse_) {
+        layers_ = std::max(layers_, l + 1);
+        if (sparse_layers_.size() < static_cast<std::size_t>(layers_)) {
+            sparse_layers_.resize(static_cast<std::size_t>(layers_));
+        }
+        const int ix = clamp_index(sphere.x, x_min_, hx_, nx_);
+        const int iz = clamp_index(sphere.z, z_min_, hz_, nz_);
+        sparse_layers_[static_cast<std::size_t>(l)][column_key(ix, iz)].push_back(sphere);
+        ++size_;
+        return;
+    }
     if (l >= layers_) {
         while (static_cast<int>(layer_blocks_.size()) <= l) {
             static_assert(sizeof(Count) % alignof(Sphere) == 0);
@@ -100,6 +139,8 @@ void SettledGrid::reset(const Container& container) {
     size_ = 0;
     reused_layers_ = 0;
     spill_.clear();
+    sparse_layers_.clear();
+    sparse_ = false;  // dense again until the layers outgrow their budget
 }
 
 double lowest_free_height(const SettledGrid& grid, double x, double z, double r, double r_max,

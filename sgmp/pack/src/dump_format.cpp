@@ -220,12 +220,11 @@ Pack read_snapshot(LineReader& reader) {
                        ? field_number(fields[columns.radius], "radius", reader)
                        : 0.5 * field_number(fields[columns.diameter], "diameter", reader);
         if (columns.bin >= 0) {
-            const auto bin = detail::parse_integer(fields[columns.bin]);
-            if (!bin || *bin < 0 || *bin > 1000000) {
-                throw reader.error("column 'bin' holds '" + std::string(fields[columns.bin]) +
-                                   "', which is not an integer in [0, 1000000]");
+            const auto bin = detail::parse_bin(fields[columns.bin]);
+            if (!bin) {
+                throw reader.error("column " + detail::bin_error(fields[columns.bin]));
             }
-            p.color = static_cast<int>(*bin);
+            p.color = *bin;
         }
         if (columns.species >= 0) {
             const auto species = detail::parse_integer(fields[columns.species]);
@@ -281,9 +280,14 @@ Pack read_dump_lines(LineReader& reader) {
             last = read_snapshot(reader);
         } catch (const InputError&) {
             // A later snapshot cut short by the end of the file (a dump still being
-            // written, or a stopped run): the last complete one stands. An error with
-            // lines after it is a malformed file.
-            if (!reader.at_end()) {
+            // written, or a stopped run): the last complete one stands. Cut short means
+            // the file ended where the snapshot wanted another line, or its last line has
+            // no line break (cut inside it). Any other error (a bad value such as `nan` in
+            // a whole last line, an error with lines after it) is a malformed file: the
+            // snapshot it spoils is not hidden behind an earlier one.
+            const bool cut_short =
+                reader.ran_out() || (reader.at_end() && reader.last_line_unterminated());
+            if (!cut_short) {
                 throw;
             }
             break;

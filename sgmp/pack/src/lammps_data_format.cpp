@@ -145,11 +145,12 @@ Particle parse_atom(const std::string& line, const LineReader& reader) {
     }
     if (hash != std::string::npos) {
         const auto comment = detail::split_fields(std::string_view(line).substr(hash + 1));
-        if (comment.size() >= 2 && comment[0] == "bin") {
-            const auto bin = detail::parse_integer(comment[1]);
-            if (bin && *bin >= 0 && *bin <= 1000000) {
-                p.color = static_cast<int>(*bin);
+        if (comment.size() >= 2 && comment[0] == "bin") {  // the readers' one bin rule
+            const auto bin = detail::parse_bin(comment[1]);
+            if (!bin) {
+                throw reader.error(detail::bin_error(comment[1]));
             }
+            p.color = *bin;
         }
         if (comment.size() == 4 && comment[2] == "species") {  // "# bin B species S"
             const auto species = detail::parse_integer(comment[3]);
@@ -177,6 +178,7 @@ Pack read_lammps_data(std::istream& in, const std::string& source) {
     std::array<std::optional<std::pair<double, double>>, 3> bounds;
     const std::array<std::string, 3> bound_words{"xlo xhi", "ylo yhi", "zlo zhi"};
     bool in_atoms = false;
+    detail::HeaderKeys keys;  // the extended XYZ reader's header rule
     while (!in_atoms && reader.next(line)) {
         const std::string_view text = line;
         const auto first = text.find_first_not_of(" \t");
@@ -186,7 +188,10 @@ Pack read_lammps_data(std::istream& in, const std::string& source) {
             const auto eq = body.find('=');
             if (start != std::string_view::npos && eq != std::string_view::npos &&
                 is_key(body.substr(start, eq - start))) {
-                pack.metadata.set(body.substr(start, eq - start), std::string(body.substr(eq + 1)));
+                const std::string key(body.substr(start, eq - start));
+                std::string value(body.substr(eq + 1));
+                keys.add(key, value, reader);
+                pack.metadata.set(key, std::move(value));
             }
             continue;
         }
@@ -221,6 +226,9 @@ Pack read_lammps_data(std::istream& in, const std::string& source) {
     }
     pack.particles.reserve(static_cast<std::size_t>(std::min<std::int64_t>(*count, 1 << 16)));
     detail::ParticleValidator validator;
+    // A blend tags every atom with its species (`# bin B species S`): one untagged atom
+    // would be written as species 0, which no reader takes back.
+    std::optional<std::pair<std::size_t, bool>> first_tag;  // line of the first atom, tagged?
     while (static_cast<std::int64_t>(pack.particles.size()) < *count) {
         if (!reader.next(line)) {
             throw reader.error("file ends after " + std::to_string(pack.particles.size()) + " of " +
@@ -231,6 +239,17 @@ Pack read_lammps_data(std::istream& in, const std::string& source) {
         }
         pack.particles.push_back(parse_atom(line, reader));
         validator.check(pack.particles.back(), reader);
+        const bool tagged = pack.particles.back().species > 0;
+        if (!first_tag) {
+            first_tag = std::pair{reader.line_number(), tagged};
+        } else if (first_tag->second != tagged) {
+            throw reader.error(
+                "atom " + std::to_string(pack.particles.back().id) +
+                (tagged ? " has a species tag and the atom of line "
+                        : " lacks the species tag ('# bin B species S') of the atom of line ") +
+                std::to_string(first_tag->first) + (tagged ? " has none" : "") +
+                ": a blend tags every atom, a single size none");
+        }
     }
     // The box is only recorded, for a file that states no walls: a simulation box is not a
     // container (stated_container.hpp); the walls come from a `# container=` comment, as

@@ -26,12 +26,14 @@ bool LineReader::read_bounded(std::string& line) {
         }
         const auto got = static_cast<std::size_t>(in_.gcount());
         if (!in_.fail()) {  // the delimiter (counted in gcount), or the end after some text
+            unterminated_ = in_.eof();
             append(in_.eof() ? got : got - 1);
             return true;
         }
         if (in_.eof()) {  // the end, no delimiter
             append(got);
             in_.clear(std::ios::eofbit);
+            unterminated_ = !line.empty();
             return !line.empty();
         }
         append(got);  // the chunk filled: the line goes on
@@ -47,6 +49,7 @@ bool LineReader::next(std::string& line) {
         return true;
     }
     if (!read_bounded(line)) {
+        ran_out_ = true;
         return false;
     }
     if (!line.empty() && line.back() == '\r') {

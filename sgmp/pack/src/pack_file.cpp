@@ -21,6 +21,34 @@
 namespace sgmp {
 namespace {
 
+/// A stream buffer that yields `prefix`, then what is left in `rest`, a block at a time:
+/// a file whose first line was read to detect its format, read again from its start.
+class PrefixedBuffer : public std::streambuf {
+  public:
+    PrefixedBuffer(std::string prefix, std::streambuf& rest)
+        : prefix_(std::move(prefix)), rest_(rest) {
+        setg(prefix_.data(), prefix_.data(), prefix_.data() + prefix_.size());
+    }
+
+  protected:
+    int_type underflow() override {
+        if (gptr() < egptr()) {
+            return traits_type::to_int_type(*gptr());
+        }
+        const std::streamsize got = rest_.sgetn(block_.data(), block_.size());
+        if (got <= 0) {
+            return traits_type::eof();
+        }
+        setg(block_.data(), block_.data(), block_.data() + got);
+        return traits_type::to_int_type(*gptr());
+    }
+
+  private:
+    std::string prefix_;
+    std::streambuf& rest_;
+    std::array<char, 65536> block_{};
+};
+
 bool starts_with_gzip_magic(std::istream& in) {
     const int first = in.get();
     const int second = in.get();
@@ -100,13 +128,12 @@ PackRead read_detected(std::istream& in, const std::string& source, bool data_na
     }
     if (is_data) {
         refuse_frame(source, options, "LAMMPS data");
-        // The data reader numbers lines itself: hand it the rest of the stream.
-        std::ostringstream rest;
-        std::string text;
-        while (reader.next(text)) {
-            rest << text << '\n';
-        }
-        std::istringstream again(rest.str());
+        // The data reader numbers lines itself: hand it the line read and the rest of the
+        // stream as they come (the whole text was once copied twice into memory first).
+        std::string first;
+        reader.next(first);
+        PrefixedBuffer rest(first + '\n', *in.rdbuf());
+        std::istream again(&rest);
         return single(read_lammps_data(again, source), options, "data_box");
     }
     if (blanks > 0) {

@@ -88,6 +88,43 @@ std::optional<std::int64_t> parse_integer(std::string_view field) {
     return value;
 }
 
+std::optional<int> parse_bin(std::string_view field) {
+    const auto value = parse_integer(field);
+    if (!value || *value < 0 || *value > kMaxBin) {
+        return std::nullopt;
+    }
+    return static_cast<int>(*value);
+}
+
+std::string bin_error(std::string_view field) {
+    return "bin '" + std::string(field) + "' is not an integer in [0, " + std::to_string(kMaxBin) +
+           "]";
+}
+
+void HeaderKeys::add(const std::string& key, const std::string& value, const LineReader& reader) {
+    if (seen_.size() >= kMaxHeaderKeys) {
+        throw reader.error("more than " + std::to_string(kMaxHeaderKeys) +
+                           " header keys (the readers' limit)");
+    }
+    if (seen_.contains(key)) {
+        throw reader.error("header key '" + key + "' appears twice");
+    }
+    const auto control = [](const std::string& text) {
+        return std::any_of(text.begin(), text.end(), [](char c) {
+            const auto byte = static_cast<unsigned char>(c);
+            return (byte < 0x20 && byte != '\t') || byte == 0x7f;
+        });
+    };
+    if (control(key) || control(value)) {  // would reach terminals and copies raw
+        throw reader.error("header entry '" + key + "=" + value + "' holds a control character");
+    }
+    if (!is_utf8(key) || !is_utf8(value)) {  // would break the JSON outputs after a whole run
+        throw reader.error("header entry '" + key + "=" + value +
+                           "' is not UTF-8 (a Latin-1 byte?): header text must be UTF-8");
+    }
+    seen_.insert(key);
+}
+
 bool is_blank(std::string_view line) {
     return line.find_first_not_of(" \t") == std::string_view::npos;
 }

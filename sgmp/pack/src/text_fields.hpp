@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <istream>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,6 +29,27 @@ std::optional<std::int64_t> parse_integer(std::string_view field);
 /// Digits after the decimal point of a number's text, less its decimal exponent
 /// ("0.125" 3, "1.5e-05" 6, "12" 0, "1e3" 0): the place of its last written digit.
 int decimals_of(std::string_view field);
+
+/// The one bin rule of the readers (extended XYZ `bin`, dump `bin`, data `# bin`): an
+/// integer in [0, kMaxBin]. nullopt when `field` is not one (4294967297 is no bin 1).
+inline constexpr std::int64_t kMaxBin = 1000000;
+std::optional<int> parse_bin(std::string_view field);
+/// "bin 'FIELD' is not an integer in [0, 1000000]": the rule's one wording.
+std::string bin_error(std::string_view field);
+
+/// The one header rule of the pack readers (extended XYZ header, LAMMPS data `# key=value`
+/// comments): at most kMaxHeaderKeys keys, each once (a repeated key would leave which
+/// value counts to chance), key and value free of control characters (they would reach
+/// terminals raw: `sgmp-compare header`) and well-formed UTF-8 (they reach JSON outputs).
+inline constexpr std::size_t kMaxHeaderKeys = 10000;
+class HeaderKeys {
+  public:
+    /// Throws the reader's error at its current line when the entry breaks the rule.
+    void add(const std::string& key, const std::string& value, const LineReader& reader);
+
+  private:
+    std::set<std::string> seen_;
+};
 
 /// True when the line has only blanks.
 bool is_blank(std::string_view line);

@@ -52,33 +52,15 @@ std::string lower(std::string_view text) {
     return out;
 }
 
-/// The most keys a header may hold (a real one holds a few dozen): memory stays bounded.
-constexpr std::size_t kMaxHeaderKeys = 10000;
-
-/// key=value pairs of the comment line; values may be double-quoted. At most kMaxHeaderKeys
-/// keys, each at most once (a repeated key would leave which value counts to chance).
+/// key=value pairs of the comment line; values may be double-quoted. The header rule of
+/// every pack reader applies (detail::HeaderKeys: a bounded number of keys, each once, no
+/// control character, UTF-8).
 std::vector<std::pair<std::string, std::string>> parse_comment(const std::string& line,
                                                                const LineReader& reader) {
     std::vector<std::pair<std::string, std::string>> pairs;
-    std::set<std::string> seen;
+    detail::HeaderKeys keys;
     const auto add = [&](std::string key, std::string value) {
-        if (pairs.size() >= kMaxHeaderKeys) {
-            throw reader.error("more than " + std::to_string(kMaxHeaderKeys) +
-                               " header keys (the readers' limit)");
-        }
-        if (!seen.insert(key).second) {
-            throw reader.error("header key '" + key + "' appears twice");
-        }
-        const auto control = [](const std::string& text) {
-            return std::any_of(text.begin(), text.end(), [](char c) {
-                const auto byte = static_cast<unsigned char>(c);
-                return (byte < 0x20 && byte != '\t') || byte == 0x7f;
-            });
-        };
-        if (control(key) || control(value)) {  // would reach terminals and copies raw
-            throw reader.error("header entry '" + key + "=" + value +
-                               "' holds a control character");
-        }
+        keys.add(key, value, reader);
         pairs.emplace_back(std::move(key), std::move(value));
     };
     std::size_t pos = 0;
@@ -254,7 +236,11 @@ Particle parse_particle(std::string_view line, const Columns& columns, std::int6
         decimals = std::max(decimals, detail::decimals_of(fields[columns.diameter]));
     }
     if (columns.color >= 0) {
-        particle.color = static_cast<int>(integer_field(fields[columns.color], "bin", at));
+        const auto bin = detail::parse_bin(fields[columns.color]);
+        if (!bin) {
+            throw at.error(detail::bin_error(fields[columns.color]));
+        }
+        particle.color = *bin;
     }
     if (columns.species >= 0) {
         const std::int64_t species = integer_field(fields[columns.species], "species_id", at);
@@ -315,7 +301,11 @@ ChunkParse parse_chunk(const LineBlock& block, std::size_t begin, std::size_t en
 /// as in a line-by-line read.
 void read_particle_lines(LineReader& reader, std::int64_t count, const Columns& columns,
                          const ReadOptions& options, PackRead& read) {
+    // A block holds at most kBlockLines lines and stops growing once it holds kBlockBytes,
+    // so the text buffered at once is below kBlockBytes + kMaxLineBytes (24 MiB) however
+    // long the lines (a gzip bomb of 15 MiB lines), not kBlockLines · kMaxLineBytes.
     constexpr std::int64_t kBlockLines = 1 << 16;
+    constexpr std::size_t kBlockBytes = std::size_t{8} << 20;
     constexpr std::size_t kChunkLines = 4096;
     std::vector<Particle>& particles = read.pack.particles;
     detail::ParticleValidator ids;
@@ -329,6 +319,9 @@ void read_particle_lines(LineReader& reader, std::int64_t count, const Columns& 
         block.first_line = reader.line_number() + 1;
         bool ended = false;
         for (std::int64_t k = 0; k < std::min(kBlockLines, count - done); ++k) {
+            if (block.text.size() >= kBlockBytes) {
+                break;  // long lines: the block is full before its line count
+            }
             if (!reader.next(line)) {
                 ended = true;
                 break;

@@ -18,6 +18,7 @@
 #include "bindings.hpp"
 #include "sgmp/engine/make_pack.hpp"
 #include "sgmp/engine/pack_parameters.hpp"
+#include "sgmp/pack/bounded_file.hpp"
 #include "sgmp/pack/metadata.hpp"
 #include "sgmp/pack/option_rules.hpp"
 #include "sgmp/pack/parameter_error.hpp"
@@ -81,14 +82,13 @@ std::string text_of(const engine::PackParameter& row, const py::handle& value) {
 /// A size distribution given as a CSV file: the front end reads it, the engine parses it.
 void read_size_distribution(PackRequest& r, const py::handle& value) {
     const std::string spec = value.cast<std::string>();
-    std::ifstream in(spec, std::ios::binary);
-    if (!std::filesystem::is_regular_file(spec) || !in) {
+    if (!std::filesystem::is_regular_file(spec)) {
         throw bad("size_distribution", value,
                   "must name a readable file or be lognormal:MEDIAN:SIGMA[...]");
     }
-    std::ostringstream content;
-    content << in.rdbuf();
-    r.size_modes = sgmp::parse_size_distribution_csv(content.str(), spec, &r.largest_diameter);
+    const std::string content =
+        sgmp::read_bounded_file(spec, sgmp::kMaxSmallFileBytes, "a size distribution file");
+    r.size_modes = sgmp::parse_size_distribution_csv(content, spec, &r.largest_diameter);
     r.size_distribution = spec;
 }
 

@@ -16,6 +16,7 @@
 #include <istream>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "sgmp/pack/geometry.hpp"
@@ -39,9 +40,18 @@ struct ManifestEntry {
     std::size_t line = 0;
 };
 
+/// The rule a group name (a manifest's `group`, `report --label-a/--label-b`) keeps, or
+/// nullopt when it keeps it. Group names reach report.md (Markdown tables), index.html,
+/// report.csv and headline.csv, and crossval.json as they are, so they are refused, not
+/// escaped, when they could act there: well-formed UTF-8 (JSON), no control character,
+/// none of `< > | [ ]` (HTML tags, table cells, links in Markdown), and no first character
+/// a spreadsheet takes for a formula (`= + - @`, a blank).
+std::optional<std::string> group_name_rule_broken(std::string_view name);
+
 /// Reads a manifest strictly; throws sgmp::InputError ("source:line: reason") on a wrong
 /// header, a wrong number of fields, an unknown role, a non-numeric count, seed or seconds,
-/// an empty group or path, a path listed twice, or a container that is not five finite
+/// an empty group or path, a group name that breaks group_name_rule_broken, a field that is
+/// not UTF-8, a path listed twice, or a container that is not five finite
 /// numbers with x_min < x_max and z_min < z_max. Fields holding a comma or a quote are
 /// double-quoted, with quotes doubled (RFC 4180).
 std::vector<ManifestEntry> read_manifest(std::istream& in, const std::string& source);

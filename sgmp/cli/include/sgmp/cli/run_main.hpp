@@ -13,8 +13,10 @@
 /// A ParameterError names the parameter as the libraries spell it (`phi_target`); a
 /// program shows it as its option (`--phi-target`), through `option_spelling` and the
 /// program's own exceptions to that rule.
+#include <cstddef>
 #include <functional>
 #include <map>
+#include <new>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -45,6 +47,27 @@ std::string usage_message(const ParameterError& error, const OptionSpellings& ex
 /// run_main shows every failure through it; a command that reports its own failures
 /// (`sgmp convert`, `sgmp-reference`'s runs) does too.
 std::string failure_message(const std::exception& error);
+
+/// The message of a std::bad_alloc met while `what` was being read or built ("reading
+/// FILE", "building the pack"): "WHAT: out of memory: …".
+std::string out_of_memory_message(const std::string& what);
+
+/// Runs f() and returns what it returns; a std::bad_alloc thrown inside becomes a
+/// std::runtime_error with out_of_memory_message(what), so the one line a user sees names
+/// what was being read or built (exit 1).
+template <class F>
+decltype(auto) while_doing(const std::string& what, F&& f) {
+    try {
+        return f();
+    } catch (const std::bad_alloc&) {
+        throw std::runtime_error(out_of_memory_message(what));
+    }
+}
+
+/// The most bytes of a message a program prints (before escaping: at most 4 times as many
+/// after): a longer one (an error quoting a 16 MiB line) keeps its start and its end
+/// (excerpt, input_error.hpp).
+inline constexpr std::size_t kMaxMessageBytes = 1000;
 
 /// Runs `parse` (which parses the command line into `app`) and then `body` (the
 /// program's work, returning its exit status), mapping every exception to its one-line

@@ -15,9 +15,19 @@
 /// pack at φ ≈ 0.58), later ones in a spill list of the cell; a cell yields its spheres in
 /// insertion order. One scan of a box reads a few contiguous runs of memory instead of one heap
 /// block per cell.
+///
+/// Memory stays O(N) whatever the size ratio. Dense layers cost 72 bytes per cell, empty or
+/// not: a wide blend's small grid (cells of a small diameter, ratio q to the large) would
+/// need ~q³ cells per large sphere (ratio 100: 718 MB for 200 spheres; 1000: out of
+/// memory). So once the dense layers would exceed kDenseCellsPerSphere cells per stored
+/// sphere (and kDenseCellFloor cells in all), the grid turns sparse: per layer the occupied
+/// cells only, in an ordered map, each cell's spheres in insertion order, so scans see the
+/// same spheres in the same order as in the dense layers (the same packs, byte for byte),
+/// and a scan of many empty cells costs the occupied ones.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -52,6 +62,8 @@ class SettledGrid {
     [[nodiscard]] std::size_t size() const { return size_; }
     [[nodiscard]] double cell_side_x() const { return hx_; }
     [[nodiscard]] double cell_side_y() const { return hy_; }
+    /// True once the grid keeps only its occupied cells (see the file's comment).
+    [[nodiscard]] bool sparse() const { return sparse_; }
     /// Number of layers holding cells so far (0 when empty).
     [[nodiscard]] int layers() const { return layers_; }
     /// Layer containing height y (may be ≥ layers(); negative heights map to layer 0).
@@ -66,6 +78,10 @@ class SettledGrid {
     template <class F>
     void for_each_in_layer(int l, CellRange xs, CellRange zs, F&& f) const {
         if (l < 0 || l >= layers_) {
+            return;
+        }
+        if (sparse_) {
+            for_each_in_sparse_layer(l, xs, zs, f);
             return;
         }
         const Layer& layer = layer_blocks_[static_cast<std::size_t>(l)];
@@ -98,7 +114,58 @@ class SettledGrid {
         }
     }
 
+    /// Dense layers are kept while they hold at most kDenseCellsPerSphere cells per stored
+    /// sphere, or kDenseCellFloor cells (19 MB) in all.
+    static constexpr std::size_t kDenseCellsPerSphere = 64;
+    static constexpr std::size_t kDenseCellFloor = std::size_t{1} << 18;
+
   private:
+    /// A sparse layer: its occupied cells by column key ix·nz + iz (the dense order).
+    using SparseLayer = std::map<std::uint32_t, std::vector<Sphere>>;
+
+    /// Moves every stored sphere from the dense layers into the sparse ones.
+    void make_sparse();
+    [[nodiscard]] std::uint32_t column_key(int ix, int iz) const {
+        return static_cast<std::uint32_t>(ix) * static_cast<std::uint32_t>(nz_) +
+               static_cast<std::uint32_t>(iz);
+    }
+    /// for_each_in_layer of a sparse layer: an empty layer costs nothing, and a layer is
+    /// walked whole (fewer occupied cells than columns scanned) or from each column's first
+    /// cell in range, so a large sphere's scan of a fine grid costs the spheres near it,
+    /// not its cells.
+    template <class F>
+    void for_each_in_sparse_layer(int l, CellRange xs, CellRange zs, F&& f) const {
+        if (static_cast<std::size_t>(l) >= sparse_layers_.size()) {
+            return;
+        }
+        const SparseLayer& layer = sparse_layers_[static_cast<std::size_t>(l)];
+        if (layer.empty() || xs.hi < xs.lo || zs.hi < zs.lo) {
+            return;
+        }
+        const auto visit = [&](const std::vector<Sphere>& spheres) {
+            for (const Sphere& s : spheres) {
+                f(s);
+            }
+        };
+        if (layer.size() < static_cast<std::size_t>(xs.hi - xs.lo + 1)) {
+            for (const auto& [key, spheres] : layer) {
+                const int ix = static_cast<int>(key / static_cast<std::uint32_t>(nz_));
+                const int iz = static_cast<int>(key % static_cast<std::uint32_t>(nz_));
+                if (ix >= xs.lo && ix <= xs.hi && iz >= zs.lo && iz <= zs.hi) {
+                    visit(spheres);
+                }
+            }
+            return;
+        }
+        for (int ix = xs.lo; ix <= xs.hi; ++ix) {
+            const std::uint32_t last = column_key(ix, zs.hi);
+            for (auto it = layer.lower_bound(column_key(ix, zs.lo));
+                 it != layer.end() && it->first <= last; ++it) {
+                visit(it->second);
+            }
+        }
+    }
+
     double x_min_;
     double z_min_;
     double floor_;
@@ -129,6 +196,9 @@ class SettledGrid {
     std::vector<Layer> layer_blocks_;
     /// Spheres past the first kInline of a cell, one list per such cell.
     std::vector<std::vector<Sphere>> spill_;
+    /// Sparse: per layer the occupied cells, each with its spheres in insertion order.
+    bool sparse_ = false;
+    std::vector<SparseLayer> sparse_layers_;
 };
 
 /// Lowest height y ≥ `from` at which a sphere of radius r centred at (x, ·, z) overlaps no

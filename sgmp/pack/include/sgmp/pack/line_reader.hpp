@@ -28,6 +28,11 @@ class LineReader {
     void put_back(std::string line);
     /// True when no line is left to return.
     [[nodiscard]] bool at_end();
+    /// True once a call of next() found no line left: whoever called wanted more.
+    [[nodiscard]] bool ran_out() const { return ran_out_; }
+    /// True when the line most recently returned had no line break after it (the file's
+    /// last line, cut off or written without one).
+    [[nodiscard]] bool last_line_unterminated() const { return unterminated_; }
     /// Number of the line most recently returned (1-based).
     [[nodiscard]] std::size_t line_number() const { return line_number_; }
     [[nodiscard]] const std::string& source() const { return source_; }
@@ -44,6 +49,8 @@ class LineReader {
     std::string source_;
     std::size_t line_number_ = 0;
     std::optional<std::string> pushed_;
+    bool ran_out_ = false;
+    bool unterminated_ = false;
 };
 
 }  // namespace sgmp

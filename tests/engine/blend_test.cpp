@@ -47,8 +47,8 @@ BOOST_AUTO_TEST_CASE(a_distribution_file_reads_in_any_column_order) {
 
 BOOST_AUTO_TEST_CASE(bad_files_name_the_line_and_the_rule) {
     BOOST_TEST(csv_error("diameter,fraction,colour\n1,1,2\n") ==
-               "blend.csv:1: unknown column 'colour': the columns are diameter, fraction and "
-               "optionally density");
+               "blend.csv:1: unknown column 'colour': the columns are diameter (or "
+               "diameter_UNIT, UNIT one of m, cm, mm, um, nm), fraction and optionally density");
     BOOST_TEST(csv_error("diameter\n1\n").find("blend.csv:1: the header must name") == 0u);
     BOOST_TEST(csv_error("diameter,fraction\n0,1\n") ==
                "blend.csv:2: diameter 0: a diameter must be greater than 0");

@@ -73,12 +73,19 @@ double largest_residual(const std::vector<Particle>& p, const Container& box, do
     return largest;
 }
 
-/// Options converging the closed-form cases far below the default residual tolerance.
-ContactDynamicsOptions tight() {
-    ContactDynamicsOptions o;
-    o.residual_tolerance = 1e-9;
-    o.sweep_tolerance = 1e-13;
-    return o;
+/// Options converging the closed-form cases far below the default residual tolerance, with
+/// each solver of the steps' contact problems: MPRGP with its SSOR preconditioner (the
+/// default), MPRGP without, APGD and projected SOR.
+std::vector<ContactDynamicsOptions> tight() {
+    std::vector<ContactDynamicsOptions> all(4);
+    all[1].ssor = 0.0;
+    all[2].solver = ContactSolver::Apgd;
+    all[3].solver = ContactSolver::Sor;
+    for (ContactDynamicsOptions& o : all) {
+        o.residual_tolerance = 1e-9;
+        o.sweep_tolerance = 1e-13;
+    }
+    return all;
 }
 
 }  // namespace
@@ -87,36 +94,47 @@ BOOST_AUTO_TEST_SUITE(contact_dynamics)
 
 BOOST_AUTO_TEST_CASE(a_sphere_falls_onto_the_floor_and_rests_on_its_weight) {
     const Container box;
-    std::vector<Particle> p{sphere(0.1, box.floor + 0.6 * kD, -0.2)};
-    const ContactDynamicsStats s = settle_by_contact_dynamics(p, box, kD, tight());
-    BOOST_TEST(s.converged);
-    BOOST_TEST(std::abs(p[0].center.y() - (box.floor + 0.5 * kD)) <= 1e-9 * kD);
-    BOOST_TEST(p[0].center.x() == 0.1);  // nothing pushes it sideways
-    BOOST_TEST(s.forces.size() == 1u);
-    BOOST_TEST(force_on(s, 0, 0, Partner::Floor) == 1.0, boost::test_tools::tolerance(1e-6));
-    BOOST_TEST(s.energy_drop == 0.1, boost::test_tools::tolerance(1e-6));
-    const EquilibriumCertificate c = certify_frictionless(p, box, kD, {}, s.forces);
-    BOOST_TEST(c.certified);
-    BOOST_TEST(c.by_witness);
+    for (const ContactDynamicsOptions& o : tight()) {
+        BOOST_TEST_CONTEXT("solver " << static_cast<int>(o.solver) << ", ssor " << o.ssor) {
+            std::vector<Particle> p{sphere(0.1, box.floor + 0.6 * kD, -0.2)};
+            const ContactDynamicsStats s = settle_by_contact_dynamics(p, box, kD, o);
+            BOOST_TEST(s.converged);
+            BOOST_TEST(std::abs(p[0].center.y() - (box.floor + 0.5 * kD)) <= 1e-9 * kD);
+            BOOST_TEST(p[0].center.x() == 0.1);  // nothing pushes it sideways
+            BOOST_TEST(s.forces.size() == 1u);
+            BOOST_TEST(force_on(s, 0, 0, Partner::Floor) == 1.0,
+                       boost::test_tools::tolerance(1e-6));
+            BOOST_TEST(s.energy_drop == 0.1, boost::test_tools::tolerance(1e-6));
+            const EquilibriumCertificate c = certify_frictionless(p, box, kD, {}, s.forces);
+            BOOST_TEST(c.certified);
+            BOOST_TEST(c.by_witness);
+        }
+    }
 }
 
 BOOST_AUTO_TEST_CASE(a_column_lands_and_carries_its_weights_down) {
     // Three spheres one above the other with gaps 0.3·d, 0.2·d, 0.1·d: they end touching,
     // the floor carries 3 weights, the pairs 2 and 1 (closed form).
     const Container box;
-    std::vector<Particle> p{sphere(0, box.floor + 0.8 * kD, 0), sphere(0, box.floor + 2.0 * kD, 0),
-                            sphere(0, box.floor + 3.1 * kD, 0)};
-    const ContactDynamicsStats s = settle_by_contact_dynamics(p, box, kD, tight());
-    BOOST_TEST(s.converged);
-    for (int k = 0; k < 3; ++k) {
-        BOOST_TEST(std::abs(p[k].center.y() - (box.floor + (0.5 + k) * kD)) <= 1e-9 * kD);
+    const auto close = boost::test_tools::tolerance(1e-6);
+    for (const ContactDynamicsOptions& o : tight()) {
+        BOOST_TEST_CONTEXT("solver " << static_cast<int>(o.solver) << ", ssor " << o.ssor) {
+            std::vector<Particle> p{sphere(0, box.floor + 0.8 * kD, 0),
+                                    sphere(0, box.floor + 2.0 * kD, 0),
+                                    sphere(0, box.floor + 3.1 * kD, 0)};
+            const ContactDynamicsStats s = settle_by_contact_dynamics(p, box, kD, o);
+            BOOST_TEST(s.converged);
+            for (int k = 0; k < 3; ++k) {
+                BOOST_TEST(std::abs(p[k].center.y() - (box.floor + (0.5 + k) * kD)) <= 1e-9 * kD);
+            }
+            BOOST_TEST(force_on(s, 0, 0, Partner::Floor) == 3.0, close);
+            BOOST_TEST(force_on(s, 0, 1, Partner::Sphere) == 2.0, close);
+            BOOST_TEST(force_on(s, 1, 2, Partner::Sphere) == 1.0, close);
+            BOOST_TEST(s.energy_drop == 1.4, close);
+            BOOST_TEST(largest_residual(p, box, kD, s.forces) <= 1e-6);
+            BOOST_TEST(certify_frictionless(p, box, kD, {}, s.forces).by_witness);
+        }
     }
-    BOOST_TEST(force_on(s, 0, 0, Partner::Floor) == 3.0, boost::test_tools::tolerance(1e-6));
-    BOOST_TEST(force_on(s, 0, 1, Partner::Sphere) == 2.0, boost::test_tools::tolerance(1e-6));
-    BOOST_TEST(force_on(s, 1, 2, Partner::Sphere) == 1.0, boost::test_tools::tolerance(1e-6));
-    BOOST_TEST(s.energy_drop == 1.4, boost::test_tools::tolerance(1e-6));
-    BOOST_TEST(largest_residual(p, box, kD, s.forces) <= 1e-6);
-    BOOST_TEST(certify_frictionless(p, box, kD, {}, s.forces).by_witness);
 }
 
 BOOST_AUTO_TEST_CASE(a_sphere_on_three_held_by_the_walls_splits_its_weight) {
@@ -142,25 +160,30 @@ BOOST_AUTO_TEST_CASE(a_sphere_on_three_held_by_the_walls_splits_its_weight) {
     }
     const double cos_theta = std::sqrt(1.0 - 0.49);
     p.push_back(sphere(0, y0 + cos_theta * kD + 0.05 * kD, 0));
-    const ContactDynamicsStats s = settle_by_contact_dynamics(p, box, kD, tight());
-    BOOST_TEST(s.converged);
-    BOOST_TEST(std::abs(p[3].center.y() - (y0 + cos_theta * kD)) <= 1e-8 * kD);
     const double upper = 1.0 / (3.0 * cos_theta);
     const double push = upper * 0.7;
     const auto close = boost::test_tools::tolerance(1e-6);
-    for (std::size_t k = 0; k < 3; ++k) {
-        BOOST_TEST(force_on(s, k, 3, Partner::Sphere) == upper, close);
-        BOOST_TEST(force_on(s, k, 0, Partner::Floor) == 4.0 / 3.0, close);
+    for (const ContactDynamicsOptions& o : tight()) {
+        BOOST_TEST_CONTEXT("solver " << static_cast<int>(o.solver) << ", ssor " << o.ssor) {
+            std::vector<Particle> q = p;
+            const ContactDynamicsStats s = settle_by_contact_dynamics(q, box, kD, o);
+            BOOST_TEST(s.converged);
+            BOOST_TEST(std::abs(q[3].center.y() - (y0 + cos_theta * kD)) <= 1e-8 * kD);
+            for (std::size_t k = 0; k < 3; ++k) {
+                BOOST_TEST(force_on(s, k, 3, Partner::Sphere) == upper, close);
+                BOOST_TEST(force_on(s, k, 0, Partner::Floor) == 4.0 / 3.0, close);
+            }
+            BOOST_TEST(force_on(s, 0, 0, Partner::XMax) == push, close);
+            BOOST_TEST(force_on(s, 1, 0, Partner::XMin) == 0.5 * push, close);
+            BOOST_TEST(force_on(s, 1, 0, Partner::ZMax) == 0.5 * std::sqrt(3.0) * push, close);
+            BOOST_TEST(force_on(s, 2, 0, Partner::ZMin) == 0.5 * std::sqrt(3.0) * push, close);
+            BOOST_TEST(largest_residual(q, box, kD, s.forces) <= 1e-5);
+            const EquilibriumCertificate c = certify_frictionless(q, box, kD, {}, s.forces);
+            BOOST_TEST(c.certified);
+            BOOST_TEST(c.by_witness);
+            BOOST_TEST(c.overlap_max_over_d <= 1e-9);
+        }
     }
-    BOOST_TEST(force_on(s, 0, 0, Partner::XMax) == push, close);
-    BOOST_TEST(force_on(s, 1, 0, Partner::XMin) == 0.5 * push, close);
-    BOOST_TEST(force_on(s, 1, 0, Partner::ZMax) == 0.5 * std::sqrt(3.0) * push, close);
-    BOOST_TEST(force_on(s, 2, 0, Partner::ZMin) == 0.5 * std::sqrt(3.0) * push, close);
-    BOOST_TEST(largest_residual(p, box, kD, s.forces) <= 1e-5);
-    const EquilibriumCertificate c = certify_frictionless(p, box, kD, {}, s.forces);
-    BOOST_TEST(c.certified);
-    BOOST_TEST(c.by_witness);
-    BOOST_TEST(c.overlap_max_over_d <= 1e-9);
 }
 
 BOOST_AUTO_TEST_CASE(bad_options_are_refused) {
@@ -180,6 +203,9 @@ BOOST_AUTO_TEST_CASE(bad_options_are_refused) {
     refused([](ContactDynamicsOptions& o) { o.smallest_step = 0.0; });
     refused([](ContactDynamicsOptions& o) { o.max_steps = 0; });
     refused([](ContactDynamicsOptions& o) { o.max_sweeps = 0; });
+    refused([](ContactDynamicsOptions& o) { o.ssor = 2.0; });
+    refused([](ContactDynamicsOptions& o) { o.ssor = -0.5; });
+    refused([](ContactDynamicsOptions& o) { o.ssor = NAN; });
     BOOST_CHECK_THROW(settle_by_contact_dynamics(p, box, 0.0), std::invalid_argument);
 }
 
@@ -202,6 +228,23 @@ BOOST_AUTO_TEST_CASE(relaxed_packs_are_certified_by_the_settlings_own_forces) {
             BOOST_TEST(*pack.metadata.get_number("certificate_overlap_max") <= 1e-9);
         }
     }
+}
+
+BOOST_AUTO_TEST_CASE(the_same_request_settles_to_the_same_bytes) {
+    PackRequest request;
+    request.count = 150;
+    request.arrangement = Arrangement::LooseRandom;
+    request.seed = 2;
+    request.relax.mode = RelaxMode::Frictionless;
+    request.relax.settle = RelaxSettle::Dynamics;
+    const Pack first = make_pack(request);
+    const Pack second = make_pack(request);
+    BOOST_TEST_REQUIRE(first.particles.size() == second.particles.size());
+    for (std::size_t i = 0; i < first.particles.size(); ++i) {
+        BOOST_TEST((first.particles[i].center == second.particles[i].center), "sphere " << i);
+    }
+    BOOST_TEST(*first.metadata.get("relax_settle_sweeps") ==
+               *second.metadata.get("relax_settle_sweeps"));
 }
 
 BOOST_AUTO_TEST_CASE(the_settling_is_chosen_for_frictionless_relaxations_only) {

@@ -26,10 +26,11 @@ void check_options(const ContactDynamicsOptions& o) {
         !positive(o.residual_tolerance) || !positive(o.smallest_step) || o.smallest_step > 1.0 ||
         !(std::isfinite(o.step_shrink) && o.step_shrink > 1.0) || !positive(o.relaxation) ||
         !positive(o.shrink_below) || o.relaxation >= 2.0 || o.max_sweeps < 1 || o.max_steps < 1 ||
-        o.stall_window < 1) {
+        o.stall_window < 1 || !(o.ssor >= 0.0 && o.ssor < 2.0)) {
         throw std::invalid_argument(
             "contact dynamics: steps, cap and tolerances must be finite and > 0, relaxation in "
-            "(0, 2), smallest step in (0, 1], shrink > 1, sweeps, steps and window >= 1");
+            "(0, 2), smallest step in (0, 1], shrink > 1, sweeps, steps and window >= 1, ssor in "
+            "[0, 2)");
     }
 }
 
@@ -261,6 +262,227 @@ int solve_apgd(Dynamics& s, double tolerance, int max_iterations) {
     return std::min(k, max_iterations);
 }
 
+/// out = W·x (W = J·M⁻¹·Jᵀ) for impulses x in contact order; `scratch` holds M⁻¹·Jᵀ·x.
+void delassus_times(const Dynamics& s, const std::vector<double>& x, std::vector<double>& out,
+                    std::vector<V3>& scratch) {
+    std::fill(scratch.begin(), scratch.end(), V3{});
+    for (std::size_t k = 0; k < s.contacts.size(); ++k) {
+        const Contact& c = s.contacts[k];
+        if (x[k] == 0.0) {
+            continue;
+        }
+        const double ka = x[k] * s.inv_m[c.a];
+        scratch[c.a].x -= ka * c.nx;
+        scratch[c.a].y -= ka * c.ny;
+        scratch[c.a].z -= ka * c.nz;
+        if (c.b != kWall) {
+            const double kb = x[k] * s.inv_m[c.b];
+            scratch[c.b].x += kb * c.nx;
+            scratch[c.b].y += kb * c.ny;
+            scratch[c.b].z += kb * c.nz;
+        }
+    }
+    for (std::size_t k = 0; k < s.contacts.size(); ++k) {
+        const Contact& c = s.contacts[k];
+        const V3& va = scratch[c.a];
+        double u = -(c.nx * va.x + c.ny * va.y + c.nz * va.z);
+        if (c.b != kWall) {
+            const V3& vb = scratch[c.b];
+            u += c.nx * vb.x + c.ny * vb.y + c.nz * vb.z;
+        }
+        out[k] = u;
+    }
+}
+
+/// z ≈ W_FF⁻¹·r on the free contacts (x > 0; z = 0 elsewhere) by one symmetric Gauss–Seidel
+/// sweep from z = 0, forward then backward over the contacts (SSOR with ω, a symmetric
+/// positive definite preconditioner of W_FF); `scratch` holds M⁻¹·Jᵀ·z.
+void ssor_apply(const Dynamics& s, const std::vector<double>& x, const std::vector<double>& r,
+                double omega, std::vector<double>& z, std::vector<V3>& scratch) {
+    std::fill(scratch.begin(), scratch.end(), V3{});
+    std::fill(z.begin(), z.end(), 0.0);
+    const auto relax = [&](std::size_t k) {
+        const Contact& c = s.contacts[k];
+        V3& va = scratch[c.a];
+        double wz = -(c.nx * va.x + c.ny * va.y + c.nz * va.z);
+        if (c.b != kWall) {
+            const V3& vb = scratch[c.b];
+            wz += c.nx * vb.x + c.ny * vb.y + c.nz * vb.z;
+        }
+        const double dz = omega * (r[k] - wz) * c.inv_w;
+        z[k] += dz;
+        const double ka = dz * s.inv_m[c.a];
+        va.x -= ka * c.nx;
+        va.y -= ka * c.ny;
+        va.z -= ka * c.nz;
+        if (c.b != kWall) {
+            V3& vb = scratch[c.b];
+            const double kb = dz * s.inv_m[c.b];
+            vb.x += kb * c.nx;
+            vb.y += kb * c.ny;
+            vb.z += kb * c.nz;
+        }
+    };
+    const std::size_t n = s.contacts.size();
+    for (std::size_t k = n; k-- > 0;) {
+        if (x[k] > 0.0) {
+            relax(k);
+        }
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        if (x[k] > 0.0) {
+            relax(k);
+        }
+    }
+}
+
+/// The contact problem min ½·pᵀWp + qᵀp over p ≥ 0 by MPRGP (Dostál 2009, ch. 8): conjugate
+/// gradients on the contacts carrying an impulse (the free set) while the chopped gradient (of
+/// the contacts at p = 0 that would press) stays below the free one (Γ = 1), a feasible step
+/// and a projected gradient step of 1.9/L (expansion) where a CG step would leave p ≥ 0, and a
+/// steepest step on the chopped gradient otherwise (proportioning). With `ssor` > 0 the
+/// conjugate gradients are preconditioned in the face by a symmetric Gauss–Seidel sweep over
+/// the free contacts of relaxation `ssor` (ssor_apply). From the warm start, until every
+/// projected gradient component is below `tolerance`·h (a velocity: m·g·h/m); returns the
+/// products with W.
+int solve_mprgp(Dynamics& s, double tolerance, int max_products, double ssor) {
+    const std::size_t n = s.contacts.size();
+    const double inv_h = 1.0 / s.h;
+    const double alpha_bar = 1.9 / std::max(delassus_bound(s), 1e-300);
+    std::vector<double> x(n), q(n), g(n), d(n), ad(n), free_g(n), z(n);
+    std::vector<V3> scratch(s.v.size());
+    velocities_for(s, std::vector<double>(n, 0.0));
+    for (std::size_t c = 0; c < n; ++c) {
+        x[c] = std::max(0.0, s.contacts[c].p);
+        q[c] = s.contacts[c].gap * inv_h + normal_velocity(s, s.contacts[c]);
+    }
+    const auto full_gradient = [&] {
+        delassus_times(s, x, g, scratch);
+        for (std::size_t c = 0; c < n; ++c) {
+            g[c] += q[c];
+        }
+    };
+    // The free gradient φ and its preconditioned form z (z = φ without preconditioning).
+    const auto free_part = [&] {
+        for (std::size_t c = 0; c < n; ++c) {
+            free_g[c] = x[c] > 0.0 ? g[c] : 0.0;
+        }
+        if (ssor > 0.0) {
+            ssor_apply(s, x, free_g, ssor, z, scratch);
+        } else {
+            z = free_g;
+        }
+    };
+    // ‖β‖², φ̃ᵀφ and the largest projected gradient component.
+    struct Split {
+        double chopped = 0.0;
+        double reduced = 0.0;
+        double largest = 0.0;
+    };
+    const auto split = [&] {
+        Split r;
+        for (std::size_t c = 0; c < n; ++c) {
+            if (x[c] > 0.0) {
+                r.reduced += std::min(x[c] / alpha_bar, g[c]) * g[c];
+                r.largest = std::max(r.largest, std::abs(g[c]));
+            } else if (g[c] < 0.0) {
+                r.chopped += g[c] * g[c];
+                r.largest = std::max(r.largest, -g[c]);
+            }
+        }
+        return r;
+    };
+    int products = 1;
+    full_gradient();
+    free_part();
+    d = z;
+    const double bound = tolerance * s.h;
+    while (products < max_products) {
+        const Split now = split();
+        if (now.largest <= bound) {
+            break;
+        }
+        if (now.chopped <= now.reduced) {
+            delassus_times(s, d, ad, scratch);
+            ++products;
+            double dad = 0.0, gd = 0.0;
+            for (std::size_t c = 0; c < n; ++c) {
+                dad += d[c] * ad[c];
+                gd += g[c] * d[c];
+            }
+            if (!(dad > 0.0) || !(gd > 0.0)) {  // no descent left along d: restart
+                full_gradient();
+                ++products;
+                for (std::size_t c = 0; c < n; ++c) {
+                    x[c] = std::max(0.0, x[c] - alpha_bar * (x[c] > 0.0 ? g[c] : 0.0));
+                }
+                full_gradient();
+                ++products;
+                free_part();
+                d = z;
+                continue;
+            }
+            const double a_cg = gd / dad;
+            double a_f = INFINITY;
+            for (std::size_t c = 0; c < n; ++c) {
+                if (d[c] > 0.0) {
+                    a_f = std::min(a_f, x[c] / d[c]);
+                }
+            }
+            if (a_cg <= a_f) {
+                for (std::size_t c = 0; c < n; ++c) {
+                    x[c] -= a_cg * d[c];
+                    g[c] -= a_cg * ad[c];
+                }
+                free_part();
+                double zad = 0.0;
+                for (std::size_t c = 0; c < n; ++c) {
+                    zad += z[c] * ad[c];
+                }
+                const double gamma = zad / dad;
+                for (std::size_t c = 0; c < n; ++c) {
+                    d[c] = z[c] - gamma * d[c];
+                }
+            } else {
+                for (std::size_t c = 0; c < n; ++c) {
+                    x[c] = std::max(0.0, x[c] - a_f * d[c]);
+                    g[c] -= a_f * ad[c];
+                }
+                for (std::size_t c = 0; c < n; ++c) {
+                    x[c] = std::max(0.0, x[c] - alpha_bar * (x[c] > 0.0 ? g[c] : 0.0));
+                }
+                full_gradient();
+                ++products;
+                free_part();
+                d = z;
+            }
+        } else {
+            for (std::size_t c = 0; c < n; ++c) {
+                z[c] = x[c] > 0.0 ? 0.0 : std::min(g[c], 0.0);  // β
+            }
+            delassus_times(s, z, ad, scratch);
+            ++products;
+            double bab = 0.0, gb = 0.0;
+            for (std::size_t c = 0; c < n; ++c) {
+                bab += z[c] * ad[c];
+                gb += g[c] * z[c];
+            }
+            const double a = bab > 0.0 ? gb / bab : alpha_bar;
+            for (std::size_t c = 0; c < n; ++c) {
+                x[c] = std::max(0.0, x[c] - a * z[c]);
+                g[c] -= a * ad[c];
+            }
+            free_part();
+            d = z;
+        }
+    }
+    for (std::size_t c = 0; c < n; ++c) {
+        s.contacts[c].p = x[c];
+    }
+    velocities_for(s, x);
+    return products;
+}
+
 /// Keeps the impulses for the next step's warm start (a pair or wall not in the step's
 /// contacts is open: 0).
 void store_impulses(Dynamics& s) {
@@ -360,9 +582,17 @@ double step(Dynamics& s, const ContactDynamicsOptions& o, int sweeps, ContactDyn
     keep_list(s);
     gather_contacts(s);
     start_velocities(s);
-    stats.sweeps += o.solver == ContactSolver::Apgd
-                        ? solve_apgd(s, o.sweep_tolerance, sweeps)
-                        : solve_contacts(s, o.sweep_tolerance, o.relaxation, sweeps);
+    switch (o.solver) {
+        case ContactSolver::Apgd:
+            stats.sweeps += solve_apgd(s, o.sweep_tolerance, sweeps);
+            break;
+        case ContactSolver::Sor:
+            stats.sweeps += solve_contacts(s, o.sweep_tolerance, o.relaxation, sweeps);
+            break;
+        case ContactSolver::Mprgp:
+            stats.sweeps += solve_mprgp(s, o.sweep_tolerance, sweeps, o.ssor);
+            break;
+    }
     store_impulses(s);
     const double residual = step_residual(s);
     move(s);

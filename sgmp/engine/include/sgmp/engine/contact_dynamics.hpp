@@ -39,13 +39,18 @@
 ///     p_c ← max(0, p_c − ω·(u_c + g_c/h)/W_c),   W_c = 1/mᵢ + 1/mⱼ   (walls: 1/mᵢ),
 ///
 /// updating vᵢ and vⱼ at once, each sweep from the top of the pack down (the spheres are
-/// ordered bottom up) — or, by default (`solver`), as the dual problem
-/// min ½·pᵀWp + pᵀ(g/h + u*) over p ≥ 0 (W = J·M⁻¹·Jᵀ, u* the closing velocities without
-/// impulses) by Nesterov's accelerated projected gradient with gradient restart (APGD, as in
-/// Chrono; step 1/L, L a Gershgorin bound on W), whose convergence degrades less with the
-/// pack's depth (below) — started from the last step's impulses (warm start: kept per pair
-/// across neighbour-list rebuilds), until no sweep or iteration changes any force p_c/h by
-/// more than
+/// ordered bottom up) — or as the dual problem min ½·pᵀWp + pᵀ(g/h + u*) over p ≥ 0
+/// (W = J·M⁻¹·Jᵀ, u* the closing velocities without impulses), either by Nesterov's
+/// accelerated projected gradient with gradient restart (APGD, as in Chrono; step 1/L, L a
+/// Gershgorin bound on W), or, by default (`solver`), by MPRGP (Dostál, Optimal Quadratic
+/// Programming Algorithms, Springer 2009, ch. 8): conjugate gradients on the contacts
+/// carrying an impulse, preconditioned there by one symmetric Gauss–Seidel sweep (SSOR,
+/// ω = `ssor`; 0: none), with expansion steps (a feasible step, then a projected gradient
+/// step of 1.9/L) where a conjugate step would leave p ≥ 0, and proportioning steps on the
+/// contacts at p = 0 that would press. Each solver starts from the last step's impulses
+/// (warm start: kept per pair across neighbour-list rebuilds), and runs until no sweep or
+/// iteration changes any force p_c/h by more than (MPRGP: no contact's projected gradient,
+/// times m/h, exceeds)
 /// `sweep_tolerance`, or `max_sweeps` (times the factor h has shrunk by, below). Displacements per
 /// step are capped at `step_cap`·d (a faster sphere's velocity is scaled down; a gap that opens or
 /// closes by it is corrected by the next step's g_c/h), so every pair that may touch within a step
@@ -89,20 +94,26 @@ enum class ContactSolver {
     Apgd,
     /// Projected SOR (NSGS over-relaxed), sweeps from the top down.
     Sor,
+    /// Conjugate gradients on the free contacts with expansion and proportioning steps
+    /// (MPRGP: Dostál, Optimal Quadratic Programming Algorithms, Springer 2009, ch. 8),
+    /// preconditioned by a symmetric Gauss–Seidel sweep when `ssor` > 0.
+    Mprgp,
 };
 
 struct ContactDynamicsOptions {
-    ContactSolver solver = ContactSolver::Apgd;  ///< of each step's contact problem
-    double time_step = 0.1;                      ///< first h, over √(d/g)
-    double smallest_step = 1.0 / 27;             ///< smallest h, over the first
-    double step_shrink = 3.0;                    ///< h is divided by this on a stall
-    long stall_window = 100;                     ///< steps over which a stall is judged
-    double shrink_below = 3e-3;        ///< h shrinks only once a residual was below this, m·g
-    double relaxation = 1.8;           ///< ω of the projected SOR, in (0, 2)
-    bool inertia = false;              ///< keep velocities while their power is positive
-    double step_cap = 0.02;            ///< largest displacement per step, over d
-    double sweep_tolerance = 1e-7;     ///< NSGS ends when no force changes by more, m·g
-    int max_sweeps = 500;              ///< NSGS sweeps per step at most
+    ContactSolver solver = ContactSolver::Mprgp;  ///< of each step's contact problem
+    double time_step = 0.3;                       ///< first h, over √(d/g)
+    double smallest_step = 1.0 / 27;              ///< smallest h, over the first
+    double step_shrink = 3.0;                     ///< h is divided by this on a stall
+    long stall_window = 100;                      ///< steps over which a stall is judged
+    double shrink_below = 3e-3;     ///< h shrinks only once a residual was below this, m·g
+    double relaxation = 1.8;        ///< ω of the projected SOR, in (0, 2)
+    bool inertia = false;           ///< keep velocities while their power is positive
+    double step_cap = 0.02;         ///< largest displacement per step, over d
+    double sweep_tolerance = 1e-7;  ///< NSGS ends when no force changes by more, m·g
+    int max_sweeps = 500;           ///< sweeps (APGD iterations, MPRGP products) per step
+    /// MPRGP only: ω of its symmetric Gauss–Seidel preconditioner, in [0, 2); 0: none.
+    double ssor = 1.0;
     double residual_tolerance = 1e-4;  ///< ends when max Rᵢ is below this, m·g
     long max_steps = 200000;           ///< steps at most
     /// Called every 100 steps with the steps so far and the largest residual (m·g).
@@ -111,7 +122,7 @@ struct ContactDynamicsOptions {
 
 struct ContactDynamicsStats {
     long steps = 0;
-    long long sweeps = 0;       ///< NSGS sweeps over all steps
+    long long sweeps = 0;       ///< NSGS sweeps (APGD iterations, MPRGP products), all steps
     bool converged = false;     ///< ended by the residual tolerance
     bool stalled = false;       ///< ended by a stall at the smallest step
     double residual_max = 0.0;  ///< max Rᵢ of the last step, m·g
@@ -127,7 +138,7 @@ struct ContactDynamicsStats {
 /// `container` as above. Particle order, ids, radii and colours are kept; with periodic
 /// sides the centres are wrapped into the cell at the end. Throws std::invalid_argument for
 /// options out of range (non-finite; step, cap, tolerances or counts ≤ 0; ω outside (0, 2);
-/// smallest_step outside (0, 1]; step_shrink ≤ 1).
+/// smallest_step outside (0, 1]; step_shrink ≤ 1; ssor outside [0, 2)).
 ContactDynamicsStats settle_by_contact_dynamics(std::vector<Particle>& particles,
                                                 const Container& container, double diameter,
                                                 const ContactDynamicsOptions& options = {});

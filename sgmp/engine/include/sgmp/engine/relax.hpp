@@ -53,9 +53,9 @@
 /// sequential linear programming (hard_sphere_settle.hpp), frictionless or frictional at
 /// the relaxation's μ (at μ = 0 the frictionless settling); with `settle` =
 /// RelaxSettle::Dynamics (`--relax-settle dynamics`, frictionless only) by non-smooth
-/// contact dynamics instead (contact_dynamics.hpp: Moreau–Jean steps, projected SOR over
-/// the contacts), whose contact forces are offered to the certificate as its witness. The
-/// pack's certificate checks either (equilibrium_certificate.hpp).
+/// contact dynamics instead (contact_dynamics.hpp: Moreau–Jean steps, each step's contact
+/// problem by SSOR-preconditioned MPRGP), whose contact forces are offered to the certificate as
+/// its witness. The pack's certificate checks either (equilibrium_certificate.hpp).
 ///
 /// Finish: the real spheres are (1 + s) times smaller than the soft ones (default s = 0: the
 /// same), so a soft overlap below s·(rᵢ + rⱼ) is a real gap of at most s·(rᵢ + rⱼ); deeper
@@ -99,7 +99,7 @@ struct RelaxStats {
     /// recorded in packs).
     std::vector<ContactForce> settle_forces;
     bool settle_stalled = false;   ///< the contact dynamics stalled at its smallest step
-    long long settle_sweeps = 0;   ///< NSGS sweeps of the contact dynamics (frictionless)
+    long long settle_sweeps = 0;   ///< products with W of the contact dynamics (frictionless)
     double settle_residual = 0.0;  ///< largest force residual of its last step, m·g
     double soft_seconds = 0.0;     ///< wall clock of the soft stages and the finish (not recorded)
     double settle_seconds = 0.0;   ///< wall clock of the settling (not recorded)

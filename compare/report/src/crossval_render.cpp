@@ -142,8 +142,9 @@ void stand_in_markdown(std::ostringstream& md, const CrossValidation& cv) {
           "keeps a difference; "
           "otherwise it is *undecided*. A relaxed mode whose packs are not certified "
           "mechanical equilibria is *invalid* and not judged. Speed: the DEM pour's mean wall time "
-          "over the mode's "
-          "at the largest count.\n\n";
+          "over the mode's at the largest count — the pours' recorded times, from another run "
+          "and machine load, against the packs timed in this run: a ratio of recorded times, "
+          "not one measurement.\n\n";
     for (std::size_t r = 0; r < cv.references.size(); ++r) {
         std::vector<const StandIn*> per;
         for (const auto& s : cv.stand_ins) {

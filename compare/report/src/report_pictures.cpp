@@ -200,19 +200,26 @@ std::string pictures_markdown(const std::vector<PictureChoice>& choices, const P
           "picture, from 0 to the largest Z pictured: dark for few contacts, yellow for many; "
           "the key on the right), the container outlined up to the top. Rendered with "
           "POV-Ray; each picture opens at full size.\n\n";
-    md << "|";
-    for (const auto& c : choices) {
-        md << " " << caption(c) << " |";
+    // At most kPerRow pictures a table, so that the page fits 1400 px (nine side by side
+    // took 1715 px).
+    constexpr std::size_t kPerRow = 5;
+    for (std::size_t first = 0; first < choices.size(); first += kPerRow) {
+        const std::size_t last = std::min(choices.size(), first + kPerRow);
+        md << "|";
+        for (std::size_t i = first; i < last; ++i) {
+            md << " " << caption(choices[i]) << " |";
+        }
+        md << "\n|";
+        for (std::size_t i = first; i < last; ++i) {
+            md << " --- |";
+        }
+        md << "\n|";
+        for (std::size_t i = first; i < last; ++i) {
+            const auto& c = choices[i];
+            md << " [![" << caption(c) << "](" << c.file << ")](" << c.file << ") |";
+        }
+        md << "\n\n";
     }
-    md << "\n|";
-    for (std::size_t i = 0; i < choices.size(); ++i) {
-        md << " --- |";
-    }
-    md << "\n|";
-    for (const auto& c : choices) {
-        md << " [![" << caption(c) << "](" << c.file << ")](" << c.file << ") |";
-    }
-    md << "\n\n";
     return md.str();
 }
 

@@ -393,6 +393,17 @@ int solve_mprgp(Dynamics& s, double tolerance, int max_products, double ssor) {
         return r;
     };
     int products = 1;
+    // The expansion step: a projected gradient step of length ᾱ on the free set, then the
+    // gradient afresh and a new search direction from its free part.
+    const auto expand = [&] {
+        for (std::size_t c = 0; c < n; ++c) {
+            x[c] = std::max(0.0, x[c] - alpha_bar * (x[c] > 0.0 ? g[c] : 0.0));
+        }
+        full_gradient();
+        ++products;
+        free_part();
+        d = z;
+    };
     full_gradient();
     free_part();
     d = z;
@@ -413,13 +424,7 @@ int solve_mprgp(Dynamics& s, double tolerance, int max_products, double ssor) {
             if (!(dad > 0.0) || !(gd > 0.0)) {  // no descent left along d: restart
                 full_gradient();
                 ++products;
-                for (std::size_t c = 0; c < n; ++c) {
-                    x[c] = std::max(0.0, x[c] - alpha_bar * (x[c] > 0.0 ? g[c] : 0.0));
-                }
-                full_gradient();
-                ++products;
-                free_part();
-                d = z;
+                expand();
                 continue;
             }
             const double a_cg = gd / dad;
@@ -448,13 +453,7 @@ int solve_mprgp(Dynamics& s, double tolerance, int max_products, double ssor) {
                     x[c] = std::max(0.0, x[c] - a_f * d[c]);
                     g[c] -= a_f * ad[c];
                 }
-                for (std::size_t c = 0; c < n; ++c) {
-                    x[c] = std::max(0.0, x[c] - alpha_bar * (x[c] > 0.0 ? g[c] : 0.0));
-                }
-                full_gradient();
-                ++products;
-                free_part();
-                d = z;
+                expand();
             }
         } else {
             for (std::size_t c = 0; c < n; ++c) {

@@ -13,6 +13,12 @@
     manifest.py count FILE --role R [--timed]
                                     how many rows of FILE have that role (and a time)
     manifest.py verdicts HEADLINE   "A agree, D differ, I inconclusive" of headline.csv
+    manifest.py budget FILE --group G --count C --add K --budget B
+                                    whether K more candidate packs of that group and count
+                                    keep its packing time within B seconds: its packs' time
+                                    (each row's seconds, else the .seconds file beside the
+                                    pack) plus K times their mean; prints the estimate, exit
+                                    0 within the budget, 1 past it
 """
 import argparse
 import csv
@@ -46,6 +52,31 @@ def rows_of(path):
             yield line, next(csv.reader([line]))
 
 
+def pack_seconds(fields):
+    """The recorded packing time of a candidate row: its seconds field, else the .seconds
+    file scripts/run wrote beside the pack (a reused pack's own time); None when neither."""
+    if fields[4]:
+        return float(fields[4])
+    path = pathlib.Path(fields[5])
+    timing = path.with_name(path.name.removesuffix(".xyz") + ".seconds")
+    try:
+        return float(timing.read_text().strip())
+    except (OSError, ValueError):
+        return None
+
+
+def budget(args):
+    """Exit status 0 when ADD more packs keep the group within BUDGET seconds (see above)."""
+    times = [pack_seconds(fields) for _, fields in rows_of(args.file)
+             if fields[0] == "candidate" and fields[1] == args.group and fields[2] == args.count]
+    known = [t for t in times if t is not None]
+    spent = sum(known) * len(times) / len(known) if known else 0.0
+    mean = spent / len(times) if times else 0.0
+    estimate = spent + args.add * mean
+    write(f"{estimate:.0f}\n")
+    return 0 if estimate <= args.budget else 1
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -63,6 +94,12 @@ def main(argv=None):
     p.add_argument("--role", required=True)
     p.add_argument("--timed", action="store_true")
     sub.add_parser("verdicts").add_argument("file")
+    p = sub.add_parser("budget")
+    p.add_argument("file")
+    p.add_argument("--group", required=True)
+    p.add_argument("--count", required=True)
+    p.add_argument("--add", type=int, required=True)
+    p.add_argument("--budget", type=float, required=True)
     args = parser.parse_args(argv)
 
     if args.command == "rows":
@@ -91,6 +128,8 @@ def main(argv=None):
         n = {v: sum(1 for r in rows if r.get("verdict") == v)
              for v in ("agree", "differ", "inconclusive")}
         write(f"{n['agree']} agree, {n['differ']} differ, {n['inconclusive']} inconclusive")
+    elif args.command == "budget":
+        return budget(args)
     return 0
 
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # scripts/run into a directory whose name holds a space, a comma and quotes; a truncated
 # pack is made anew, packs live under the engine's content identity, an option without
-# its value is a usage error.
+# its value is a usage error, --seed-budget stops adding seeds.
 #   run_paths_test.sh BUILD_DIR
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -28,6 +28,16 @@ head -1 "$out/report/report.csv" | grep -q ',look,looks,alpha_spent,nominal_alph
 grep -q '^run: look 1: ' "$scratch/log" || fail "no progress line for look 1"
 grep -Eq '^run: done in [0-9.]+ s: [0-9]+ SGMP packs \(([0-9]+) packed and timed now, 0 reused\), [0-9]+ DEM pours, [0-9]+ looks; headline [0-9]+ agree, [0-9]+ differ, [0-9]+ inconclusive; report ' \
     "$scratch/log" || fail "no closing line: $(tail -n 1 "$scratch/log")"
+
+# --seed-budget 0: no group is extended; each open one is named, and the report is written.
+scripts/run --counts 150 --seeds "1 2" --arrangements loose-random --frictions 0.5 --out "$out" \
+    --build-dir "$build" --seed-budget 0 >"$scratch/log0" 2>&1 || { cat "$scratch/log0" >&2; fail "--seed-budget 0 failed"; }
+open=$(( $(wc -l <"$out/.looks/seeds-needed.csv") - 1 ))
+if (( open > 0 )); then
+    grep -q '^run: look 2: loose-random N=150 not extended: 5 more seeds would take its packing to about [0-9]* s, past --seed-budget 0 s; [0-9]* rows stay undecided$' \
+        "$scratch/log0" || fail "an open group was not named: $(cat "$scratch/log0")"
+fi
+grep -q '^run: 1 looks, 0 SGMP seeds added' "$scratch/log0" || fail "--seed-budget 0 added seeds: $(cat "$scratch/log0")"
 
 head -5 "$pack" >"$scratch/short" && cat "$scratch/short" >"$pack"  # header intact, lines lost
 run

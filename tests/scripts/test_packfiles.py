@@ -180,3 +180,23 @@ def test_manifest_verdicts(tmp_path):
     headline.write_text('count,candidate,metric,verdict\n# tool\n150,"a, b",phi,agree\n'
                         "150,c,phi,differ\n150,c,g_r,agree\n")
     assert run_manifest(["verdicts", str(headline)]) == b"2 agree, 1 differ, 0 inconclusive"
+
+
+def test_manifest_budget(tmp_path):
+    """The budget counts a reused pack by its .seconds file and extends by the mean time."""
+    (tmp_path / "n0150-seed2.seconds").write_text("300.0\n")
+    manifest = tmp_path / "manifest.csv"
+    manifest.write_text("role,group,count,seed,seconds,path\n"
+                        f"candidate,m+frictional,150,1,100,{tmp_path}/n0150-seed1.xyz\n"
+                        f"candidate,m+frictional,150,2,,{tmp_path}/n0150-seed2.xyz\n"
+                        f"candidate,m,150,1,1000,{tmp_path}/other.xyz\n"
+                        "reference,DEM,150,1,5000,r.xyz.gz\n")
+    args = ["budget", str(manifest), "--group", "m+frictional", "--count", "150", "--add", "5"]
+    # spent 100 + 300 = 400 s, mean 200 s: five more make 1400 s.
+    assert run_manifest(args + ["--budget", "1400"]) == b"1400\n"
+    result = subprocess.run([sys.executable, str(ROOT / "scripts" / "lib" / "manifest.py"), *args,
+                             "--budget", "1399"], capture_output=True)
+    assert result.returncode == 1 and result.stdout == b"1400\n"
+    # A pack with no time at all counts at the mean of those timed.
+    (tmp_path / "n0150-seed2.seconds").unlink()
+    assert run_manifest(args + ["--budget", "1e6"]) == b"700\n"

@@ -1,7 +1,8 @@
 // The contact-dynamics settling (contact_dynamics.hpp): closed-form equilibria (a sphere on
 // the floor, a column, a sphere on three held by the walls), its forces checked sphere by
 // sphere against the weights here (brute force) and by the certificate (whose LP sees only
-// the final positions), relaxed packs over seeds, and the refusal of bad options.
+// the final positions), relaxed packs over seeds, the frictional settling on a tripod
+// (certified by the frictional certificate's LP), and the refusal of bad options.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -186,6 +187,57 @@ BOOST_AUTO_TEST_CASE(a_sphere_on_three_held_by_the_walls_splits_its_weight) {
     }
 }
 
+BOOST_AUTO_TEST_CASE(with_friction_a_sphere_rests_on_three_spread_on_the_floor) {
+    // No walls: three spheres on the floor at ρ = 0.7·d from the axis, a fourth dropped onto
+    // them. Frictionless they would slide apart; at μ = 1 floor and pair friction hold them
+    // (the tripod of the frictional LP settling's test): the settling ends at rest with the
+    // lower spheres on the floor, the upper one on them, and the frictional certificate
+    // (its own LP on the final positions: force and torque, every force in the pyramid)
+    // certifies it. A sphere on the floor alone carries its weight, and does not turn.
+    const double rho = 0.7 * kD;
+    const double r = 0.5 * kD;
+    const Container box;
+    const double y0 = box.floor + r;
+    std::vector<Particle> p;
+    for (int k = 0; k < 3; ++k) {
+        const double a = 2.0 * std::numbers::pi * k / 3.0;
+        p.push_back(sphere(rho * std::cos(a), y0, rho * std::sin(a)));
+    }
+    const double cos_theta = std::sqrt(1.0 - 0.49);
+    p.push_back(sphere(0, y0 + cos_theta * kD + 0.05 * kD, 0));
+    for (ContactDynamicsOptions o : tight()) {
+        if (o.solver != ContactSolver::Mprgp) {
+            continue;  // friction is solved by MPRGP only
+        }
+        o.friction = 1.0;
+        BOOST_TEST_CONTEXT("ssor " << o.ssor) {
+            std::vector<Particle> q = p;
+            const ContactDynamicsStats s = settle_by_contact_dynamics(q, box, kD, o);
+            BOOST_TEST(s.converged);
+            // The landing moves the lower spheres a little (the contacts dilate as they
+            // slip) before friction holds them: they stay on the floor within 0.05·d of
+            // where they were, and the upper sphere, lower than it started, rests on all
+            // three.
+            for (std::size_t k = 0; k < 3; ++k) {
+                BOOST_TEST(std::abs(q[k].center.y() - y0) <= 1e-8 * kD, "sphere " << k);
+                BOOST_TEST((q[k].center - p[k].center).norm() <= 0.05 * kD, "sphere " << k);
+            }
+            BOOST_TEST(q[3].center.y() < p[3].center.y());
+            BOOST_TEST(s.forces.size() == 6u);  // three on the floor, three pairs
+            const EquilibriumCertificate c = certify_frictional(q, box, kD, 1.0);
+            BOOST_TEST(c.certified);
+            BOOST_TEST(c.contacts == 6u);
+            BOOST_TEST(c.residual_max <= 1e-6);
+            std::vector<Particle> alone{sphere(0.1, box.floor + 0.6 * kD, -0.2)};
+            const ContactDynamicsStats one = settle_by_contact_dynamics(alone, box, kD, o);
+            BOOST_TEST(one.converged);
+            BOOST_TEST(force_on(one, 0, 0, Partner::Floor) == 1.0,
+                       boost::test_tools::tolerance(1e-6));
+            BOOST_TEST(alone[0].center.x() == 0.1);
+        }
+    }
+}
+
 BOOST_AUTO_TEST_CASE(bad_options_are_refused) {
     std::vector<Particle> p{sphere(0, -0.5, 0)};
     const Container box;
@@ -206,6 +258,12 @@ BOOST_AUTO_TEST_CASE(bad_options_are_refused) {
     refused([](ContactDynamicsOptions& o) { o.ssor = 2.0; });
     refused([](ContactDynamicsOptions& o) { o.ssor = -0.5; });
     refused([](ContactDynamicsOptions& o) { o.ssor = NAN; });
+    refused([](ContactDynamicsOptions& o) { o.friction = -0.1; });
+    refused([](ContactDynamicsOptions& o) { o.friction = INFINITY; });
+    refused([](ContactDynamicsOptions& o) {
+        o.friction = 0.5;
+        o.solver = ContactSolver::Apgd;
+    });
     BOOST_CHECK_THROW(settle_by_contact_dynamics(p, box, 0.0), std::invalid_argument);
 }
 
@@ -247,12 +305,14 @@ BOOST_AUTO_TEST_CASE(the_same_request_settles_to_the_same_bytes) {
                *second.metadata.get("relax_settle_sweeps"));
 }
 
-BOOST_AUTO_TEST_CASE(the_settling_is_chosen_for_frictionless_relaxations_only) {
+BOOST_AUTO_TEST_CASE(the_settling_is_chosen_for_relaxations_only) {
     PackRequest request;
     request.count = 40;
-    request.relax.mode = RelaxMode::Frictional;
+    request.relax.mode = RelaxMode::None;
     request.relax.settle = RelaxSettle::Dynamics;
     BOOST_CHECK_THROW(validate(request), ParameterError);
+    request.relax.mode = RelaxMode::Frictional;
+    BOOST_CHECK_NO_THROW(validate(request));
     request.relax.mode = RelaxMode::Frictionless;
     BOOST_CHECK_NO_THROW(validate(request));
     // The LP settling, the default, is not recorded, so its packs keep their headers.

@@ -8,6 +8,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "contact_dynamics_friction.hpp"
+#include "contact_dynamics_mprgp.hpp"
 #include "contact_dynamics_state.hpp"
 #include "sgmp/engine/neighbour_list.hpp"
 
@@ -26,11 +28,13 @@ void check_options(const ContactDynamicsOptions& o) {
         !positive(o.residual_tolerance) || !positive(o.smallest_step) || o.smallest_step > 1.0 ||
         !(std::isfinite(o.step_shrink) && o.step_shrink > 1.0) || !positive(o.relaxation) ||
         !positive(o.shrink_below) || o.relaxation >= 2.0 || o.max_sweeps < 1 || o.max_steps < 1 ||
-        o.stall_window < 1 || !(o.ssor >= 0.0 && o.ssor < 2.0)) {
+        o.stall_window < 1 || !(o.ssor >= 0.0 && o.ssor < 2.0) ||
+        !(std::isfinite(o.friction) && o.friction >= 0.0) ||
+        (o.friction > 0.0 && o.solver != ContactSolver::Mprgp)) {
         throw std::invalid_argument(
             "contact dynamics: steps, cap and tolerances must be finite and > 0, relaxation in "
             "(0, 2), smallest step in (0, 1], shrink > 1, sweeps, steps and window >= 1, ssor in "
-            "[0, 2)");
+            "[0, 2), friction finite and >= 0 (with friction: the MPRGP solver)");
     }
 }
 
@@ -64,6 +68,10 @@ Dynamics make_dynamics(const std::vector<Particle>& particles, const Container& 
     s.h = o.time_step * std::sqrt(diameter);
     s.skin = kSkinOverDmin * 2.0 * r_min;
     s.cap = std::min(o.step_cap * diameter, s.skin / 8.0);
+    s.diameter = diameter;
+    if (o.friction > 0.0) {
+        prepare_friction(s, o.friction);
+    }
     return s;
 }
 
@@ -71,16 +79,23 @@ Dynamics make_dynamics(const std::vector<Particle>& particles, const Container& 
 void rebuild(Dynamics& s) {
     std::swap(s.previous, s.list);
     s.list.build(s.balls, s.skin, s.box);
-    std::vector<double> next(s.list.pairs(), 0.0);
+    const std::size_t m = s.stride;  // impulses kept per slot
+    std::vector<double> next(s.list.pairs() * m, 0.0);
     if (!s.pair_p.empty()) {
         for (std::size_t i = 0; i < s.balls.size(); ++i) {
             const auto old = s.previous.of(i);
             const auto now = s.list.of(i);
             for (std::size_t k = 0; k < old.size(); ++k) {
-                const double p = s.pair_p[s.previous.first_slot(i) + k];
-                const auto at = p > 0.0 ? std::find(now.begin(), now.end(), old[k]) : now.end();
+                const auto from = s.pair_p.begin() +
+                                  static_cast<std::ptrdiff_t>((s.previous.first_slot(i) + k) * m);
+                const bool pressed = std::any_of(from, from + static_cast<std::ptrdiff_t>(m),
+                                                 [](double p) { return p > 0.0; });
+                const auto at = pressed ? std::find(now.begin(), now.end(), old[k]) : now.end();
                 if (at != now.end()) {
-                    next[s.list.first_slot(i) + static_cast<std::size_t>(at - now.begin())] = p;
+                    const std::size_t to =
+                        (s.list.first_slot(i) + static_cast<std::size_t>(at - now.begin())) * m;
+                    std::copy(from, from + static_cast<std::ptrdiff_t>(m),
+                              next.begin() + static_cast<std::ptrdiff_t>(to));
                 }
             }
         }
@@ -188,36 +203,126 @@ int solve_contacts(Dynamics& s, double tolerance, double omega, int max_sweeps) 
     return max_sweeps;
 }
 
+}  // namespace
+
+// The normal rows' operations of the MPRGP template (contact_dynamics_mprgp.hpp).
+namespace contact_dynamics {
+
 /// The velocities v* + M⁻¹·Jᵀ·p of impulses p (in contact order), v* = v° − h·ŷ.
-void velocities_for(Dynamics& s, const std::vector<double>& p) {
+void velocities_for(Dynamics& s, const std::vector<Contact>& rows, const std::vector<double>& p) {
     for (std::size_t i = 0; i < s.v.size(); ++i) {
         s.v[i] = V3{s.kept[i].x, s.kept[i].y - s.h, s.kept[i].z};
     }
-    for (std::size_t c = 0; c < s.contacts.size(); ++c) {
+    for (std::size_t c = 0; c < rows.size(); ++c) {
         if (p[c] != 0.0) {
-            apply(s, s.contacts[c], p[c]);
+            apply(s, rows[c], p[c]);
         }
     }
 }
 
 /// A bound on the largest eigenvalue of W (Gershgorin: each row's sum of |W_cd| is at most
 /// Σ over its spheres of 1/mᵢ times the contacts on the sphere).
-double delassus_bound(const Dynamics& s) {
+double delassus_bound(const Dynamics& s, const std::vector<Contact>& rows) {
     std::vector<std::uint32_t> degree(s.v.size(), 0);
-    for (const Contact& c : s.contacts) {
+    for (const Contact& c : rows) {
         ++degree[c.a];
         if (c.b != kWall) {
             ++degree[c.b];
         }
     }
     double bound = 0.0;
-    for (const Contact& c : s.contacts) {
+    for (const Contact& c : rows) {
         const double row =
             s.inv_m[c.a] * degree[c.a] + (c.b == kWall ? 0.0 : s.inv_m[c.b] * degree[c.b]);
         bound = std::max(bound, row);
     }
     return bound;
 }
+
+/// out = W·x (W = J·M⁻¹·Jᵀ) for impulses x in contact order; `scratch` holds M⁻¹·Jᵀ·x.
+void delassus_times(const Dynamics& s, const std::vector<Contact>& rows,
+                    const std::vector<double>& x, std::vector<double>& out,
+                    std::vector<V3>& scratch) {
+    std::fill(scratch.begin(), scratch.end(), V3{});
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+        const Contact& c = rows[k];
+        if (x[k] == 0.0) {
+            continue;
+        }
+        const double ka = x[k] * s.inv_m[c.a];
+        scratch[c.a].x -= ka * c.nx;
+        scratch[c.a].y -= ka * c.ny;
+        scratch[c.a].z -= ka * c.nz;
+        if (c.b != kWall) {
+            const double kb = x[k] * s.inv_m[c.b];
+            scratch[c.b].x += kb * c.nx;
+            scratch[c.b].y += kb * c.ny;
+            scratch[c.b].z += kb * c.nz;
+        }
+    }
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+        const Contact& c = rows[k];
+        const V3& va = scratch[c.a];
+        double u = -(c.nx * va.x + c.ny * va.y + c.nz * va.z);
+        if (c.b != kWall) {
+            const V3& vb = scratch[c.b];
+            u += c.nx * vb.x + c.ny * vb.y + c.nz * vb.z;
+        }
+        out[k] = u;
+    }
+}
+
+/// z ≈ W_FF⁻¹·r on the free contacts (x > 0; z = 0 elsewhere) by one symmetric Gauss–Seidel
+/// sweep from z = 0, forward then backward over the contacts (SSOR with ω, a symmetric
+/// positive definite preconditioner of W_FF); `scratch` holds M⁻¹·Jᵀ·z.
+void ssor_apply(const Dynamics& s, const std::vector<Contact>& rows, const std::vector<double>& x,
+                const std::vector<double>& r, double omega, std::vector<double>& z,
+                std::vector<V3>& scratch) {
+    std::fill(scratch.begin(), scratch.end(), V3{});
+    std::fill(z.begin(), z.end(), 0.0);
+    const auto relax = [&](std::size_t k) {
+        const Contact& c = rows[k];
+        V3& va = scratch[c.a];
+        double wz = -(c.nx * va.x + c.ny * va.y + c.nz * va.z);
+        if (c.b != kWall) {
+            const V3& vb = scratch[c.b];
+            wz += c.nx * vb.x + c.ny * vb.y + c.nz * vb.z;
+        }
+        const double dz = omega * (r[k] - wz) * c.inv_w;
+        z[k] += dz;
+        const double ka = dz * s.inv_m[c.a];
+        va.x -= ka * c.nx;
+        va.y -= ka * c.ny;
+        va.z -= ka * c.nz;
+        if (c.b != kWall) {
+            V3& vb = scratch[c.b];
+            const double kb = dz * s.inv_m[c.b];
+            vb.x += kb * c.nx;
+            vb.y += kb * c.ny;
+            vb.z += kb * c.nz;
+        }
+    };
+    const std::size_t n = rows.size();
+    for (std::size_t k = n; k-- > 0;) {
+        if (x[k] > 0.0) {
+            relax(k);
+        }
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        if (x[k] > 0.0) {
+            relax(k);
+        }
+    }
+}
+
+/// The scratch the products with W need: one velocity per sphere.
+std::size_t scratch_size(const Dynamics& s, const std::vector<Contact>&) {
+    return s.v.size();
+}
+
+}  // namespace contact_dynamics
+
+namespace {
 
 /// The contact problem as min ½·pᵀWp + qᵀp over p ≥ 0 (its gradient Wp + q = g/h + u(p)),
 /// by Nesterov's accelerated projected gradient with step 1/L (L: delassus_bound) and the
@@ -226,7 +331,7 @@ double delassus_bound(const Dynamics& s) {
 int solve_apgd(Dynamics& s, double tolerance, int max_iterations) {
     const std::size_t n = s.contacts.size();
     const double inv_h = 1.0 / s.h;
-    const double step = 1.0 / std::max(delassus_bound(s), 1e-300);
+    const double step = 1.0 / std::max(delassus_bound(s, s.contacts), 1e-300);
     std::vector<double> p(n), y(n), next(n);
     for (std::size_t c = 0; c < n; ++c) {
         p[c] = y[c] = s.contacts[c].p;
@@ -234,7 +339,7 @@ int solve_apgd(Dynamics& s, double tolerance, int max_iterations) {
     double theta = 1.0;
     int k = 1;
     for (; k <= max_iterations; ++k) {
-        velocities_for(s, y);
+        velocities_for(s, s.contacts, y);
         double largest = 0.0;
         double ascent = 0.0;  // gradient·(p_next − p) > 0: restart the momentum
         for (std::size_t c = 0; c < n; ++c) {
@@ -258,228 +363,8 @@ int solve_apgd(Dynamics& s, double tolerance, int max_iterations) {
     for (std::size_t c = 0; c < n; ++c) {
         s.contacts[c].p = p[c];
     }
-    velocities_for(s, p);
+    velocities_for(s, s.contacts, p);
     return std::min(k, max_iterations);
-}
-
-/// out = W·x (W = J·M⁻¹·Jᵀ) for impulses x in contact order; `scratch` holds M⁻¹·Jᵀ·x.
-void delassus_times(const Dynamics& s, const std::vector<double>& x, std::vector<double>& out,
-                    std::vector<V3>& scratch) {
-    std::fill(scratch.begin(), scratch.end(), V3{});
-    for (std::size_t k = 0; k < s.contacts.size(); ++k) {
-        const Contact& c = s.contacts[k];
-        if (x[k] == 0.0) {
-            continue;
-        }
-        const double ka = x[k] * s.inv_m[c.a];
-        scratch[c.a].x -= ka * c.nx;
-        scratch[c.a].y -= ka * c.ny;
-        scratch[c.a].z -= ka * c.nz;
-        if (c.b != kWall) {
-            const double kb = x[k] * s.inv_m[c.b];
-            scratch[c.b].x += kb * c.nx;
-            scratch[c.b].y += kb * c.ny;
-            scratch[c.b].z += kb * c.nz;
-        }
-    }
-    for (std::size_t k = 0; k < s.contacts.size(); ++k) {
-        const Contact& c = s.contacts[k];
-        const V3& va = scratch[c.a];
-        double u = -(c.nx * va.x + c.ny * va.y + c.nz * va.z);
-        if (c.b != kWall) {
-            const V3& vb = scratch[c.b];
-            u += c.nx * vb.x + c.ny * vb.y + c.nz * vb.z;
-        }
-        out[k] = u;
-    }
-}
-
-/// z ≈ W_FF⁻¹·r on the free contacts (x > 0; z = 0 elsewhere) by one symmetric Gauss–Seidel
-/// sweep from z = 0, forward then backward over the contacts (SSOR with ω, a symmetric
-/// positive definite preconditioner of W_FF); `scratch` holds M⁻¹·Jᵀ·z.
-void ssor_apply(const Dynamics& s, const std::vector<double>& x, const std::vector<double>& r,
-                double omega, std::vector<double>& z, std::vector<V3>& scratch) {
-    std::fill(scratch.begin(), scratch.end(), V3{});
-    std::fill(z.begin(), z.end(), 0.0);
-    const auto relax = [&](std::size_t k) {
-        const Contact& c = s.contacts[k];
-        V3& va = scratch[c.a];
-        double wz = -(c.nx * va.x + c.ny * va.y + c.nz * va.z);
-        if (c.b != kWall) {
-            const V3& vb = scratch[c.b];
-            wz += c.nx * vb.x + c.ny * vb.y + c.nz * vb.z;
-        }
-        const double dz = omega * (r[k] - wz) * c.inv_w;
-        z[k] += dz;
-        const double ka = dz * s.inv_m[c.a];
-        va.x -= ka * c.nx;
-        va.y -= ka * c.ny;
-        va.z -= ka * c.nz;
-        if (c.b != kWall) {
-            V3& vb = scratch[c.b];
-            const double kb = dz * s.inv_m[c.b];
-            vb.x += kb * c.nx;
-            vb.y += kb * c.ny;
-            vb.z += kb * c.nz;
-        }
-    };
-    const std::size_t n = s.contacts.size();
-    for (std::size_t k = n; k-- > 0;) {
-        if (x[k] > 0.0) {
-            relax(k);
-        }
-    }
-    for (std::size_t k = 0; k < n; ++k) {
-        if (x[k] > 0.0) {
-            relax(k);
-        }
-    }
-}
-
-/// The contact problem min ½·pᵀWp + qᵀp over p ≥ 0 by MPRGP (Dostál 2009, ch. 8): conjugate
-/// gradients on the contacts carrying an impulse (the free set) while the chopped gradient (of
-/// the contacts at p = 0 that would press) stays below the free one (Γ = 1), a feasible step
-/// and a projected gradient step of 1.9/L (expansion) where a CG step would leave p ≥ 0, and a
-/// steepest step on the chopped gradient otherwise (proportioning). With `ssor` > 0 the
-/// conjugate gradients are preconditioned in the face by a symmetric Gauss–Seidel sweep over
-/// the free contacts of relaxation `ssor` (ssor_apply). From the warm start, until every
-/// projected gradient component is below `tolerance`·h (a velocity: m·g·h/m); returns the
-/// products with W.
-int solve_mprgp(Dynamics& s, double tolerance, int max_products, double ssor) {
-    const std::size_t n = s.contacts.size();
-    const double inv_h = 1.0 / s.h;
-    const double alpha_bar = 1.9 / std::max(delassus_bound(s), 1e-300);
-    std::vector<double> x(n), q(n), g(n), d(n), ad(n), free_g(n), z(n);
-    std::vector<V3> scratch(s.v.size());
-    velocities_for(s, std::vector<double>(n, 0.0));
-    for (std::size_t c = 0; c < n; ++c) {
-        x[c] = std::max(0.0, s.contacts[c].p);
-        q[c] = s.contacts[c].gap * inv_h + normal_velocity(s, s.contacts[c]);
-    }
-    const auto full_gradient = [&] {
-        delassus_times(s, x, g, scratch);
-        for (std::size_t c = 0; c < n; ++c) {
-            g[c] += q[c];
-        }
-    };
-    // The free gradient φ and its preconditioned form z (z = φ without preconditioning).
-    const auto free_part = [&] {
-        for (std::size_t c = 0; c < n; ++c) {
-            free_g[c] = x[c] > 0.0 ? g[c] : 0.0;
-        }
-        if (ssor > 0.0) {
-            ssor_apply(s, x, free_g, ssor, z, scratch);
-        } else {
-            z = free_g;
-        }
-    };
-    // ‖β‖², φ̃ᵀφ and the largest projected gradient component.
-    struct Split {
-        double chopped = 0.0;
-        double reduced = 0.0;
-        double largest = 0.0;
-    };
-    const auto split = [&] {
-        Split r;
-        for (std::size_t c = 0; c < n; ++c) {
-            if (x[c] > 0.0) {
-                r.reduced += std::min(x[c] / alpha_bar, g[c]) * g[c];
-                r.largest = std::max(r.largest, std::abs(g[c]));
-            } else if (g[c] < 0.0) {
-                r.chopped += g[c] * g[c];
-                r.largest = std::max(r.largest, -g[c]);
-            }
-        }
-        return r;
-    };
-    int products = 1;
-    // The expansion step: a projected gradient step of length ᾱ on the free set, then the
-    // gradient afresh and a new search direction from its free part.
-    const auto expand = [&] {
-        for (std::size_t c = 0; c < n; ++c) {
-            x[c] = std::max(0.0, x[c] - alpha_bar * (x[c] > 0.0 ? g[c] : 0.0));
-        }
-        full_gradient();
-        ++products;
-        free_part();
-        d = z;
-    };
-    full_gradient();
-    free_part();
-    d = z;
-    const double bound = tolerance * s.h;
-    while (products < max_products) {
-        const Split now = split();
-        if (now.largest <= bound) {
-            break;
-        }
-        if (now.chopped <= now.reduced) {
-            delassus_times(s, d, ad, scratch);
-            ++products;
-            double dad = 0.0, gd = 0.0;
-            for (std::size_t c = 0; c < n; ++c) {
-                dad += d[c] * ad[c];
-                gd += g[c] * d[c];
-            }
-            if (!(dad > 0.0) || !(gd > 0.0)) {  // no descent left along d: restart
-                full_gradient();
-                ++products;
-                expand();
-                continue;
-            }
-            const double a_cg = gd / dad;
-            double a_f = INFINITY;
-            for (std::size_t c = 0; c < n; ++c) {
-                if (d[c] > 0.0) {
-                    a_f = std::min(a_f, x[c] / d[c]);
-                }
-            }
-            if (a_cg <= a_f) {
-                for (std::size_t c = 0; c < n; ++c) {
-                    x[c] -= a_cg * d[c];
-                    g[c] -= a_cg * ad[c];
-                }
-                free_part();
-                double zad = 0.0;
-                for (std::size_t c = 0; c < n; ++c) {
-                    zad += z[c] * ad[c];
-                }
-                const double gamma = zad / dad;
-                for (std::size_t c = 0; c < n; ++c) {
-                    d[c] = z[c] - gamma * d[c];
-                }
-            } else {
-                for (std::size_t c = 0; c < n; ++c) {
-                    x[c] = std::max(0.0, x[c] - a_f * d[c]);
-                    g[c] -= a_f * ad[c];
-                }
-                expand();
-            }
-        } else {
-            for (std::size_t c = 0; c < n; ++c) {
-                z[c] = x[c] > 0.0 ? 0.0 : std::min(g[c], 0.0);  // β
-            }
-            delassus_times(s, z, ad, scratch);
-            ++products;
-            double bab = 0.0, gb = 0.0;
-            for (std::size_t c = 0; c < n; ++c) {
-                bab += z[c] * ad[c];
-                gb += g[c] * z[c];
-            }
-            const double a = bab > 0.0 ? gb / bab : alpha_bar;
-            for (std::size_t c = 0; c < n; ++c) {
-                x[c] = std::max(0.0, x[c] - a * z[c]);
-                g[c] -= a * ad[c];
-            }
-            free_part();
-            d = z;
-        }
-    }
-    for (std::size_t c = 0; c < n; ++c) {
-        s.contacts[c].p = x[c];
-    }
-    velocities_for(s, x);
-    return products;
 }
 
 /// Keeps the impulses for the next step's warm start (a pair or wall not in the step's
@@ -580,6 +465,17 @@ void shrink_step(Dynamics& s, double factor) {
 double step(Dynamics& s, const ContactDynamicsOptions& o, int sweeps, ContactDynamicsStats& stats) {
     keep_list(s);
     gather_contacts(s);
+    if (s.friction > 0.0) {
+        gather_edges(s);
+        start_edge_velocities(s);
+        stats.sweeps += solve_edges(s, o.sweep_tolerance, sweeps, o.ssor);
+        store_edge_impulses(s);
+        const double residual = edge_step_residual(s);
+        move(s);
+        keep_velocities(s, o.inertia);
+        ++stats.steps;
+        return residual;
+    }
     start_velocities(s);
     switch (o.solver) {
         case ContactSolver::Apgd:
@@ -589,7 +485,7 @@ double step(Dynamics& s, const ContactDynamicsOptions& o, int sweeps, ContactDyn
             stats.sweeps += solve_contacts(s, o.sweep_tolerance, o.relaxation, sweeps);
             break;
         case ContactSolver::Mprgp:
-            stats.sweeps += solve_mprgp(s, o.sweep_tolerance, sweeps, o.ssor);
+            stats.sweeps += solve_mprgp(s, s.contacts, o.sweep_tolerance, sweeps, o.ssor);
             break;
     }
     store_impulses(s);
@@ -653,7 +549,7 @@ ContactDynamicsStats settle_by_contact_dynamics(std::vector<Particle>& particles
         }
     }
     stats.time_step = s.h / std::sqrt(diameter);
-    stats.forces = contact_forces(s);
+    stats.forces = s.friction > 0.0 ? edge_contact_forces(s) : contact_forces(s);
     stats.contacts = stats.forces.size();
     write_back(s, particles, diameter, stats);
     return stats;

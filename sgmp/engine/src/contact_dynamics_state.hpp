@@ -36,6 +36,22 @@ struct Contact {
     std::uint32_t wall = 0;
 };
 
+/// One edge row of a frictional contact (contact_dynamics_friction.hpp): the pyramid edge
+/// E = Eₖ (coulomb_pyramid.hpp) of the contact's normal n from a to its partner,
+/// q = n × E, the contact's gap, 1/W_rr and the impulse p ≥ 0 along E; `slot` indexes the
+/// kept impulses (8 per pair slot or wall, as `Contact::slot` times 8, plus k).
+struct EdgeRow {
+    std::uint32_t a = 0;
+    std::uint32_t b = 0;
+    V3 e;
+    V3 q;
+    double gap = 0.0;
+    double inv_w = 0.0;
+    double p = 0.0;
+    std::uint32_t slot = 0;
+    std::uint32_t wall = 0;
+};
+
 /// The pack being settled, in an internal order (bottom up by cells of side d) that keeps
 /// neighbours close in memory and lets a forward sweep carry weights down.
 struct Dynamics {
@@ -50,6 +66,15 @@ struct Dynamics {
     std::vector<double> pair_p;  ///< impulse per neighbour-list slot
     std::vector<double> wall_p;  ///< impulse per sphere and wall (5 each)
     std::vector<Contact> contacts;
+    /// Frictional settling (friction > 0): angular velocities, inverse moments of inertia
+    /// (a solid sphere: 1/(0.4·m·r²)) and the step's edge rows; pair_p and wall_p then keep
+    /// `stride` = 8 impulses per slot.
+    double friction = 0.0;
+    std::size_t stride = 1;
+    std::vector<V3> w;
+    std::vector<double> inv_i;
+    std::vector<EdgeRow> edges;
+    double diameter = 0.0;
     Container box;
     double h = 0.0;
     double skin = 0.0;
@@ -81,6 +106,11 @@ inline double normal_velocity(const Dynamics& s, const Contact& c) {
         u += c.nx * vb.x + c.ny * vb.y + c.nz * vb.z;
     }
     return u;
+}
+
+/// J_c·v of contact c: its closing velocity (contact_dynamics_mprgp.hpp).
+inline double closing_velocity(const Dynamics& s, const Contact& c) {
+    return normal_velocity(s, c);
 }
 
 }  // namespace sgmp::engine::contact_dynamics

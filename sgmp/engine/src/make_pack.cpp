@@ -180,8 +180,7 @@ void record_relaxation(const PackRequest& request, const RelaxStats& stats, Meta
     // How the settling ended. Frictionless (contact dynamics): its residual met the tolerance,
     // it stalled at its smallest step, or --relax-settle-limit stopped it. Frictional (LP):
     // its trust region shrank away, a step moved nothing, the LP solver failed, or the limit.
-    const bool dynamics =
-        params.mode == RelaxMode::Frictionless && params.settle == RelaxSettle::Dynamics;
+    const bool dynamics = params.settle == RelaxSettle::Dynamics;
     m.set("relax_settle_end", dynamics                     ? (stats.settle_converged ? "residual"
                                                               : stats.settle_stalled ? "stalled"
                                                                                      : "limit")

@@ -464,16 +464,17 @@ void add_relax_rows(std::vector<Row>& rows) {
     Row settle = choice(
         "relax_settle", g, [](auto& r) -> auto& { return r.relax.settle; },
         [] { return relax_settles(); },
-        "how --relax frictionless settles as hard spheres: lp (sequential linear programming, "
-        "the default) or dynamics (non-smooth contact dynamics, each step's contacts by "
-        "SSOR-preconditioned MPRGP, its forces the certificate's witness; 2-3x slower than lp "
-        "at N = 1002, does not converge at N = 3000: sgmp/engine/docs/relax-certified.md)");
+        "how --relax settles as hard spheres: lp (sequential linear programming, the default) "
+        "or dynamics (non-smooth contact dynamics, each step's contacts by SSOR-preconditioned "
+        "MPRGP; frictionless: its forces the certificate's witness, 2-3x slower than lp at "
+        "N = 1002, does not converge at N = 3000; frictional: Coulomb pyramid rows, stalls "
+        "uncertified at N = 150: sgmp/engine/docs/relax-certified.md)");
     settle.recorded = [](const PackRequest& r) {
         return r.relax.mode != RelaxMode::None && r.relax.settle != RelaxSettle::Lp;
     };
     settle.check = [](const PackRequest& r, const PackCheckContext&) {
-        if (r.relax.settle == RelaxSettle::Dynamics && r.relax.mode != RelaxMode::Frictionless) {
-            refuse("relax_settle", "dynamics", "needs --relax frictionless");
+        if (r.relax.settle == RelaxSettle::Dynamics && r.relax.mode == RelaxMode::None) {
+            refuse("relax_settle", "dynamics", "needs --relax frictionless or frictional");
         }
     };
     rows.push_back(std::move(settle));

@@ -502,15 +502,18 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// The frictionless settling by contact dynamics (contact_dynamics.hpp, `--relax-settle
-/// dynamics`) from the finished pack.
-void settle_frictionless(std::vector<Particle>& particles, const Container& container,
-                         const RelaxParams& params, double diameter, RelaxStats& stats,
-                         const RelaxProgressCallback& progress) {
+/// The settling by contact dynamics (contact_dynamics.hpp, `--relax-settle dynamics`) from
+/// the finished pack: frictionless, or at the pack's μ with --relax frictional.
+void settle_by_dynamics(std::vector<Particle>& particles, const Container& container,
+                        const RelaxParams& params, double diameter, RelaxStats& stats,
+                        const RelaxProgressCallback& progress) {
     // The defaults: MPRGP with its SSOR preconditioner, first step h = 0.3·√(d/g)
     // (sgmp/engine/notes/relax-dynamics-2026-12-07.md: at N = 1002, seed 1, 97 steps; with
     // h = 0.5, 207; with h = 1 still 0.024 m·g after 1,500).
     ContactDynamicsOptions options;
+    if (params.mode == RelaxMode::Frictional) {
+        options.friction = params.friction;
+    }
     options.max_steps = static_cast<long>(params.settle_limit) * kStepsPerSettleIteration;
     if (progress) {
         const int stages = relax_schedule(params).stages;
@@ -550,8 +553,8 @@ RelaxStats relax_pack(std::vector<Particle>& particles, const Container& contain
     stats.finish_move_mean = finish.move_sum / static_cast<double>(particles.size()) / diameter;
     stats.soft_seconds = seconds_since(start);
     const auto settling = std::chrono::steady_clock::now();
-    if (params.mode == RelaxMode::Frictionless && params.settle == RelaxSettle::Dynamics) {
-        settle_frictionless(particles, container, params, diameter, stats, progress);
+    if (params.settle == RelaxSettle::Dynamics) {
+        settle_by_dynamics(particles, container, params, diameter, stats, progress);
         stats.settle_seconds = seconds_since(settling);
         return stats;
     }

@@ -114,6 +114,10 @@ struct ContactDynamicsOptions {
     int max_sweeps = 500;           ///< sweeps (APGD iterations, MPRGP products) per step
     /// MPRGP only: ω of its symmetric Gauss–Seidel preconditioner, in [0, 2); 0: none.
     double ssor = 1.0;
+    /// Sliding friction μ ≥ 0 of pairs and walls: above 0 every contact carries a force
+    /// inside the 8-edge Coulomb pyramid (coulomb_pyramid.hpp), the spheres turn, and the
+    /// residual asks torques to balance too (MPRGP only; contact_dynamics_friction.hpp).
+    double friction = 0.0;
     double residual_tolerance = 1e-4;  ///< ends when max Rᵢ is below this, m·g
     long max_steps = 200000;           ///< steps at most
     /// Called every 100 steps with the steps so far and the largest residual (m·g).
@@ -138,7 +142,8 @@ struct ContactDynamicsStats {
 /// `container` as above. Particle order, ids, radii and colours are kept; with periodic
 /// sides the centres are wrapped into the cell at the end. Throws std::invalid_argument for
 /// options out of range (non-finite; step, cap, tolerances or counts ≤ 0; ω outside (0, 2);
-/// smallest_step outside (0, 1]; step_shrink ≤ 1; ssor outside [0, 2)).
+/// smallest_step outside (0, 1]; step_shrink ≤ 1; ssor outside [0, 2); friction < 0, or
+/// friction with a solver other than MPRGP).
 ContactDynamicsStats settle_by_contact_dynamics(std::vector<Particle>& particles,
                                                 const Container& container, double diameter,
                                                 const ContactDynamicsOptions& options = {});

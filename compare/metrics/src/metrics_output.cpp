@@ -334,7 +334,8 @@ void write_pack_metrics(const std::filesystem::path& dir, const std::string& ste
     };
     write(".metrics.json",
           [&](std::ostream& out) { out << metrics_json(m, provenance).dump(2) << "\n"; });
-    write(".g_r.csv", [&](std::ostream& out) { write_g_r_csv(out, m, provenance); });
+    write("." + metric_with(MetricRole::PairCorrelation).name + ".csv",
+          [&](std::ostream& out) { write_g_r_csv(out, m, provenance); });
     write(".phi_y.csv", [&](std::ostream& out) { write_phi_y_csv(out, m, provenance); });
     write(".p_z.csv", [&](std::ostream& out) { write_p_z_csv(out, m, provenance); });
     write(".voronoi_phi.csv", [&](std::ostream& out) { write_voronoi_csv(out, m, provenance); });

@@ -346,7 +346,8 @@ PackSummary summary_from_measure(const std::string& source, const nlohmann::orde
         s.p_z.push_back(numbers_at(j, "p_z", name, source));
     }
     s.gr_bin_width = number_at(object_at(j, "g_r_detail", source), "bin_width_over_d", source);
-    const std::string g_r_source = sibling_csv(source, "g_r");
+    const std::string g_r_source =
+        sibling_csv(source, metrics::metric_with(metrics::MetricRole::PairCorrelation).name);
     auto gr = columns(g_r_csv, g_r_source, {"r_over_d", "g"});
     s.gr_r = std::move(gr[0]);
     s.gr = std::move(gr[1]);

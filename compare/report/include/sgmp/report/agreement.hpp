@@ -99,7 +99,8 @@ struct PackSummary {
     std::vector<double> phi_y_mid;
     std::vector<double> phi_y;
     /// A blend's per-species values by name (species_rows.hpp), e.g.
-    /// "species_2:z_mean_tol_1e-3"; empty for equal spheres.
+    /// "species_2:" and a metric's name (metric_descriptors.hpp: species_metric_name);
+    /// empty for equal spheres.
     std::vector<std::pair<std::string, double>> species_scalars;
     /// Where its g(r) has contact peaks (contact_windows.hpp): none for equal spheres.
     std::vector<ContactRange> contact_ranges;

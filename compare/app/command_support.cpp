@@ -2,6 +2,7 @@
 
 #include "sgmp/pack/parameter_error.hpp"
 
+#include "sgmp/metrics/metric_descriptors.hpp"
 #include "sgmp/metrics/pack_content_error.hpp"
 
 #include <algorithm>
@@ -37,8 +38,11 @@ std::string read_text(const std::string& path) {
 
 PackSummary read_measured(const std::string& path, const CommonOptions& o) {
     const auto metrics = parse_json_input<nlohmann::ordered_json>(read_text(path), path);
-    return summary_from_measure(path, metrics, read_text(sibling_csv(path, "g_r")),
-                                read_text(sibling_csv(path, "phi_y")), measure_parameters(o));
+    return summary_from_measure(
+        path, metrics,
+        read_text(
+            sibling_csv(path, metrics::metric_with(metrics::MetricRole::PairCorrelation).name)),
+        read_text(sibling_csv(path, "phi_y")), measure_parameters(o));
 }
 
 /// FNV-1a over a file's bytes; nullopt when it cannot be read.

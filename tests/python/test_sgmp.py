@@ -104,6 +104,20 @@ def test_measure_equals_sgmp_compare_measure(tmp_path):
 
 
 @pytest.mark.cli
+def test_metric_table_names_every_scalar_measure_returns():
+    table = sgmp.metric_table()
+    names = [d["name"] for d in table]
+    assert len(names) == len(set(names))
+    m = sgmp.measure(sgmp.pack(count=300, arrangement="small-dense", seed=1))
+    for d in table:
+        assert d["kind"] in ("scalar", "curve", "distribution")
+        assert d["definition"].startswith("compare/docs/definitions.md#")
+        if d["in_metrics_json"]:
+            assert d["kind"] == "scalar" and d["name"] in m, d["name"]
+    assert {d["name"] for d in table if d["kind"] == "curve"} == {"g_r"}
+    assert [d["summary_column"] for d in table if d["name"] == "z_mean_tol_1e-3"] == ["z_1e-3"]
+
+
 def test_measure_of_a_blend_gives_the_partial_curves_of_sgmp_compare(tmp_path):
     path = tmp_path / "b.xyz"
     sgmp.write(sgmp.pack(count=800, arrangement="loose-random", seed=2, sides="periodic",

@@ -12,4 +12,9 @@ const std::vector<std::string>& coordination_tolerance_names() {
     return names;
 }
 
+const std::vector<std::string>& coordination_tolerance_labels() {
+    static const std::vector<std::string> labels{"0", "10⁻⁶", "10⁻³", "10⁻²", "2·10⁻²", "5·10⁻²"};
+    return labels;
+}
+
 }  // namespace sgmp::metrics

@@ -1,8 +1,10 @@
 #include "sgmp/metrics/metrics_output.hpp"
 
+#include <cstdint>
 #include <functional>
 #include <stdexcept>
 
+#include "sgmp/metrics/metric_descriptors.hpp"
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/pack/version.hpp"
 
@@ -123,31 +125,22 @@ Json metrics_json(const Measurement& m, const Json& prov) {
     j["schema_version"] = kSchemaVersion;
     j["count"] = m.count;
     j["diameter"] = m.mean_diameter;
-    j["phi"] = m.phi;
-    j["overlaps"] = m.overlaps.pairs.count;
-    j["overlap_max_over_d"] = m.overlaps.pairs.max_over_d;
     const auto& c = m.local.coordination;
     const auto& names = coordination_tolerance_names();
-    for (std::size_t t = 0; t < c.tolerances.size(); ++t) {
-        j["z_mean_tol_" + names[t]] = c.z_mean[t];
-    }
-    j["q6_global"] = m.local.bond_order.q6_global;
-    j["q6_local_mean"] = m.local.bond_order.q6_local_mean;
-    j["split_ratio"] = m.local.rdf.split_ratio;
-    if (m.voronoi) {
-        j["voronoi_phi_mean"] = m.voronoi->mean;
-        j["voronoi_phi_sd"] = m.voronoi->sd;
-    }
+    const auto metrics = ranked_metrics(&MetricDescriptor::json_rank);
+    const auto put = [&](bool detail) {
+        for (const MetricDescriptor* d : metrics) {
+            if ((d->json_rank >= kJsonDetail) != detail) {
+                continue;
+            }
+            if (const auto v = d->value(m, d->tolerance)) {
+                j[d->name] = d->integer ? Json(static_cast<std::int64_t>(*v)) : Json(*v);
+            }
+        }
+    };
+    put(false);
     j["region"] = box_json(m.region);
-    // Further detail.
-    j["overlap_mean_over_d"] = m.overlaps.pairs.mean_over_d;
-    j["overlaps_any"] = m.overlaps.pairs.count_any;
-    j["wall_overlaps"] = m.overlaps.walls.count;
-    j["wall_overlap_max_over_d"] = m.overlaps.walls.max_over_d;
-    j["wall_overlap_mean_over_d"] = m.overlaps.walls.mean_over_d;
-    for (std::size_t t = 0; t < c.tolerances.size(); ++t) {
-        j["wall_contacts_tol_" + names[t]] = c.wall_contacts[t];
-    }
+    put(true);  // the detail
     j["origins"] = c.origins;
     j["polydisperse"] = m.polydisperse;
     j["radius_min"] = m.min_radius;
@@ -155,40 +148,11 @@ Json metrics_json(const Measurement& m, const Json& prov) {
     j["container"] = m.container.to_string();
     j["container_source"] = m.container_source;
     j["top"] = m.top;
-    j["definitions"] = Json{
-        {"diameter", "mean diameter d = 2<r>; the length unit of every *_over_d value and of g(r)"},
-        {"phi", "exact sphere volume inside the region / region volume"},
-        {"overlaps", "pairs of the whole pack with r_i + r_j - |c_i - c_j| > overlap_floor*d"},
-        {"overlaps_any", "pairs of the whole pack with any positive overlap"},
-        {"z_mean_tol_X",
-         "mean number of particles j with |c_i-c_j| - r_i - r_j <= X*d, over centres i in the "
-         "region (walls apart)"},
-        {"wall_contacts_tol_X", "wall and floor contacts of centres in the region at gap <= X*d"},
-        {"split_ratio",
-         "g(sqrt(3) d) / g(2 d): mean g in the windows |r - sqrt(3) d| <= 0.05 d and |r - 2 d| "
-         "<= 0.05 d, each from its pair count over its edge-corrected window volume"},
-        {"voronoi_phi",
-         "local packing fraction (4/3 pi r^3) / V_cell of the centres in the region, cells of the "
-         "Voronoi (radical for unequal radii) tessellation bounded by the container walls, the "
-         "floor and a lid one diameter above the top sphere (voro++); sd over cells (population)"},
-        {"q6", "Steinhardt Q6, bonds |c_i-c_j| <= q6_cutoff*(r_i + r_j), origins in the region"},
-        {"g_r",
-         "origins: centres in the region; neighbours: all particles; shells counted inside the "
-         "space (default: container shrunk by d/2 at walls and floor, up to the highest centre; "
-         "gr_space=container: the container up to the top sphere); bins centred on k*bin_width; "
-         "density (gr_density=neighbours) the pairs over the shell volume summed out to the "
-         "range, so g -> 1 far from contact; gr_density=space: N/|space|"},
-        {"size_distribution",
-         "a polydisperse pack's radii by number: polydispersity sd(r)/mean(r), skewness "
-         "<(r - mean)^3>/sd^3, and the random-close-packing fraction of frictionless spheres "
-         "they predict by Desmond & Weeks, Phys. Rev. E 90, 022204 (2014): 0.634 + 0.0658 "
-         "delta + 0.0857 S delta^2, null outside the formula's range (delta <= 0.4, "
-         "-2 <= S <= 4)"},
-        {"sides",
-         "walls, or periodic: x and z periodic (pairs through every periodic image within "
-         "reach: the nearest one for contacts, and every image within g(r)'s range, as in "
-         "the infinite periodic pack, also beyond half the period; g(r) shells and Voronoi "
-         "cells cut by the floor and the top alone; default region the whole cell across)"}};
+    Json definitions = Json::object();
+    for (const auto& [key, text] : metric_definitions()) {
+        definitions[key] = text;
+    }
+    j["definitions"] = definitions;
     j["sides"] = m.container.periodic ? "periodic" : "walls";
     j["overlaps_detail"] = Json{{"floor_over_d", m.overlaps.floor},
                                 {"pairs", overlap_json(m.overlaps.pairs)},
@@ -237,8 +201,8 @@ Json metrics_json(const Measurement& m, const Json& prov) {
             for (Json& one : j["species"]["species"]) {
                 for (const VoronoiSpecies& v : m.voronoi->by_species) {
                     if (v.species == one["species"].get<int>()) {
-                        one["voronoi_phi_mean"] = v.mean;
-                        one["voronoi_phi_sd"] = v.sd;
+                        one[metric_with(MetricRole::LocalPacking).name] = v.mean;
+                        one[metric_with(MetricRole::LocalSpread).name] = v.sd;
                         one["voronoi_phi_global"] = v.global;
                     }
                 }
@@ -370,7 +334,8 @@ void write_pack_metrics(const std::filesystem::path& dir, const std::string& ste
     };
     write(".metrics.json",
           [&](std::ostream& out) { out << metrics_json(m, provenance).dump(2) << "\n"; });
-    write(".g_r.csv", [&](std::ostream& out) { write_g_r_csv(out, m, provenance); });
+    write("." + metric_with(MetricRole::PairCorrelation).name + ".csv",
+          [&](std::ostream& out) { write_g_r_csv(out, m, provenance); });
     write(".phi_y.csv", [&](std::ostream& out) { write_phi_y_csv(out, m, provenance); });
     write(".p_z.csv", [&](std::ostream& out) { write_p_z_csv(out, m, provenance); });
     write(".voronoi_phi.csv", [&](std::ostream& out) { write_voronoi_csv(out, m, provenance); });

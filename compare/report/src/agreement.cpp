@@ -67,12 +67,10 @@ void check_same_bins(const std::vector<const PackSummary*>& packs) {
 
 /// The curve a rule judges, as the values of one pack.
 std::vector<double> curve_values(const MetricRule& rule, const PackSummary& p) {
-    if (rule.name == "g_r") {
+    if (rule.kind == MetricKind::Curve) {
         return p.gr;
     }
-    const auto& names = coordination_tolerance_names();
-    const auto it = std::find(names.begin(), names.end(), rule.name.substr(8));  // after "p_z_tol_"
-    return p.p_z.at(static_cast<std::size_t>(it - names.begin()));
+    return p.p_z.at(rule.descriptor->tolerance);  // a distribution: P(Z) at its tolerance
 }
 
 std::vector<double> mean_values(const MetricRule& rule,
@@ -108,7 +106,7 @@ bool judged_bin(const PackSummary& axis, std::size_t k, const std::vector<Contac
 
 double distance_between(const MetricRule& rule, const PackSummary& axis, std::vector<double> a,
                         std::vector<double> b, const std::vector<ContactRange>& ranges) {
-    if (rule.name == "g_r") {
+    if (rule.kind == MetricKind::Curve) {
         if (a.size() != axis.gr_r.size() || b.size() != axis.gr_r.size()) {
             throw std::invalid_argument("curves to compare have different lengths");
         }
@@ -158,7 +156,7 @@ std::vector<double> scalar_column(const MetricRule& rule,
 double overlap_depth(const std::vector<const PackSummary*>& packs) {
     double sum = 0.0;
     for (const auto* p : packs) {
-        sum += p->scalar("overlap_mean_over_d");
+        sum += p->scalar(metrics::metric_with(metrics::MetricRole::OverlapDepth).name);
     }
     return packs.empty() ? 0.0 : sum / static_cast<double>(packs.size());
 }
@@ -215,7 +213,7 @@ std::vector<std::vector<double>> judged_bins(const MetricRule& rule,
     std::vector<std::vector<double>> curves;
     for (const auto* p : packs) {
         const auto values = curve_values(rule, *p);
-        if (rule.name != "g_r") {
+        if (rule.kind != MetricKind::Curve) {
             curves.push_back(values);
             continue;
         }
@@ -246,7 +244,7 @@ MetricRow judge_curve(const MetricRule& rule, const std::vector<const PackSummar
     }
     const auto bins_a = judged_bins(rule, a, ranges);
     const auto bins_b = judged_bins(rule, b, ranges);
-    take(row, rule.name == "g_r"
+    take(row, rule.kind == MetricKind::Curve
                   ? test_l2_curves(bins_a, bins_b, b.front()->gr_bin_width, rule.margin, alpha)
                   : test_total_variation(row.difference, noise_variance(bins_a, bins_b),
                                          rule.margin, std::min(a.size(), b.size()), alpha));
@@ -416,7 +414,7 @@ bool decides_with(const MetricRule& rule, const std::vector<const PackSummary*>&
     if (reference.size() < 2) {
         return false;
     }
-    if (rule.name != "g_r") {
+    if (rule.kind != MetricKind::Curve) {
         return tv_decides_with(rule, candidate, reference, alpha, candidate_n, reference_n);
     }
     auto both = candidate;

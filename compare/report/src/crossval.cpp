@@ -1,5 +1,7 @@
 #include "sgmp/report/crossval.hpp"
 
+#include "sgmp/metrics/metric_descriptors.hpp"
+
 #include <algorithm>
 #include <map>
 #include <set>
@@ -249,8 +251,8 @@ bool CrossValidation::tuned(const std::string& group) const {
 }
 
 const std::vector<std::string>& headline_metrics() {
-    static const std::vector<std::string> names{"phi",         "z_mean_tol_1e-3", "z_mean_tol_1e-2",
-                                                "split_ratio", "p_z_tol_1e-3",    "g_r"};
+    static const std::vector<std::string> names =
+        metrics::ranked_metric_names(&metrics::MetricDescriptor::headline_rank);
     return names;
 }
 

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "sgmp/metrics/metric_descriptors.hpp"
+
 namespace sgmp::report {
 
 namespace {
@@ -41,14 +43,13 @@ std::vector<const HeadlineRow*> rows_of(const CrossValidation& cv, const std::st
     return rows;
 }
 
-/// The metrics a reader weighs first, in order: packing fraction, contacts, structure.
-constexpr const char* kLeadingMetrics[] = {"phi", "z_mean_tol_1e-3", "z_mean_tol_1e-2",
-                                           "g_r", "split_ratio",     "voronoi_phi_mean"};
-
-/// The kept difference to name: the first of kLeadingMetrics that differs (at its largest
-/// ratio), else the largest of any metric.
+/// The kept difference to name: the first of the metrics a reader weighs first (packing
+/// fraction, contacts, structure: leading_rank, metric_descriptors.hpp) that differs (at its
+/// largest ratio), else the largest of any metric.
 KeptDifference leading_difference(const StandIn& s) {
-    for (const char* metric : kLeadingMetrics) {
+    static const std::vector<std::string> leading =
+        metrics::ranked_metric_names(&metrics::MetricDescriptor::leading_rank);
+    for (const std::string& metric : leading) {
         const KeptDifference* best = nullptr;
         for (const KeptDifference& d : s.kept) {
             if (d.metric == metric && (best == nullptr || d.ratio > best->ratio)) {
@@ -128,7 +129,9 @@ std::string stability(const std::vector<const HeadlineRow*>& rows) {
         certified = certified && row->certified;
         const bool measured = std::any_of(row->against.begin(), row->against.end(),
                                           [](const HeadlineVerdict& v) { return !v.rows.empty(); });
-        const double z = measured ? row->value("z_mean_tol_1e-3") : std::nan("");
+        const double z = measured
+                             ? row->value(metrics::metric_with(metrics::MetricRole::Stability).name)
+                             : std::nan("");
         if (!row->certified && std::isfinite(z) && z < kLeastStableFrictionalZ) {
             unstable.push_back(row->count);
             z_lo = std::min(z_lo, z);

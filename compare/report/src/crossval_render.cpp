@@ -9,6 +9,7 @@
 
 #include "matrix_table.hpp"
 #include "sgmp/metrics/csv_text.hpp"
+#include "sgmp/metrics/metric_descriptors.hpp"
 #include "sgmp/metrics/metrics_output.hpp"
 #include "sgmp/report/report_render.hpp"
 #include "sgmp/report/species_matrix.hpp"
@@ -20,6 +21,20 @@ using metrics::write_csv_preamble;
 namespace {
 
 using Json = nlohmann::ordered_json;
+
+/// The headline's scalar metrics, in headline order: the value columns of its tables.
+const std::vector<const metrics::MetricDescriptor*>& headline_scalars() {
+    static const std::vector<const metrics::MetricDescriptor*> scalars = [] {
+        std::vector<const metrics::MetricDescriptor*> h;
+        for (const auto* d : metrics::ranked_metrics(&metrics::MetricDescriptor::headline_rank)) {
+            if (d->kind == metrics::MetricKind::Scalar) {
+                h.push_back(d);
+            }
+        }
+        return h;
+    }();
+    return scalars;
+}
 
 std::string fixed(double value, int decimals) {
     char buffer[64];
@@ -326,10 +341,11 @@ void headline_markdown(std::ostringstream& md, const CrossValidation& cv) {
     }
     md << "\n";
     for (const auto& row : cv.rows) {
-        md << "| " << row.count << " | " << row.group << " | " << optional_fixed(row.seconds, 3)
-           << " | " << fixed(row.value("phi"), 4) << " | " << fixed(row.value("z_mean_tol_1e-3"), 2)
-           << " | " << fixed(row.value("z_mean_tol_1e-2"), 2) << " | "
-           << fixed(row.value("split_ratio"), 3) << " |";
+        md << "| " << row.count << " | " << row.group << " | " << optional_fixed(row.seconds, 3);
+        for (const metrics::MetricDescriptor* d : headline_scalars()) {
+            md << " | " << fixed(row.value(d->name), d->digits);
+        }
+        md << " |";
         for (const auto& v : row.against) {
             if (v.rows.empty()) {
                 md << " · | — | — |";
@@ -339,7 +355,7 @@ void headline_markdown(std::ostringstream& md, const CrossValidation& cv) {
             for (const auto& name : headline_metrics()) {
                 text += verdict_mark(v.row(name).verdict);
             }
-            const auto& gr = v.row("g_r");
+            const auto& gr = v.row(metrics::metric_with(metrics::MetricRole::PairCorrelation).name);
             md << " " << text << " | " << (gr.ratio ? sig(*gr.ratio) : "—") << " | "
                << speed(v.speedup) << " |";
         }
@@ -360,7 +376,8 @@ void thesis_markdown(std::ostringstream& md, const CrossValidation& cv) {
     const std::string none = "—";
     for (const auto& row : cv.rows) {
         const auto& t = row.thesis;
-        const double phi = row.value("phi");
+        const double phi =
+            row.value(metrics::metric_with(metrics::MetricRole::PackingFraction).name);
         md << "| " << row.count << " | " << row.group << " | " << fixed(row.diameter, 4) << " | "
            << (t ? fixed(t->runtime_seconds, 0) + " (" + t->table + ")" : none) << " | "
            << optional_fixed(row.seconds, 3) << " | " << speed(row.thesis_speedup) << " | "
@@ -470,10 +487,12 @@ std::string render_headline_text(const CrossValidation& cv) {
         out << "\n";
         for (const auto& row : cv.rows) {
             char head[192];
+            // The four headline scalars (headline_scalars()), in a fixed text layout.
+            const auto& h = headline_scalars();
             std::snprintf(head, sizeof head, "%-6zu %-18.18s %7s  %.4f  %5.2f   %5.2f  %5.3f",
                           row.count, row.group.c_str(), optional_fixed(row.seconds, 3).c_str(),
-                          row.value("phi"), row.value("z_mean_tol_1e-3"),
-                          row.value("z_mean_tol_1e-2"), row.value("split_ratio"));
+                          row.value(h.at(0)->name), row.value(h.at(1)->name),
+                          row.value(h.at(2)->name), row.value(h.at(3)->name));
             out << head;
             for (std::size_t r = first; r < last && r < row.against.size(); ++r) {
                 const auto& v = row.against[r];
@@ -573,16 +592,16 @@ Json crossval_json(const CrossValidation& cv) {
                   {"count", row.count},
                   {"packs", row.packs},
                   {"diameter", row.diameter},
-                  {"seconds", optional_json(row.seconds)},
-                  {"phi", row.value("phi")},
-                  {"z_mean_tol_1e-3", row.value("z_mean_tol_1e-3")},
-                  {"z_mean_tol_1e-2", row.value("z_mean_tol_1e-2")},
-                  {"split_ratio", row.value("split_ratio")},
-                  {"against", against}};
+                  {"seconds", optional_json(row.seconds)}};
+        for (const metrics::MetricDescriptor* d : headline_scalars()) {
+            item[d->name] = row.value(d->name);
+        }
+        item["against"] = against;
         if (row.thesis) {
             item["thesis"] = {{"table", row.thesis->table},
                               {"runtime_seconds", row.thesis->runtime_seconds},
-                              {"phi", row.thesis->packing_fraction}};
+                              {metrics::metric_with(metrics::MetricRole::PackingFraction).name,
+                               row.thesis->packing_fraction}};
             item["speedup_vs_thesis"] = optional_json(row.thesis_speedup);
         }
         if (row.start_height) {

@@ -1,17 +1,15 @@
-// The metric table, its vocabulary and the summary of one pack (agreement.hpp).
+// The report's metric rules, drawn from the metric table (metric_descriptors.hpp), its
+// vocabulary and the summary of one pack (agreement.hpp).
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
-#include "sgmp/metrics/coordination_tolerances.hpp"
 #include "sgmp/report/agreement.hpp"
 #include "sgmp/report/species_rows.hpp"
 
 namespace sgmp::report {
 
-using metrics::coordination_tolerance_names;
-using metrics::coordination_tolerances;
 using metrics::Measurement;
 
 std::string_view to_string(Verdict verdict) {
@@ -29,61 +27,16 @@ std::string_view to_string(Verdict verdict) {
 }
 
 const std::vector<MetricRule>& metric_rules() {
-    using K = MetricKind;
-    // Margins: compare/README.md "Margins" says why each is what it is. The last field is
-    // the gap tolerance δ/d of a contact metric.
-    static const std::vector<MetricRule> rules{
-        {"phi", "φ (control volume)", "ratio", K::Scalar, 0.010, true, "φ", {}},
-        {"z_mean_tol_1e-6", "Z(δ = 10⁻⁶)", "contacts/particle", K::Scalar, 0.30, true, "Z 10⁻⁶",
-         1e-6},
-        {"z_mean_tol_1e-3", "Z(δ = 10⁻³)", "contacts/particle", K::Scalar, 0.30, true, "Z 10⁻³",
-         1e-3},
-        {"z_mean_tol_1e-2", "Z(δ = 10⁻²)", "contacts/particle", K::Scalar, 0.30, true, "Z 10⁻²",
-         1e-2},
-        {"z_mean_tol_2e-2", "Z(δ = 2·10⁻²)", "contacts/particle", K::Scalar, 0.30, true, "Z 2·10⁻²",
-         2e-2},
-        {"z_mean_tol_5e-2", "Z(δ = 5·10⁻²)", "contacts/particle", K::Scalar, 0.30, true, "Z 5·10⁻²",
-         5e-2},
-        // 0.05, not 0.03: material alone moves it by up to 0.048 between three input
-        // scripts of one class (compare/notes/material-spread-2026-12-07.md).
-        {"split_ratio", "split ratio g(√3·d)/g(2·d)", "ratio", K::Scalar, 0.05, true, "split", {}},
-        {"voronoi_phi_mean",
-         "Voronoi local φ, mean",
-         "ratio",
-         K::Scalar,
-         0.010,
-         true,
-         "Voronoi φ",
-         {}},
-        {"voronoi_phi_sd",
-         "Voronoi local φ, sd",
-         "ratio",
-         K::Scalar,
-         0.002,
-         true,
-         "Voronoi sd",
-         {}},
-        {"q6_global", "Q6 (global)", "dimensionless", K::Scalar, 0.03, true, "Q6", {}},
-        // Information: material alone moves it by 0.004, half the class gap, so it is not
-        // determined by the class (compare/notes/material-spread-2026-12-07.md).
-        {"q6_local_mean",
-         "Q6 (local mean)",
-         "dimensionless",
-         K::Scalar,
-         0.0025,
-         false,
-         "Q6 local",
-         {}},
-        {"g_r", "g(r), r ≥ 1.1·d", "ratio", K::Curve, kGrMargin, true, "g(r)", {}},
-        {"p_z_tol_1e-3", "P(Z) at δ = 10⁻³", "ratio", K::Curve, 0.08, true, "P(Z) 10⁻³", 1e-3},
-        {"p_z_tol_1e-2", "P(Z) at δ = 10⁻²", "ratio", K::Curve, 0.08, true, "P(Z) 10⁻²", 1e-2},
-        // Information: soft DEM contacts overlap by construction, hard SGMP spheres never.
-        {"z_mean_tol_0", "Z(δ = 0)", "contacts/particle", K::Scalar, 0.30, false, "Z 0", {}},
-        {"overlaps", "overlapping pairs", "pairs", K::Scalar, 1.0, false, "overlaps", {}},
-        {"overlap_max_over_d", "deepest overlap", "d", K::Scalar, 1e-3, false, "deepest", {}},
-        {"overlap_mean_over_d", "mean overlap", "d", K::Scalar, 1e-3, false, "mean overlap", {}},
-        {"wall_overlaps", "wall overlaps", "particles", K::Scalar, 1.0, false, "wall overlaps", {}},
-    };
+    static const std::vector<MetricRule> rules = [] {
+        std::vector<MetricRule> r;
+        for (const metrics::MetricDescriptor& d : metrics::metric_descriptors()) {
+            if (d.report) {
+                r.push_back({d.name, d.label, d.unit, d.kind, d.margin, d.judged, d.short_label,
+                             d.contact_tolerance, &d});
+            }
+        }
+        return r;
+    }();
     return rules;
 }
 
@@ -134,36 +87,13 @@ PackSummary summarise(const std::string& source, const Pack& pack, const Measure
     s.contact_ranges = contact_ranges(species_diameters, 2.0 * m.min_radius / m.mean_diameter,
                                       2.0 * m.max_radius / m.mean_diameter);
     const auto& c = m.local.coordination;
-    const auto& names = coordination_tolerance_names();
     for (const auto& rule : metric_rules()) {
         if (rule.kind != MetricKind::Scalar) {
             continue;
         }
-        double v = 0.0;
-        if (rule.name == "phi") {
-            v = m.phi;
-        } else if (rule.name.rfind("z_mean_tol_", 0) == 0) {
-            const auto it = std::find(names.begin(), names.end(), rule.name.substr(11));
-            v = c.z_mean[static_cast<std::size_t>(it - names.begin())];
-        } else if (rule.name == "split_ratio") {
-            v = m.local.rdf.split_ratio;
-        } else if (rule.name == "voronoi_phi_mean") {
-            v = m.voronoi ? m.voronoi->mean : 0.0;
-        } else if (rule.name == "voronoi_phi_sd") {
-            v = m.voronoi ? m.voronoi->sd : 0.0;
-        } else if (rule.name == "q6_global") {
-            v = m.local.bond_order.q6_global;
-        } else if (rule.name == "q6_local_mean") {
-            v = m.local.bond_order.q6_local_mean;
-        } else if (rule.name == "overlaps") {
-            v = static_cast<double>(m.overlaps.pairs.count);
-        } else if (rule.name == "overlap_max_over_d") {
-            v = m.overlaps.pairs.max_over_d;
-        } else if (rule.name == "overlap_mean_over_d") {
-            v = m.overlaps.pairs.mean_over_d;
-        } else if (rule.name == "wall_overlaps") {
-            v = static_cast<double>(m.overlaps.walls.count);
-        }
+        // A value the measurement lacks (Voronoi not asked for) reads as 0.
+        const auto& d = *rule.descriptor;
+        const double v = d.value(m, d.tolerance).value_or(0.0);
         s.scalars.push_back(v);
     }
     add_species_scalars(m, s);

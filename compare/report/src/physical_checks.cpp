@@ -5,6 +5,7 @@
 #include <string>
 
 #include "sgmp/metrics/coordination_tolerances.hpp"
+#include "sgmp/metrics/metric_descriptors.hpp"
 #include "sgmp/pack/metadata.hpp"
 #include "sgmp/report/agreement.hpp"
 
@@ -52,8 +53,7 @@ double coordination_bound(double delta, bool several_sizes) {
 
 /// Refuses a mean coordination `value` at tolerance index `t` outside [0, the bound].
 void check_coordination(const PackSummary& pack, std::size_t t, double value) {
-    const std::string what =
-        "z_mean_tol_" + coordination_tolerance_names().at(t) + " = " + std::to_string(value);
+    const std::string what = metrics::coordination_metric(t).name + " = " + std::to_string(value);
     if (!std::isfinite(value) || value < 0.0) {
         impossible(pack, what, "must be finite and >= 0");
     }
@@ -106,13 +106,11 @@ void check_physical(const PackSummary& pack) {
         if (!std::isfinite(v) || v < 0.0) {
             impossible(pack, what, "must be finite and >= 0");
         }
-        if (rule.name.rfind("z_mean_tol_", 0) == 0) {
-            const auto z = std::find(names.begin(), names.end(), rule.name.substr(11));
-            if (z != names.end()) {
-                check_coordination(pack, static_cast<std::size_t>(z - names.begin()), v);
-            }
+        const metrics::PhysicalBound bound = rule.descriptor->bound;
+        if (bound == metrics::PhysicalBound::Coordination) {
+            check_coordination(pack, rule.descriptor->tolerance, v);
         }
-        if (rule.name == "phi" || rule.name == "voronoi_phi_mean") {
+        if (bound == metrics::PhysicalBound::PackingFraction) {
             if (of_several_sizes(pack) ? v >= 1.0 : v > kKeplerBound) {
                 impossible(
                     pack, what,

@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "sgmp/metrics/metric_descriptors.hpp"
 #include "sgmp/metrics/metrics_output.hpp"
 #include "sgmp/metrics/summary_columns.hpp"
 #include "sgmp/pack/csv_fields.hpp"
@@ -340,11 +341,13 @@ PackSummary summary_from_measure(const std::string& source, const nlohmann::orde
     }
     const auto& names = coordination_tolerance_names();
     for (const auto& name : names) {
-        s.z_mean.push_back(number_at(j, "z_mean_tol_" + name, source));
+        const std::size_t t = s.z_mean.size();
+        s.z_mean.push_back(number_at(j, metrics::coordination_metric(t).name, source));
         s.p_z.push_back(numbers_at(j, "p_z", name, source));
     }
     s.gr_bin_width = number_at(object_at(j, "g_r_detail", source), "bin_width_over_d", source);
-    const std::string g_r_source = sibling_csv(source, "g_r");
+    const std::string g_r_source =
+        sibling_csv(source, metrics::metric_with(metrics::MetricRole::PairCorrelation).name);
     auto gr = columns(g_r_csv, g_r_source, {"r_over_d", "g"});
     s.gr_r = std::move(gr[0]);
     s.gr = std::move(gr[1]);
@@ -381,11 +384,12 @@ std::vector<std::pair<std::string, PackSummary>> summaries_from_batch(std::strin
         }
         if (header.empty()) {
             header = fields;
-            if (std::find(header.begin(), header.end(), "split_ratio") == header.end() ||
+            const std::string& marker =
+                metrics::metric_with(metrics::MetricRole::BatchSummary).summary_column;
+            if (std::find(header.begin(), header.end(), marker) == header.end() ||
                 header.front() != "job") {
                 throw InputError(source, n + 1,
-                                 "is not an sgmp batch summary (no job, "
-                                 "split_ratio columns)");
+                                 "is not an sgmp batch summary (no job, " + marker + " columns)");
             }
             continue;
         }
@@ -450,8 +454,9 @@ std::vector<std::pair<std::string, PackSummary>> summaries_from_batch(std::strin
             }
             s.scalars.push_back(v);
         }
-        for (const auto& name : names) {
-            s.z_mean.push_back(measured(summary_column_of("z_mean_tol_" + name)->column));
+        for (std::size_t t = 0; t < names.size(); ++t) {
+            s.z_mean.push_back(
+                measured(summary_column_of(metrics::coordination_metric(t).name)->column));
         }
         s.p_z.assign(names.size(), {});
         out.emplace_back(s.source, std::move(s));

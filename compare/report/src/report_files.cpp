@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "sgmp/metrics/metric_descriptors.hpp"
 #include "sgmp/pack/atomic_file.hpp"
 #include "sgmp/report/report_plots.hpp"
 
@@ -24,7 +25,8 @@ ReportContext write_report(const fs::path& directory, bool overwrite, const Repo
     write_directory_atomically(directory, overwrite, [&](const fs::path& temporary) {
         const PlotResult plots = make_plots(
             context.plots_per_count ? panels_per_count(report) : panels_per_comparison(report),
-            context.plots_per_count ? trends_of(report, {"phi", "z_mean_tol_1e-3", "split_ratio"})
+            context.plots_per_count ? trends_of(report, metrics::ranked_metric_names(
+                                                            &metrics::MetricDescriptor::trend_rank))
                                     : std::vector<Trend>{},
             temporary);
         context.plots_made = plots.made;

@@ -30,7 +30,7 @@ std::string fixed(double v) {
 }
 
 std::string mean_sd(const MetricRow& row, double mean, double sd) {
-    if (row.kind == MetricKind::Curve) {
+    if (row.kind != MetricKind::Scalar) {
         return "—";
     }
     return fixed(mean) + " ± " + fixed(sd);

@@ -5,32 +5,30 @@
 #include <map>
 #include <optional>
 
+#include "sgmp/metrics/metric_descriptors.hpp"
+
 namespace sgmp::report {
 namespace {
 
-/// One per-species metric: the suffix of its name, its label, unit, margin and, for a
-/// contact number, the gap tolerance.
-struct SpeciesMetric {
-    const char* name;
-    const char* label;
-    const char* unit;
-    double margin;
-    std::optional<double> contact_tolerance;
-};
+using metrics::MetricDescriptor;
 
-constexpr const char* kMixing = "mixing_deviation_max";
-
-const std::vector<SpeciesMetric>& species_metrics() {
-    static const std::vector<SpeciesMetric> metrics{
-        {"z_mean_tol_1e-3", "Z(δ = 10⁻³)", "contacts/particle", 0.30, 1e-3},
-        {"z_mean_tol_1e-2", "Z(δ = 10⁻²)", "contacts/particle", 0.30, 1e-2},
-        {"voronoi_phi_mean", "Voronoi local φ, mean", "ratio", 0.010, std::nullopt},
-    };
-    return metrics;
+/// The whole-pack metrics also judged per species (per_species, metric_descriptors.hpp).
+const std::vector<const MetricDescriptor*>& species_metrics() {
+    static const std::vector<const MetricDescriptor*> list = [] {
+        std::vector<const MetricDescriptor*> l;
+        for (const MetricDescriptor& d : metrics::metric_descriptors()) {
+            if (d.per_species) {
+                l.push_back(&d);
+            }
+        }
+        return l;
+    }();
+    return list;
 }
 
-std::string species_name(int species, const char* metric) {
-    return "species_" + std::to_string(species) + ":" + metric;
+/// The mixing profile's largest deviation: a blend's one whole-pack species row.
+const MetricDescriptor& mixing() {
+    return metrics::metric_with(metrics::MetricRole::Mixing);
 }
 
 bool held_by_all(const std::string& name, const std::vector<const PackSummary*>& packs) {
@@ -42,28 +40,29 @@ bool held_by_all(const std::string& name, const std::vector<const PackSummary*>&
 }  // namespace
 
 bool is_species_metric(const std::string& name) {
-    return name.rfind("species_", 0) == 0 || name == kMixing;
+    return name.rfind("species_", 0) == 0 || name == mixing().name;
 }
 
 void add_species_scalars(const metrics::Measurement& m, PackSummary& s) {
     if (!m.species) {
         return;
     }
-    const auto& names = metrics::coordination_tolerance_names();
+    const std::size_t tolerances = metrics::coordination_tolerances().size();
     for (const auto& one : m.species->species) {
-        for (std::size_t t = 0; t < names.size(); ++t) {
-            const std::string metric = "z_mean_tol_" + names[t];
-            s.species_scalars.emplace_back(species_name(one.species, metric.c_str()),
-                                           one.z_mean.at(t));
+        for (std::size_t t = 0; t < tolerances; ++t) {
+            s.species_scalars.emplace_back(
+                metrics::species_metric_name(one.species, metrics::coordination_metric(t).name),
+                one.z_mean.at(t));
         }
     }
     if (m.voronoi) {
+        const std::string& local = metrics::metric_with(metrics::MetricRole::LocalPacking).name;
         for (const auto& v : m.voronoi->by_species) {
-            s.species_scalars.emplace_back(species_name(v.species, "voronoi_phi_mean"), v.mean);
+            s.species_scalars.emplace_back(metrics::species_metric_name(v.species, local), v.mean);
         }
     }
-    if (m.mixing) {
-        s.species_scalars.emplace_back(kMixing, m.mixing->deviation);
+    if (const auto deviation = mixing().value(m, 0)) {
+        s.species_scalars.emplace_back(mixing().name, *deviation);
     }
 }
 
@@ -80,21 +79,20 @@ std::vector<MetricRule> species_rules(const std::vector<const PackSummary*>& a,
         }
     }
     for (const auto& [number, present] : species) {
-        for (const SpeciesMetric& metric : species_metrics()) {
-            const std::string name = species_name(number, metric.name);
+        for (const MetricDescriptor* metric : species_metrics()) {
+            const std::string name = metrics::species_metric_name(number, metric->name);
             if (!held_by_all(name, a) || !held_by_all(name, b)) {
                 continue;
             }
-            const std::string label =
-                std::string(metric.label) + ", species " + std::to_string(number);
-            rules.push_back(MetricRule{name, label, metric.unit, MetricKind::Scalar, metric.margin,
-                                       true, label, metric.contact_tolerance});
+            const std::string label = metric->label + ", species " + std::to_string(number);
+            rules.push_back(MetricRule{name, label, metric->unit, MetricKind::Scalar,
+                                       metric->margin, true, label, metric->contact_tolerance});
         }
     }
-    if (held_by_all(kMixing, a) && held_by_all(kMixing, b)) {
-        rules.push_back(MetricRule{kMixing, "mixing: largest share deviation per height quarter",
-                                   "ratio", MetricKind::Scalar, 0.05, true, "mixing",
-                                   std::nullopt});
+    const MetricDescriptor& mix = mixing();
+    if (held_by_all(mix.name, a) && held_by_all(mix.name, b)) {
+        rules.push_back(MetricRule{mix.name, mix.label, mix.unit, MetricKind::Scalar, mix.margin,
+                                   mix.judged, mix.short_label, std::nullopt});
     }
     return rules;
 }

@@ -7,6 +7,7 @@
 
 #include "bindings.hpp"
 #include "sgmp/metrics/measure.hpp"
+#include "sgmp/metrics/metric_descriptors.hpp"
 #include "sgmp/metrics/metrics_output.hpp"
 #include "sgmp/metrics/parallel.hpp"
 #include "sgmp/pack/parameter_error.hpp"
@@ -93,7 +94,8 @@ py::dict measure(const py::object& pack_object, const std::optional<std::vector<
     const auto json = metrics::metrics_json(m, metrics::provenance("python", pack, o));
     py::dict out = py::module_::import("json").attr("loads")(json.dump());
     const auto& rdf = m.local.rdf;
-    out["g_r"] = table({&rdf.r_over_d, &rdf.g});
+    out[metrics::metric_with(metrics::MetricRole::PairCorrelation).name.c_str()] =
+        table({&rdf.r_over_d, &rdf.g});
     std::vector<double> y_mid;
     for (std::size_t k = 0; k < m.phi_profile.phi.size(); ++k) {
         y_mid.push_back(0.5 * (m.phi_profile.y_lo[k] + m.phi_profile.y_hi[k]));
@@ -124,9 +126,39 @@ py::dict measure(const py::object& pack_object, const std::optional<std::vector<
     return out;
 }
 
+/// The metric table (metric_descriptors.hpp), one dict per metric.
+py::list metric_table() {
+    py::list out;
+    for (const metrics::MetricDescriptor& d : metrics::metric_descriptors()) {
+        const char* kind = d.kind == metrics::MetricKind::Scalar  ? "scalar"
+                           : d.kind == metrics::MetricKind::Curve ? "curve"
+                                                                  : "distribution";
+        py::dict one;
+        one["name"] = d.name;
+        one["label"] = d.label;
+        one["unit"] = d.unit;
+        one["definition"] = d.definition;
+        one["kind"] = kind;
+        one["margin"] = d.margin;
+        one["judged"] = d.judged;
+        one["contact_tolerance"] =
+            d.contact_tolerance ? py::object(py::float_(*d.contact_tolerance)) : py::none();
+        one["summary_column"] = d.summary_column.empty() ? py::object(py::none())
+                                                         : py::object(py::str(d.summary_column));
+        one["in_report"] = d.report;
+        one["in_metrics_json"] = d.json_rank != metrics::kUnranked;
+        out.append(one);
+    }
+    return out;
+}
+
 }  // namespace
 
 void bind_measure(py::module_& m) {
+    m.def("metric_table", &metric_table,
+          "The metric table: one dict per metric (name, label, unit, definition link, kind "
+          "scalar/curve/distribution, margin, judged, contact_tolerance, summary_column, "
+          "in_report, in_metrics_json), as sgmp-compare judges and writes them.");
     const MeasureOptions defaults;
     m.def("measure", &measure, py::arg("pack"), py::arg("region") = py::none(),
           py::arg("slab") = defaults.slab_thickness, py::arg("gr_bin") = defaults.gr_bin_width,

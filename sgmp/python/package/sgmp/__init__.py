@@ -9,7 +9,7 @@ their typed headers.
 import math
 import os
 import re
-from typing import Any, Callable, Dict, NamedTuple, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Dict, List, NamedTuple, Optional, Sequence, Tuple, Union
 
 from . import _sgmp
 from ._sgmp import Pack, __version__
@@ -18,7 +18,8 @@ HeaderValue = Union[bool, int, float, str, Tuple[Union[int, float], ...], "Conta
 Progress = Callable[[str, int, int], None]
 PathLike = Union[str, "os.PathLike[str]"]
 
-__all__ = ["Pack", "Container", "pack", "arrange", "read", "write", "measure", "__version__"]
+__all__ = ["Pack", "Container", "pack", "arrange", "read", "write", "measure", "metric_table",
+           "__version__"]
 
 
 class Container(NamedTuple):
@@ -239,6 +240,16 @@ def measure(pack: Pack, region: Optional[Sequence[float]] = None,
         slab=slab, gr_bin=gr_bin, gr_range=gr_range, gr_density=gr_density,
         gr_container_space=gr_container_space, voronoi=voronoi, q6_cutoff=q6_cutoff,
         overlap_floor=overlap_floor, threads=threads)))
+
+
+def metric_table() -> List[Dict[str, Any]]:
+    """The metric table sgmp-compare judges and writes by, one dict per metric: name (the
+    key of measure()'s dict and of metrics.json), label, unit, definition (a link into
+    compare/docs/definitions.md), kind ("scalar", "curve" or "distribution"), margin (the
+    declared equivalence margin), judged (False: information only), contact_tolerance (δ/d
+    of a contact metric, else None), summary_column (its `sgmp batch` summary.csv column, or
+    None), in_report (a row of every comparison) and in_metrics_json."""
+    return _sgmp.metric_table()
 
 
 def _options_of_the_extension() -> Optional[list]:

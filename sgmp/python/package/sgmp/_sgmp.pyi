@@ -1,7 +1,7 @@
 # Types of the compiled extension sgmp._sgmp (pybind11; sgmp/python/src/). Checked by mypy
 # in tests/python/test_typing.py against sgmp/__init__.py and a user's script.
 import os
-from typing import Any, Callable, Dict, Mapping, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy
 import numpy.typing
@@ -38,6 +38,7 @@ class Pack:
     def __len__(self) -> int: ...
 
 def header_kinds() -> Dict[str, str]: ...
+def metric_table() -> List[Dict[str, Any]]: ...
 def pack(
     count: int,
     arrangement: str,

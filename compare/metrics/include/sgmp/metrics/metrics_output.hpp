@@ -1,7 +1,7 @@
 #pragma once
 /// @file metrics_output.hpp
-/// Per-pack outputs: the metrics JSON (fixed keys: count, diameter, phi, overlaps, z_mean_tol_*,
-/// q6_*, region, plus more) and the curve CSVs (g_r, phi_y, p_z, voronoi_phi), each with its header
+/// Per-pack outputs: the metrics JSON (count, diameter, the metrics of metric_descriptors.hpp
+/// in their json_rank order, region, the detail) and the curve CSVs (g_r, phi_y, p_z, voronoi_phi), each with its header
 /// row first, then '#' provenance lines (csv_text.hpp).
 
 #include <filesystem>

@@ -1,9 +1,9 @@
 #pragma once
 /// @file summary_columns.hpp
-/// The metric columns of `sgmp batch`'s summary.csv: the one table its writer (the measure
-/// hook sgmp/app gives the batch) and its reader (report/precomputed.cpp) share. Each
-/// column holds one scalar of a Measurement (measure.hpp), named as in summary.csv and as
-/// in `measure`'s metrics.json.
+/// The metric columns of `sgmp batch`'s summary.csv, drawn from the metric table
+/// (metric_descriptors.hpp): the one list its writer (the measure hook sgmp/app gives the
+/// batch) and its reader (report/precomputed.cpp) share. Each column holds one scalar of a
+/// Measurement (measure.hpp), named as in summary.csv and as in `measure`'s metrics.json.
 ///
 /// The summary measures g(r) out to kSummaryGrRange only: the split ratio's windows end at
 /// 2.05 d, and the pair search grows as the range cubed (5 d, measure's default, costs
@@ -31,8 +31,7 @@ struct SummaryColumn {
     std::size_t tolerance = 0;  ///< index into coordination_tolerances() for Z columns
 };
 
-/// phi, z_<δ> for every coordination tolerance, overlaps, overlap_max, overlap_mean,
-/// wall_overlaps, split_ratio, voronoi_phi_mean, in that order.
+/// The metrics of metric_descriptors.hpp with a summary column, in summary_rank order.
 const std::vector<SummaryColumn>& summary_columns();
 
 /// The header fields of summary_columns().

@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "sgmp/metrics/measure.hpp"
+#include "sgmp/metrics/metric_descriptors.hpp"
 #include "sgmp/report/contact_windows.hpp"
 #include "sgmp/report/equivalence.hpp"
 #include "sgmp/report/group_sequential.hpp"
@@ -49,7 +50,7 @@ inline std::ostream& operator<<(std::ostream& out, Verdict verdict) {
     return out << to_string(verdict);
 }
 
-enum class MetricKind { Scalar, Curve };
+using metrics::MetricKind;
 
 /// One metric of the report.
 struct MetricRule {
@@ -62,8 +63,11 @@ struct MetricRule {
     std::string short_label;  // column heading of the verdict matrix
     /// δ/d of a contact metric (Z(δ), P(Z) at δ); none for the others.
     std::optional<double> contact_tolerance;
+    /// The metric table's row (metric_descriptors.hpp); null for a blend's per-species rows.
+    const metrics::MetricDescriptor* descriptor = nullptr;
 };
-/// Every metric, scalars first, in report order.
+/// Every metric of the table that is a row of every comparison, scalars first, in report
+/// order (metric_descriptors.hpp).
 const std::vector<MetricRule>& metric_rules();
 /// The rule named `name`; throws std::logic_error when there is none.
 const MetricRule& metric_rule(const std::string& name);
@@ -73,8 +77,8 @@ const MetricRule& metric_rule(const std::string& name);
 /// construction; the contact scale is judged by Z(δ) and P(Z).
 inline constexpr double kGrCompareFrom = 1.1;
 inline constexpr double kGrCompareTo = 5.0;
-/// The margin of g(r)'s L2 distance on that range (compare/README.md "Margins").
-inline constexpr double kGrMargin = 0.03;
+/// The margin of g(r)'s L2 distance on that range (metric_descriptors.hpp).
+using metrics::kGrMargin;
 /// The tolerances (indices into coordination_tolerances()) whose P(Z) are plotted.
 inline constexpr std::size_t kPlottedPzTolerances[] = {2, 3};
 /// The tolerance (δ = 1e-2) of P(Z) when many groups share one plot.
@@ -95,7 +99,8 @@ struct PackSummary {
     std::vector<double> phi_y_mid;
     std::vector<double> phi_y;
     /// A blend's per-species values by name (species_rows.hpp), e.g.
-    /// "species_2:z_mean_tol_1e-3"; empty for equal spheres.
+    /// "species_2:" and a metric's name (metric_descriptors.hpp: species_metric_name);
+    /// empty for equal spheres.
     std::vector<std::pair<std::string, double>> species_scalars;
     /// Where its g(r) has contact peaks (contact_windows.hpp): none for equal spheres.
     std::vector<ContactRange> contact_ranges;

@@ -22,7 +22,7 @@
 
 namespace sgmp::report {
 
-/// Metric keys of the headline, in column order.
+/// Metric keys of the headline, in column order (headline_rank, metric_descriptors.hpp).
 const std::vector<std::string>& headline_metrics();
 
 /// One candidate group at one count against one reference group.

@@ -3,20 +3,26 @@
 // CellGrid and compare's CGAL kd-tree NeighbourIndex — run one test body, in an open and
 // in a periodic box: radius queries, pairs and k nearest must equal brute force over the
 // box's own distance exactly (lattice points sit exactly on the radius, also across the
-// periodic faces). The engine's incremental SettledGrid and the relaxation's Verlet list
-// (NeighbourList, walls and periodic) must give the brute-force pair sets too.
+// periodic faces). The engine's incremental SettledGrid, the relaxation's Verlet list
+// (NeighbourList) and the metrics' kd-tree columns (KdColumns) must give the brute-force
+// pair sets too, open and periodic (the grid and the columns through the images their
+// users add).
 #include <algorithm>
 #include <boost/mpl/list.hpp>
 #include <boost/test/unit_test.hpp>
+#include <map>
 #include <set>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include "sgmp/engine/neighbour_list.hpp"
 #include "sgmp/engine/settled_grid.hpp"
+#include "sgmp/metrics/kd_columns.hpp"
 #include "sgmp/metrics/neighbour_index.hpp"
 #include "sgmp/pack/cell_grid.hpp"
 #include "sgmp/pack/neighbour_query.hpp"
+#include "sgmp/pack/periodic_images.hpp"
 #include "sgmp/pack/random.hpp"
 
 using namespace sgmp;
@@ -29,10 +35,14 @@ static_assert(NeighbourQuery<CellGrid>);
 static_assert(NeighbourQuery<metrics::NeighbourIndex>);
 
 /// The testbed's 1.25-wide cell, periodic in x and z.
-NeighbourBox periodic_box() {
+Container periodic_sides() {
     Container sides;
     sides.periodic = true;
-    return NeighbourBox::of(sides);
+    return sides;
+}
+
+NeighbourBox periodic_box() {
+    return NeighbourBox::of(periodic_sides());
 }
 
 /// Random points in the cell (y over [-0.6, 0.6]), plus lattices of spacing exactly
@@ -138,31 +148,35 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(radius_and_k_queries_equal_brute_force, Make, Quer
     Random random(11);
     for (const NeighbourBox& box : {NeighbourBox::open(), periodic_box()}) {
         const std::vector<Vec3> points = test_points(7, 600, 0.125);
-        const auto query = Make::make(points, 0.1, box);
-        for (int q = 0; q < 60; ++q) {
-            // Query points inside the cell, on lattice points, and a period or more out.
-            Vec3 p(random.uniform(-0.7, 0.7), random.uniform(-0.7, 0.7), random.uniform(-0.7, 0.7));
-            if (q % 4 == 1) {
-                p = points[600 + static_cast<std::size_t>(q) % 80];
-            } else if (q % 4 == 2) {
-                p += Vec3(2.5, 0.0, -1.25);
-            }
-            // Radii up to beyond half the period: every point at most once, nearest image.
-            for (const double radius : {0.0, 0.125, 0.3, 0.8}) {
-                std::vector<Neighbour> found;
-                query.for_each_within(p, radius, [&](std::size_t j, double d2) {
-                    found.push_back({j, d2});
-                });
-                std::sort(found.begin(), found.end(), nearer);
-                std::vector<Neighbour> expected = brute_within(points, p, radius, box);
-                std::sort(expected.begin(), expected.end(), nearer);
-                BOOST_TEST_REQUIRE((found == expected), "query " << q << " radius " << radius
-                                                                 << " periodic " << box.periodic);
-            }
-            for (const std::size_t k : {std::size_t{0}, std::size_t{1}, std::size_t{6},
-                                        std::size_t{50}, points.size() + 3}) {
-                BOOST_TEST_REQUIRE((query.nearest(p, k) == brute_nearest(points, p, k, box)),
-                                   "query " << q << " k " << k << " periodic " << box.periodic);
+        for (const double reach : {0.1, 0.7}) {  // 0.7: one cell across a period
+            const auto query = Make::make(points, reach, box);
+            for (int q = 0; q < 60; ++q) {
+                // Query points inside the cell, on lattice points, and a period or more out.
+                Vec3 p(random.uniform(-0.7, 0.7), random.uniform(-0.7, 0.7),
+                       random.uniform(-0.7, 0.7));
+                if (q % 4 == 1) {
+                    p = points[600 + static_cast<std::size_t>(q) % 80];
+                } else if (q % 4 == 2) {
+                    p += Vec3(2.5, 0.0, -1.25);
+                }
+                // Radii up to beyond half the period: every point at most once, nearest image.
+                for (const double radius : {0.0, 0.125, 0.3, 0.8}) {
+                    std::vector<Neighbour> found;
+                    query.for_each_within(p, radius, [&](std::size_t j, double d2) {
+                        found.push_back({j, d2});
+                    });
+                    std::sort(found.begin(), found.end(), nearer);
+                    std::vector<Neighbour> expected = brute_within(points, p, radius, box);
+                    std::sort(expected.begin(), expected.end(), nearer);
+                    BOOST_TEST_REQUIRE((found == expected), "query " << q << " radius " << radius
+                                                                     << " periodic "
+                                                                     << box.periodic);
+                }
+                for (const std::size_t k : {std::size_t{0}, std::size_t{1}, std::size_t{6},
+                                            std::size_t{50}, points.size() + 3}) {
+                    BOOST_TEST_REQUIRE((query.nearest(p, k) == brute_nearest(points, p, k, box)),
+                                       "query " << q << " k " << k << " periodic " << box.periodic);
+                }
             }
         }
     }
@@ -205,6 +219,80 @@ BOOST_AUTO_TEST_CASE(settled_grid_finds_the_brute_force_pairs) {
             });
         }
         BOOST_TEST((pairs == brute_pairs(points, cutoff, NeighbourBox::open())));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(settled_grid_with_images_finds_the_periodic_pairs) {
+    // With periodic sides the protocol inserts each settled sphere's images one period away
+    // (periodic_image_centers) into the grid, whose edge cells keep the points beyond the
+    // faces: a box scan then meets every minimum-image neighbour (a pair exactly at the
+    // cutoff through a face from one side: the images reach only strictly within it).
+    const Container sides = periodic_sides();
+    for (const double cutoff : {0.0625, 0.125, 0.25}) {
+        const std::vector<Vec3> points = test_points(8, 500, cutoff);
+        engine::SettledGrid grid(sides, cutoff);
+        std::map<std::tuple<double, double, double>, std::size_t> source;
+        for (std::size_t j = 0; j < points.size(); ++j) {
+            std::vector<Vec3> copies{points[j]};
+            for (const Vec3& image : periodic_image_centers(points[j], sides, cutoff)) {
+                copies.push_back(image);
+            }
+            for (const Vec3& q : copies) {
+                grid.insert(engine::Sphere{q.x(), q.y(), q.z(), 0.0});
+                source[{q.x(), q.y(), q.z()}] = j;
+            }
+        }
+        PairSet pairs;
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const Vec3 span = Vec3::Constant(cutoff);
+            grid.for_each_in_box(points[i] - span, points[i] + span, [&](const engine::Sphere& s) {
+                const Vec3 q(s.x, s.y, s.z);
+                const std::size_t j = source.at({s.x, s.y, s.z});
+                if (j != i && (q - points[i]).squaredNorm() <= cutoff * cutoff) {
+                    pairs.insert({std::min(i, j), std::max(i, j)});
+                }
+            });
+        }
+        BOOST_TEST((pairs == brute_pairs(points, cutoff, periodic_box())), "cutoff " << cutoff);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(kd_columns_with_images_find_the_periodic_pairs) {
+    // The metrics' pair passes see a periodic pack as its particles and their images within
+    // the reach of a face (with_periodic_images): the windows of the kd-tree's columns
+    // around each particle then hold every minimum-image neighbour.
+    const Container sides = periodic_sides();
+    for (const double cutoff : {0.0625, 0.125, 0.25}) {
+        const std::vector<Vec3> points = test_points(9, 500, cutoff);
+        std::vector<Particle> particles(points.size());
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            particles[i].center = points[i];
+        }
+        const ImagedParticles imaged = with_periodic_images(particles, sides, cutoff);
+        const metrics::KdColumns columns(imaged.particles, 0.1, 1);
+        PairSet pairs;
+        for (std::size_t c = 0; c < columns.columns(); ++c) {
+            for (std::size_t p = columns.column_begin(c); p < columns.column_begin(c + 1); ++p) {
+                const std::size_t i = columns.index[p];
+                if (i >= imaged.originals) {
+                    continue;
+                }
+                const Vec3& a = imaged.particles[i].center;
+                columns.for_each_column(
+                    {a.x(), a.x(), a.y(), a.y()}, cutoff, 0,
+                    [&](std::size_t, std::size_t first, std::size_t last, double half) {
+                        for (std::size_t k = first; k < last; ++k) {
+                            const Vec3 q(columns.x[k], columns.y[k], columns.z[k]);
+                            const std::size_t j = imaged.source[columns.index[k]];
+                            if (std::abs(q.z() - a.z()) <= half && j != i &&
+                                (q - a).squaredNorm() <= cutoff * cutoff) {
+                                pairs.insert({std::min(i, j), std::max(i, j)});
+                            }
+                        }
+                    });
+            }
+        }
+        BOOST_TEST((pairs == brute_pairs(points, cutoff, periodic_box())), "cutoff " << cutoff);
     }
 }
 

@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "point_of_index.hpp"
+#include "sgmp/pack/cell_grid.hpp"
 
 namespace sgmp::metrics {
 namespace {
@@ -153,15 +154,6 @@ struct NeighbourIndex::Impl {
 
 namespace {
 
-std::vector<Vec3> centers(const std::vector<Particle>& particles) {
-    std::vector<Vec3> result;
-    result.reserve(particles.size());
-    for (const Particle& p : particles) {
-        result.push_back(p.center);
-    }
-    return result;
-}
-
 double widened(double radius) {
     return radius * (1.0 + kWiden) + std::numeric_limits<double>::min();
 }
@@ -172,7 +164,7 @@ NeighbourIndex::NeighbourIndex(const std::vector<Vec3>& points, const NeighbourB
     : impl_(std::make_unique<Impl>(points, box)) {}
 
 NeighbourIndex::NeighbourIndex(const std::vector<Particle>& particles, const NeighbourBox& box)
-    : impl_(std::make_unique<Impl>(centers(particles), box)) {}
+    : impl_(std::make_unique<Impl>(centers_of(particles), box)) {}
 
 NeighbourIndex::~NeighbourIndex() = default;
 

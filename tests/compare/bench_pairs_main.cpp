@@ -11,11 +11,12 @@
 //   bins     the same plus the square root and the g(r) histogram;
 //   pass     measure_local_structure itself (g(r), split ratio, Z at six tolerances, Q6).
 // Prints "pairs N", then one "<name> <seconds> s <pairs per second>" line per loop.
+#include <algorithm>
 #include <cmath>
 #include <ctime>
 #include <iostream>
 
-#include "column_grid.hpp"
+#include "sgmp/metrics/kd_columns.hpp"
 #include "sgmp/metrics/local_structure.hpp"
 #include "sgmp/metrics/measure.hpp"
 #include "sgmp/metrics/parallel.hpp"
@@ -60,7 +61,8 @@ int main(int argc, char** argv) {
         const double width = 0.02 * d;
         const double reach = bin_outer(bins - 1, width);
         const double reach2 = reach * reach;
-        // The pass's two grids of whole columns; every origin scans all its windows.
+        // The pass's two sets of kd-tree columns; every origin scans all its windows (the
+        // centres of a column met with |z − z_p| ≤ half).
         std::vector<char> is_origin(particles.size(), 0);
         for (const Index i : origins) {
             is_origin[i] = 1;
@@ -72,20 +74,28 @@ int main(int argc, char** argv) {
             }
         }
         const double side = kPairPassColumnSide * d;
-        const ColumnGrid origin_grid(particles, origins, side, true);
-        const ColumnGrid other_grid(particles, rest, side, true);
+        const KdColumns origin_grid(particles, origins, side, 1);
+        const KdColumns other_grid(particles, rest, side, 1);
         const auto for_each_window = [&](auto&& f) {
             for (std::size_t c = 0; c < origin_grid.columns(); ++c) {
                 const std::size_t begin = origin_grid.column_begin(c);
                 const std::size_t end = origin_grid.column_begin(c + 1);
-                if (begin == end) {
-                    continue;
-                }
-                for (const ColumnGrid* grid : {&origin_grid, &other_grid}) {
-                    grid->for_each_window(origin_grid, begin, end,
-                                          origin_grid.footprint(begin, end), reach, 0,
-                                          [&](std::size_t, std::size_t p, std::size_t from,
-                                              std::size_t to) { f(*grid, p, from, to); });
+                for (const KdColumns* grid : {&origin_grid, &other_grid}) {
+                    grid->for_each_column(
+                        origin_grid.footprint(begin, end), reach, 0,
+                        [&](std::size_t, std::size_t first, std::size_t last, double half) {
+                            const auto z0 = grid->z.begin();
+                            for (std::size_t p = begin; p < end; ++p) {
+                                const double zp = origin_grid.z[p];
+                                const auto from = std::lower_bound(
+                                    z0 + static_cast<std::ptrdiff_t>(first),
+                                    z0 + static_cast<std::ptrdiff_t>(last), zp - half);
+                                const auto to = std::upper_bound(
+                                    from, z0 + static_cast<std::ptrdiff_t>(last), zp + half);
+                                f(*grid, p, static_cast<std::size_t>(from - z0),
+                                  static_cast<std::size_t>(to - z0));
+                            }
+                        });
                 }
             }
         };
@@ -93,7 +103,7 @@ int main(int argc, char** argv) {
         double start = cpu_seconds();
         std::size_t pairs = 0;
         for_each_window(
-            [&](const ColumnGrid& grid, std::size_t p, std::size_t from, std::size_t to) {
+            [&](const KdColumns& grid, std::size_t p, std::size_t from, std::size_t to) {
                 const double ax = origin_grid.x[p];
                 const double ay = origin_grid.y[p];
                 const double az = origin_grid.z[p];
@@ -112,7 +122,7 @@ int main(int argc, char** argv) {
         start = cpu_seconds();
         std::vector<std::int64_t> histogram(bins + 1, 0);
         for_each_window(
-            [&](const ColumnGrid& grid, std::size_t p, std::size_t from, std::size_t to) {
+            [&](const KdColumns& grid, std::size_t p, std::size_t from, std::size_t to) {
                 for (std::size_t k = from; k < to; ++k) {
                     const double dx = grid.x[k] - origin_grid.x[p];
                     const double dy = grid.y[k] - origin_grid.y[p];

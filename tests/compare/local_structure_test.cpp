@@ -1,4 +1,4 @@
-// The fused pair pass of measure_local_structure (column grid, one loop for g(r), Z(δ) and
+// The fused pair pass of measure_local_structure (kd-tree columns, one loop for g(r), Z(δ) and
 // Q6) against a brute-force O(N²) loop over every pair, on a few hundred spheres.
 // Pair, contact and wall counts are integers and must agree exactly; Q6 sums the same
 // bonds in another order, so it agrees to rounding: 1e-12 (the sums hold ~10³ terms of
@@ -7,7 +7,6 @@
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
-#include "column_grid.hpp"
 #include "sgmp/metrics/bond_order.hpp"
 #include "sgmp/metrics/kd_columns.hpp"
 #include "sgmp/metrics/local_structure.hpp"
@@ -156,81 +155,6 @@ BOOST_AUTO_TEST_CASE(results_are_bit_identical_for_any_thread_count) {
                boost::test_tools::per_element());
     BOOST_TEST(one.bond_order.q6_global == two.bond_order.q6_global);  // exact, not close
     BOOST_TEST(one.bond_order.q6_local_mean == two.bond_order.q6_local_mean);
-}
-
-BOOST_AUTO_TEST_CASE(column_grid_ranges_hold_every_center_of_the_ball) {
-    Random random(5);
-    std::vector<Particle> particles(700);
-    for (auto& p : particles) {
-        p.center = Vec3(random.uniform(-1, 1), random.uniform(0, 0.5), random.uniform(-2, 1));
-    }
-    for (const double side : {0.05, 0.13, 1.0}) {
-        const ColumnGrid grid(particles, side);
-        for (int q = 0; q < 50; ++q) {
-            const Vec3 p(random.uniform(-1.2, 1.2), random.uniform(-0.2, 0.7),
-                         random.uniform(-2.2, 1.2));
-            const double radius = random.uniform(0.0, 0.6);
-            std::vector<int> seen(particles.size(), 0);
-            grid.for_each_range(p, radius, [&](std::size_t begin, std::size_t end) {
-                for (std::size_t k = begin; k < end; ++k) {
-                    ++seen[grid.index[k]];
-                }
-            });
-            for (std::size_t i = 0; i < particles.size(); ++i) {
-                BOOST_TEST(seen[i] <= 1);  // ranges are disjoint
-                if ((particles[i].center - p).norm() <= radius) {
-                    BOOST_TEST(seen[i] == 1);
-                }
-            }
-        }
-    }
-}
-
-BOOST_AUTO_TEST_CASE(column_windows_hold_every_center_within_the_radius) {
-    // Windows of a grid of whole columns for the columns of another grid over a different
-    // set: for every source centre p, the windows (one per column) are disjoint and hold
-    // every centre within the radius of p.
-    Random random(6);
-    std::vector<Particle> particles(1200);
-    for (auto& p : particles) {
-        p.center = Vec3(random.uniform(-1, 1), random.uniform(0, 0.5), random.uniform(-2, 1));
-    }
-    std::vector<Index> sources;
-    std::vector<Index> targets;
-    for (Index i = 0; i < particles.size(); ++i) {
-        (i % 3 == 0 ? sources : targets).push_back(i);
-    }
-    for (const double side : {0.05, 0.2, 1.0}) {
-        const ColumnGrid source(particles, sources, side, true);
-        const ColumnGrid target(particles, targets, 0.7 * side, true);
-        const double radius = 0.3;
-        for (std::size_t c = 0; c < source.columns(); ++c) {
-            const std::size_t begin = source.column_begin(c);
-            const std::size_t end = source.column_begin(c + 1);
-            BOOST_TEST(std::is_sorted(source.z.begin() + static_cast<std::ptrdiff_t>(begin),
-                                      source.z.begin() + static_cast<std::ptrdiff_t>(end)));
-            if (begin == end) {
-                continue;
-            }
-            std::vector<std::vector<int>> seen(end - begin, std::vector<int>(particles.size(), 0));
-            target.for_each_window(
-                source, begin, end, source.footprint(begin, end), radius, 0,
-                [&](std::size_t, std::size_t p, std::size_t from, std::size_t to) {
-                    for (std::size_t k = from; k < to; ++k) {
-                        ++seen[p - begin][target.index[k]];
-                    }
-                });
-            for (std::size_t p = begin; p < end; ++p) {
-                const Vec3& a = particles[source.index[p]].center;
-                for (const Index j : targets) {
-                    BOOST_TEST(seen[p - begin][j] <= 1);
-                    if ((particles[j].center - a).norm() <= radius) {
-                        BOOST_TEST(seen[p - begin][j] == 1);
-                    }
-                }
-            }
-        }
-    }
 }
 
 BOOST_AUTO_TEST_CASE(kd_columns_partition_the_centres_sorted_by_height) {

@@ -23,6 +23,16 @@ std::set<std::pair<Index, Index>> brute_force(const std::vector<Vec3>& points, d
     return pairs;
 }
 
+/// Every pair (i, j), i < j, within `cutoff`, in the order the index meets them.
+std::vector<std::pair<Index, Index>> pairs_within(const std::vector<Vec3>& points, double cutoff) {
+    const NeighbourIndex index(points);
+    std::vector<std::pair<Index, Index>> pairs;
+    index.for_each_pair_within(cutoff, [&](std::size_t i, std::size_t j, double) {
+        pairs.emplace_back(static_cast<Index>(i), static_cast<Index>(j));
+    });
+    return pairs;
+}
+
 std::set<std::pair<Index, Index>> as_set(const std::vector<std::pair<Index, Index>>& pairs) {
     return {pairs.begin(), pairs.end()};
 }

@@ -1,6 +1,7 @@
 // Periodic sides (`--sides periodic`, sides.hpp): over arrangements, contact models, blends
 // and seeds, a brute-force minimum-image check of every pair finds no overlap beyond
-// rounding (1e-12·d), every centre lies in the cell, spheres touch across the faces, the
+// rounding (1e-12·d), every centre lies in the cell, spheres touch across the faces,
+// check_pack's support count on its periodic cell grid equals a brute-force count, the
 // floor is the only wall, and the same request gives the same pack. A wall pack keeps its
 // header without a `sides` key. Relaxed periodic packs (both modes) keep the same checks
 // and are certified, with contacts across the faces. Periodic sides refuse spheres wider
@@ -10,6 +11,7 @@
 #include <cmath>
 
 #include "sgmp/engine/make_pack.hpp"
+#include "sgmp/engine/pack_checks.hpp"
 #include "sgmp/engine/protocol.hpp"
 #include "sgmp/pack/parameter_error.hpp"
 #include "sgmp/pack/random.hpp"
@@ -24,6 +26,9 @@ struct Periodic {
     double min_gap_over_d = INFINITY;
     std::size_t across = 0;  ///< pairs touching (gap ≤ 1e-9·d) only through a face
     bool inside = true;
+    /// Spheres neither within 1e-9·d of the floor or a face nor within 1e-9·d of a sphere
+    /// whose centre is not higher (minimum image): check_pack's `unsupported`.
+    std::size_t unsupported = 0;
 };
 
 Periodic brute_force(const Pack& pack, double d) {
@@ -31,8 +36,21 @@ Periodic brute_force(const Pack& pack, double d) {
     const double lx = c.x_max - c.x_min, lz = c.z_max - c.z_min;
     Periodic out;
     const auto& p = pack.particles;
+    const double tolerance = 1e-9 * d;
     for (std::size_t i = 0; i < p.size(); ++i) {
         const Vec3& a = p[i].center;
+        const double r = p[i].radius;
+        bool supported = a.y() - r - c.floor <= tolerance || a.x() - r - c.x_min <= tolerance ||
+                         c.x_max - a.x() - r <= tolerance || a.z() - r - c.z_min <= tolerance ||
+                         c.z_max - a.z() - r <= tolerance;
+        for (std::size_t j = 0; j < p.size() && !supported; ++j) {
+            Vec3 delta = p[j].center - a;
+            delta.x() -= lx * std::round(delta.x() / lx);
+            delta.z() -= lz * std::round(delta.z() / lz);
+            supported =
+                j != i && p[j].center.y() <= a.y() && delta.norm() - r - p[j].radius <= tolerance;
+        }
+        out.unsupported += supported ? 0 : 1;
         out.inside = out.inside && a.x() >= c.x_min && a.x() < c.x_max && a.z() >= c.z_min &&
                      a.z() < c.z_max && a.y() - p[i].radius >= c.floor - 1e-12 * d;
         for (std::size_t j = i + 1; j < p.size(); ++j) {
@@ -73,6 +91,13 @@ BOOST_AUTO_TEST_CASE(periodic_packs_have_no_overlap_under_the_minimum_image) {
                     BOOST_TEST(check.inside);
                     BOOST_TEST(check.min_gap_over_d >= -1e-12);
                     BOOST_TEST(check.across > 0U);
+                    // check_pack's support count on the periodic cell grid (cells wrap).
+                    Container cell;
+                    cell.periodic = true;
+                    const PackCheck grid_check =
+                        check_pack(pack.particles, cell, 1e-12 * d, 1e-9 * (blend ? 0.5 * d : d));
+                    BOOST_TEST(grid_check.unsupported == check.unsupported);
+                    BOOST_TEST(grid_check.overlaps == 0U);
                     BOOST_TEST(pack.metadata.get("sides").value_or("") == "periodic");
                     BOOST_TEST(pack.metadata.get_number("fixed_wall").value_or(-1) == 0.0);
                     const Pack again = make_pack(request);

@@ -24,11 +24,10 @@ bool on_container(const Vec3& c, double r, const Container& container, double to
 
 /// Spheres neither on the container nor on a sphere whose centre is not higher (surface
 /// gap ≤ tolerance).
-std::size_t count_unsupported(const std::vector<Particle>& particles, std::size_t originals,
-                              const CellGrid& grid, double r_max, const Container& container,
-                              double tolerance) {
+std::size_t count_unsupported(const std::vector<Particle>& particles, const CellGrid& grid,
+                              double r_max, const Container& container, double tolerance) {
     std::size_t unsupported = 0;
-    for (std::size_t i = 0; i < originals; ++i) {
+    for (std::size_t i = 0; i < particles.size(); ++i) {
         const Vec3& c = particles[i].center;
         const double r = particles[i].radius;
         bool supported = on_container(c, r, container, tolerance);
@@ -59,11 +58,9 @@ PackCheck check_pack(const std::vector<Particle>& particles, const Container& co
     result.worst_gap = overlaps.max_pair > 0.0 ? -overlaps.max_pair : 0.0;
     result.outside = overlaps.walls;
     const double r_max = max_radius(particles);
-    // With periodic sides a sphere may rest on the image of one across a face.
-    const ImagedParticles imaged = with_periodic_images(particles, container, 2.0 * r_max);
-    const CellGrid grid(centers_of(imaged.particles), 2.0 * r_max);
-    result.unsupported = count_unsupported(imaged.particles, particles.size(), grid, r_max,
-                                           container, support_tolerance);
+    // With periodic sides a sphere may rest on one across a face: the grid's cells wrap.
+    const CellGrid grid(centers_of(particles), 2.0 * r_max, NeighbourBox::of(container));
+    result.unsupported = count_unsupported(particles, grid, r_max, container, support_tolerance);
     return result;
 }
 

@@ -176,8 +176,8 @@ Row scheduled(std::string name, Member member, std::function<T(const RelaxSchedu
     return row;
 }
 
-std::vector<Row> count_and_request_rows() {
-    std::vector<Row> rows;
+/// The particle count's row: required, 1 to kMaxCount.
+Row count_row() {
     Row count = whole(
         "count", "count", [](auto& r) -> auto& { return r.count; },
         "number of particles N (1 to " + std::to_string(kMaxCount) + ")",
@@ -189,12 +189,11 @@ std::vector<Row> count_and_request_rows() {
         });
     count.rule = "must be a whole number between 1 and " + std::to_string(kMaxCount);
     count.required = true;
-    rows.push_back(std::move(count));
-    rows.push_back(number(
-        "phi_target", "request", [](auto& r) -> auto& { return r.phi_target; },
-        "target packing fraction phi* in (0, 0.74048] for equal spheres, (0, 1) for a blend of "
-        "several sizes; sets the diameter by (N/3)(pi/6)d^3 = phi*",
-        check_phi_target));
+    return count;
+}
+
+/// The starting arrangement's row: required, one of the four.
+Row arrangement_row() {
     Row arrangement;
     arrangement.name = "arrangement";
     arrangement.group = "request";
@@ -211,26 +210,11 @@ std::vector<Row> count_and_request_rows() {
     };
     arrangement.format = [](const PackRequest& r) { return std::string(to_string(r.arrangement)); };
     arrangement.required = true;
-    rows.push_back(std::move(arrangement));
-    rows.push_back(seed_row<PackRequest, PackCheckContext>(
-        "request", "random seed (colours, loose-random positions, random choices)"));
-    Row modes = size_modes_row<PackRequest, PackCheckContext>(
-        "request",
-        "particle sizes as relative-diameter:fraction[:density] items, e.g. 1:0.7,0.5:0.3 "
-        "(species 1, 2, ... in this order; fractions in --fraction-basis); the scale s solves "
-        "(N/3)(pi/6) sum n_i (a_i s)^3 = phi* with number fractions n_i",
-        [](auto& r) -> auto& { return r.size_modes; });
-    modes.check = check_size_modes;
-    rows.push_back(std::move(modes));
-    rows.push_back(size_distribution_row<PackRequest, PackCheckContext>(
-        "request",
-        "size distribution as a CSV file: header diameter,fraction[,density], one row per "
-        "species (diameters in any unit; species 1, 2, ... in file order); or "
-        "lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]]: ln D normal with that median and sd, cut "
-        "at the quantiles QLO, QHI (default 0.01, 0.99) into CLASSES (default 10) species of "
-        "equal fraction, each of its class's median diameter",
-        [](auto& r) -> auto& { return r.size_modes; },
-        [](auto& r) -> auto& { return r.size_distribution; }));
+    return arrangement;
+}
+
+/// The largest diameter's row: a physical length, recorded when given.
+Row largest_diameter_row() {
     Row largest;
     largest.name = "largest_diameter";
     largest.group = "request";
@@ -250,7 +234,30 @@ std::vector<Row> count_and_request_rows() {
     largest.format = [](const PackRequest& r) { return r.largest_diameter; };
     largest.recorded = [](const PackRequest& r) { return !r.largest_diameter.empty(); };
     largest.unset_by_default = true;
-    rows.push_back(std::move(largest));
+    return largest;
+}
+
+/// The rows of the particles' sizes: modes or a distribution, the largest diameter, the
+/// fractions' basis and a blend's drop order.
+void add_size_rows(std::vector<Row>& rows) {
+    Row modes = size_modes_row<PackRequest, PackCheckContext>(
+        "request",
+        "particle sizes as relative-diameter:fraction[:density] items, e.g. 1:0.7,0.5:0.3 "
+        "(species 1, 2, ... in this order; fractions in --fraction-basis); the scale s solves "
+        "(N/3)(pi/6) sum n_i (a_i s)^3 = phi* with number fractions n_i",
+        [](auto& r) -> auto& { return r.size_modes; });
+    modes.check = check_size_modes;
+    rows.push_back(std::move(modes));
+    rows.push_back(size_distribution_row<PackRequest, PackCheckContext>(
+        "request",
+        "size distribution as a CSV file: header diameter,fraction[,density], one row per "
+        "species (diameters in any unit; species 1, 2, ... in file order); or "
+        "lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]]: ln D normal with that median and sd, cut "
+        "at the quantiles QLO, QHI (default 0.01, 0.99) into CLASSES (default 10) species of "
+        "equal fraction, each of its class's median diameter",
+        [](auto& r) -> auto& { return r.size_modes; },
+        [](auto& r) -> auto& { return r.size_distribution; }));
+    rows.push_back(largest_diameter_row());
     Row basis = choice(
         "fraction_basis", "request", [](auto& r) -> auto& { return r.fraction_basis; },
         [] { return fraction_bases(); },
@@ -271,6 +278,21 @@ std::vector<Row> count_and_request_rows() {
         "shuffled (a random permutation)");
     order.recorded = [](const PackRequest& r) { return r.size_modes.size() > 1; };
     rows.push_back(std::move(order));
+}
+
+/// The request's rows: count, target, arrangement, seed, sizes and sides.
+std::vector<Row> count_and_request_rows() {
+    std::vector<Row> rows;
+    rows.push_back(count_row());
+    rows.push_back(number(
+        "phi_target", "request", [](auto& r) -> auto& { return r.phi_target; },
+        "target packing fraction phi* in (0, 0.74048] for equal spheres, (0, 1) for a blend of "
+        "several sizes; sets the diameter by (N/3)(pi/6)d^3 = phi*",
+        check_phi_target));
+    rows.push_back(arrangement_row());
+    rows.push_back(seed_row<PackRequest, PackCheckContext>(
+        "request", "random seed (colours, loose-random positions, random choices)"));
+    add_size_rows(rows);
     Row sides = choice(
         "sides", "request", [](auto& r) -> auto& { return r.sides; }, [] { return sides_names(); },
         "the container's lateral sides: walls (the thesis') or periodic (x and z periodic, the "
@@ -370,9 +392,9 @@ void add_protocol_rows(std::vector<Row>& rows) {
         at_least_one("max_moves", [](const PackRequest& r) { return r.protocol.max_moves; })));
 }
 
-void add_relax_rows(std::vector<Row>& rows) {
+/// The relaxation mode's row; a mode other than none needs COIN-OR CLP.
+Row relax_mode_row() {
     const std::string g = "relax";
-    const std::size_t first = rows.size();
     Row relax = choice(
         "relax", g, [](auto& r) -> auto& { return r.relax.mode; }, [] { return relax_modes(); },
         "after deposition: none | frictionless (relax the whole pack under gravity to an "
@@ -387,7 +409,12 @@ void add_relax_rows(std::vector<Row>& rows) {
                    "needs COIN-OR CLP, which this build lacks (SGMP_WITH_CLP=OFF)");
         }
     };
-    rows.push_back(std::move(relax));
+    return relax;
+}
+
+/// The soft stage's rows: the stiffness schedule, the contact shell and the stopping rules.
+void add_soft_stage_rows(std::vector<Row>& rows) {
+    const std::string g = "relax";
     rows.push_back(scheduled<double>(
         "relax_stiffness", [](auto& r) -> auto& { return r.relax.stiffness; },
         [](const RelaxSchedule& x) { return x.stiffness; },
@@ -447,20 +474,11 @@ void add_relax_rows(std::vector<Row>& rows) {
                        "must be in (0, 10000]");
             }
         }));
-    rows.push_back(whole(
-        "relax_settle_limit", g, [](auto& r) -> auto& { return r.relax.settle_limit; },
-        "bound on the LP iterations of the hard-sphere settling that ends the relaxation (1 to "
-        "1000000; --relax-settle dynamics: hundreds of time steps); a pack that reaches it is "
-        "usually not a certified equilibrium",
-        [](const PackRequest& r, const PackCheckContext&) {
-            if (r.relax.settle_limit < 1 || r.relax.settle_limit > 1000000) {
-                refuse("relax_settle_limit", std::to_string(r.relax.settle_limit),
-                       "must be between 1 and 1000000");
-            }
-        }));
-    for (std::size_t i = first; i < rows.size(); ++i) {
-        rows[i].recorded = relaxed;
-    }
+}
+
+/// The rows of the hard-sphere settling's method and of friction (--relax frictional).
+void add_settle_and_friction_rows(std::vector<Row>& rows) {
+    const std::string g = "relax";
     Row settle = choice(
         "relax_settle", g, [](auto& r) -> auto& { return r.relax.settle; },
         [] { return relax_settles(); },
@@ -498,6 +516,30 @@ void add_relax_rows(std::vector<Row>& rows) {
         });
     tangential.recorded = frictional;
     rows.push_back(std::move(tangential));
+}
+
+/// The relaxation's rows, each recorded only when the pack is relaxed (friction's only
+/// when frictional; the settling method's only when not lp).
+void add_relax_rows(std::vector<Row>& rows) {
+    const std::string g = "relax";
+    const std::size_t first = rows.size();
+    rows.push_back(relax_mode_row());
+    add_soft_stage_rows(rows);
+    rows.push_back(whole(
+        "relax_settle_limit", g, [](auto& r) -> auto& { return r.relax.settle_limit; },
+        "bound on the LP iterations of the hard-sphere settling that ends the relaxation (1 to "
+        "1000000; --relax-settle dynamics: hundreds of time steps); a pack that reaches it is "
+        "usually not a certified equilibrium",
+        [](const PackRequest& r, const PackCheckContext&) {
+            if (r.relax.settle_limit < 1 || r.relax.settle_limit > 1000000) {
+                refuse("relax_settle_limit", std::to_string(r.relax.settle_limit),
+                       "must be between 1 and 1000000");
+            }
+        }));
+    for (std::size_t i = first; i < rows.size(); ++i) {
+        rows[i].recorded = relaxed;
+    }
+    add_settle_and_friction_rows(rows);
 }
 
 std::vector<Row> make_rows() {

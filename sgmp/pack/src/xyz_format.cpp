@@ -1,3 +1,5 @@
+// The extended XYZ reader (xyz_format.hpp): frames, the comment line's keys and the
+// Lattice/Origin cell; the particle lines are xyz_particles.cpp's, the writer xyz_write.cpp.
 #include "sgmp/pack/xyz_format.hpp"
 
 #include <algorithm>

@@ -8,7 +8,6 @@
 // Under `mpirun -np K` the ranks split the jobs; rank 0 writes the summary.
 #include "batch_command.hpp"
 
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>

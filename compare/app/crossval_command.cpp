@@ -132,10 +132,8 @@ void refuse_same_packs(const std::vector<ManifestEntry>& manifest, const std::st
                          "): each pack counts once");
 }
 
-int run_crossval(CrossvalOptions& o, const std::string& command) {
-    auto manifest_in = open_input(o.manifest);
-    const auto manifest = read_manifest(manifest_in, o.manifest);
-    refuse_same_packs(manifest, o.manifest);
+/// The thesis' tables of --thesis and --thesis-start (each empty when not given).
+ThesisTables read_thesis_tables(const CrossvalOptions& o) {
     ThesisTables thesis;
     if (!o.thesis.empty()) {
         auto in = open_input(o.thesis);
@@ -145,6 +143,51 @@ int run_crossval(CrossvalOptions& o, const std::string& command) {
         auto in = open_input(o.thesis_start);
         thesis.starts = read_thesis_starts(in, o.thesis_start);
     }
+    return thesis;
+}
+
+/// The provenance every crossval output records: the tool, the command, its inputs and the
+/// measure parameters.
+nlohmann::ordered_json crossval_provenance(const CrossvalOptions& o, const std::string& command) {
+    return nlohmann::ordered_json{{"schema_version", kSchemaVersion},
+                                  {"tool", "sgmp-compare crossval"},
+                                  {"version", sgmp::version()},
+                                  {"command", command},
+                                  {"manifest", o.manifest},
+                                  {"thesis", o.thesis},
+                                  {"thesis_start", o.thesis_start},
+                                  {"tuning", o.tuning},
+                                  {"parameters", cli::measure_parameters(o.common)}};
+}
+
+/// With --pictures: renders the chosen packs and puts them in the report (their section
+/// after the first, before the verdict matrix; their files beside it); says on stderr what
+/// was made or why nothing was.
+void add_pictures(const CrossvalOptions& o, const std::vector<ManifestEntry>& manifest,
+                  ReportContext& context) {
+    auto choices = choose_pictures(manifest);
+    for (auto& choice : choices) {
+        choice.container = stated_for(choice.path, o.common);
+    }
+    PictureSet set = render_pictures(choices, o.picture_size);
+    // After the first section (which mode stands in for which class), before the matrix.
+    const auto at = context.lead_markdown.find("\n## Verdict matrix");
+    context.lead_markdown.insert(at == std::string::npos ? context.lead_markdown.size() : at,
+                                 pictures_markdown(choices, set));
+    if (!set.made) {
+        std::cerr << "sgmp-compare: pictures skipped: " << set.note << "\n";
+    } else {
+        std::cerr << "sgmp-compare: " << set.files.size() << " pictures rendered in " << set.seconds
+                  << " s\n";
+    }
+    context.extra_files = std::move(set.files);
+}
+
+int run_crossval(CrossvalOptions& o, const std::string& command) {
+    auto manifest_in = open_input(o.manifest);
+    const auto manifest = read_manifest(manifest_in, o.manifest);
+    refuse_same_packs(manifest, o.manifest);
+    const ThesisTables thesis = read_thesis_tables(o);
     std::vector<TunedParameter> tuning;
     if (!o.tuning.empty()) {
         auto in = open_input(o.tuning);
@@ -179,15 +222,7 @@ int run_crossval(CrossvalOptions& o, const std::string& command) {
     CrossValidation cv = cross_validate(report, manifest, thesis);
     cv.tuning = tuning;
 
-    nlohmann::ordered_json provenance{{"schema_version", kSchemaVersion},
-                                      {"tool", "sgmp-compare crossval"},
-                                      {"version", sgmp::version()},
-                                      {"command", command},
-                                      {"manifest", o.manifest},
-                                      {"thesis", o.thesis},
-                                      {"thesis_start", o.thesis_start},
-                                      {"tuning", o.tuning},
-                                      {"parameters", cli::measure_parameters(o.common)}};
+    const nlohmann::ordered_json provenance = crossval_provenance(o, command);
     ReportContext context;
     context.title = "SGMP against DEM: cross-validation report";
     context.command = command;
@@ -195,22 +230,7 @@ int run_crossval(CrossvalOptions& o, const std::string& command) {
     context.lead_markdown = render_crossval_markdown(cv);
     context.plots_per_count = true;
     if (o.pictures) {
-        auto choices = choose_pictures(manifest);
-        for (auto& choice : choices) {
-            choice.container = stated_for(choice.path, o.common);
-        }
-        PictureSet set = render_pictures(choices, o.picture_size);
-        // After the first section (which mode stands in for which class), before the matrix.
-        const auto at = context.lead_markdown.find("\n## Verdict matrix");
-        context.lead_markdown.insert(at == std::string::npos ? context.lead_markdown.size() : at,
-                                     pictures_markdown(choices, set));
-        if (!set.made) {
-            std::cerr << "sgmp-compare: pictures skipped: " << set.note << "\n";
-        } else {
-            std::cerr << "sgmp-compare: " << set.files.size() << " pictures rendered in "
-                      << set.seconds << " s\n";
-        }
-        context.extra_files = std::move(set.files);
+        add_pictures(o, manifest, context);
     }
     nlohmann::ordered_json crossval = crossval_json(cv);
     crossval["provenance"] = provenance;

@@ -8,8 +8,6 @@
 // Under `mpirun -np K` the ranks split the jobs; rank 0 writes the summary.
 #include "batch_command.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -19,17 +17,15 @@
 #include <iostream>
 #include <map>
 #include <optional>
-#include <set>
 #include <sstream>
 
+#include "batch_plan.hpp"
 #include "sgmp/batch/executor.hpp"
 #include "sgmp/batch/out_pattern.hpp"
 #include "sgmp/batch/run_job.hpp"
-#include "sgmp/batch/seed_list.hpp"
 #include "sgmp/batch/shard.hpp"
 #include "sgmp/batch/world.hpp"
 #include "sgmp/cli/run_main.hpp"
-#include "sgmp/pack/size_modes.hpp"
 #if SGMP_WITH_METRICS
 #include "sgmp/metrics/parallel.hpp"
 #include "sgmp/metrics/summary_columns.hpp"
@@ -47,52 +43,6 @@ namespace fs = std::filesystem;
 using namespace sgmp::batch;
 
 namespace {
-
-/// Exit status 2: an option value breaks its rule. Status 1: files (existing, unwritable).
-struct BadValue {
-    std::string message;
-};
-struct FileProblem {
-    std::string message;
-};
-
-struct Settings {
-    std::string seeds;
-    std::vector<std::vector<std::string>> values =
-        std::vector<std::vector<std::string>>(parameters().size());
-    std::string out_pattern;
-    std::string summary = "summary.csv";
-    bool no_packs = false;
-    bool measure = false;
-    bool voronoi = false;
-    bool skip_existing = false;
-    bool force = false;
-    std::string shard;
-    unsigned threads = 0;
-    double progress_seconds = 5.0;
-    std::string config;
-    std::vector<std::string> merge;
-};
-
-/// A batch summary's text, at most kMaxSummaryBytes (bounded_file.hpp).
-std::string read_text(const fs::path& path) {
-    try {
-        return read_bounded_file(path, kMaxSummaryBytes, "a batch summary");
-    } catch (const InputError& e) {
-        throw FileProblem{e.what()};
-    }
-}
-
-/// The summary's columns: the batch's own and sgmp-compare's metric columns (none in a
-/// build without the metrics, SGMP_BUILD_REPORT=OFF).
-const SummarySchema& schema() {
-#if SGMP_WITH_METRICS
-    static const SummarySchema schema(metrics::summary_column_names());
-#else
-    static const SummarySchema schema(std::vector<std::string>{});
-#endif
-    return schema;
-}
 
 /// The measure callback of --measure.
 MeasureFields measure_callback(const Settings& s) {
@@ -134,124 +84,6 @@ int run_merge(const Settings& s) {
     return 0;
 }
 
-/// The text of every --size-distribution value that names a file (not a lognormal: spec).
-DistributionFiles read_distribution_files(const Settings& s) {
-    DistributionFiles files;
-    for (const std::string& value : s.values[parameter_index("size_distribution")]) {
-        if (value.empty() || sgmp::is_lognormal(value)) {
-            continue;
-        }
-        if (!fs::is_regular_file(value)) {
-            throw BadValue{"--size-distribution " + value +
-                           ": must name a readable file or be lognormal:MEDIAN:SIGMA[...]"};
-        }
-        std::string text;
-        try {
-            text = read_bounded_file(value, kMaxSmallFileBytes, "a size distribution file");
-        } catch (const InputError& e) {  // a file that cannot be read: exit 1
-            throw FileProblem{std::string("--size-distribution ") + e.what()};
-        }
-        try {
-            (void)sgmp::parse_size_distribution_csv(text, value);  // refused here, once
-        } catch (const InputError& e) {
-            throw BadValue{std::string("--size-distribution ") + e.what()};
-        }
-        files.emplace(value, std::move(text));
-    }
-    return files;
-}
-
-Plan plan_of(const Settings& s) {
-    Grid grid;
-    grid.values = s.values;
-    grid.seeds = parse_seed_list(s.seeds);
-    grid.distribution_files = read_distribution_files(s);
-    return make_plan(grid);
-}
-
-/// Seconds of packs an earlier summary at the same path records, by pack path.
-std::map<std::string, std::string> earlier_seconds(const Settings& s) {
-    std::map<std::string, std::string> seconds;
-    if (!s.skip_existing || !fs::exists(s.summary)) {
-        return seconds;
-    }
-    const auto header = schema().header();
-    const auto column = [&](const char* name) {
-        return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) -
-                                        header.begin());
-    };
-    try {
-        for (const auto& row : schema().parse(read_text(s.summary), s.summary).rows) {
-            if (!row.fields[column("path")].empty()) {
-                seconds[row.fields[column("path")]] = row.fields[column("seconds")];
-            }
-        }
-    } catch (const InputError&) {
-        seconds.clear();  // an unreadable earlier summary only costs the timings
-    }
-    return seconds;
-}
-
-/// The first job output that exists although neither --force nor --skip-existing is given.
-std::string first_existing(const Settings& s, const Plan& plan, const OutPattern* pattern,
-                           const std::vector<std::size_t>& jobs) {
-    if (s.force || s.skip_existing) {
-        return {};
-    }
-    if (fs::exists(s.summary)) {
-        return s.summary;
-    }
-    for (std::size_t i = 0; pattern != nullptr && i < jobs.size(); ++i) {
-        const std::string name = pattern->expand(plan, jobs[i]);
-        if (fs::exists(name)) {
-            return name;
-        }
-    }
-    return {};
-}
-
-/// Throws FileProblem when a pack's directory cannot be made or written (checked once per
-/// directory, before any pack is made; nothing is created here).
-void check_pack_directories(const Plan& plan, const OutPattern& pattern,
-                            const std::vector<std::size_t>& jobs) {
-    std::set<fs::path> seen;
-    for (const std::size_t job : jobs) {
-        const fs::path name = pattern.expand(plan, job);
-        fs::path dir = name.parent_path().empty() ? fs::path(".") : name.parent_path();
-        if (!seen.insert(dir).second) {
-            continue;
-        }
-        while (!fs::exists(dir) && dir.has_parent_path() && dir != dir.parent_path()) {
-            dir = dir.parent_path();  // the nearest existing ancestor is where it is created
-        }
-        if (fs::exists(dir) && (!fs::is_directory(dir) || ::access(dir.c_str(), W_OK) != 0)) {
-            throw FileProblem{
-                name.string() + ": cannot be written (" + dir.string() +
-                (fs::is_directory(dir) ? " is not writable)" : " is not a directory)")};
-        }
-    }
-}
-
-/// A resume's clean-up: the temporaries that killed writers on this host left beside the
-/// summary and in the packs' directories (each directory once).
-void remove_stale_temporaries_of(const Settings& s, const Plan& plan, const OutPattern* pattern,
-                                 const std::vector<std::size_t>& jobs) {
-    const auto directory_of = [](const fs::path& file) {
-        return file.parent_path().empty() ? fs::path(".") : file.parent_path();
-    };
-    std::set<fs::path> directories{directory_of(s.summary)};
-    for (std::size_t i = 0; pattern != nullptr && i < jobs.size(); ++i) {
-        directories.insert(directory_of(pattern->expand(plan, jobs[i])));
-    }
-    std::size_t removed = 0;
-    for (const fs::path& directory : directories) {
-        removed += remove_stale_temporaries(directory);
-    }
-    if (removed > 0) {
-        std::fprintf(stderr, "sgmp batch: removed %zu temporaries of killed runs\n", removed);
-    }
-}
-
 class ProgressLine {
   public:
     ProgressLine(std::size_t total, const World& world) : total_(total), world_(world) {}
@@ -276,127 +108,70 @@ class ProgressLine {
     const World& world_;
 };
 
-int run_sweep(const Settings& s, const World& world) {
-    const Plan plan = plan_of(s);
-    std::optional<OutPattern> pattern;
-    if (!s.no_packs) {
-        if (s.out_pattern.empty()) {
-            throw BadValue{"--out-pattern: needed to name the packs (or pass --no-packs)"};
-        }
-        pattern.emplace(s.out_pattern, plan);
-    }
-    const Shard shard = s.shard.empty() ? Shard{} : parse_shard(s.shard);
-    if (s.force && s.skip_existing) {
-        throw BadValue{"--force and --skip-existing: choose one (remake or keep existing packs)"};
-    }
-    // Every rank checks the same things and so stops on the same error.
-    try {
-        check_writable(s.summary, true);  // its directory; an existing summary comes next
-    } catch (const std::runtime_error& e) {
-        throw FileProblem{std::string("--summary ") + e.what()};
-    }
-    // One batch writes a summary at a time: a second batch naming it is refused now, not
-    // left to lose its rows (or the first's) to the last rename. Only rank 0 writes it.
-    std::optional<OutputLock> summary_lock;
-    std::string lock_problem;
-    if (world.rank() == 0) {
-        try {
-            summary_lock.emplace(s.summary);
-        } catch (const std::runtime_error& e) {
-            lock_problem = std::string("--summary ") + e.what() +
-                           "; give each batch its own --summary and join them with --merge";
-        }
-    }
-    if (!world.all(lock_problem.empty())) {
-        if (world.rank() == 0) {
-            std::cerr << "sgmp: " << printable(lock_problem) << "\n";
-        }
-        world.abort(1);
-    }
-    // Each job keeps its summary row (about 0.9 kB, measured at 10⁶ jobs: 884 MB) until the
-    // table is written, so one batch runs at most kMaxJobsPerBatch of them.
-    const std::uint64_t total = plan.job_count();
-    const std::uint64_t in_shard =
-        total >= shard.index ? (total - shard.index) / shard.count + 1 : 0;
-    if (in_shard > kMaxJobsPerBatch) {
-        const std::uint64_t shards = (total + kMaxJobsPerBatch - 1) / kMaxJobsPerBatch;
-        throw BadValue{"the grid holds " + std::to_string(total) + " jobs (" +
-                       std::to_string(in_shard) + " in this shard); one batch runs at most " +
-                       std::to_string(kMaxJobsPerBatch) + ": split it with --shard I/" +
-                       std::to_string(shards) + " or more shards"};
-    }
-    const std::vector<std::size_t> shard_jobs = assigned_jobs(plan.job_count(), shard);
-    if (const std::string existing =
-            first_existing(s, plan, pattern ? &*pattern : nullptr, shard_jobs);
-        !existing.empty()) {
-        throw FileProblem{existing +
-                          ": exists; pass --skip-existing to keep what is there or --force to "
-                          "remake it"};
-    }
-    if (pattern) {
-        check_pack_directories(plan, *pattern, shard_jobs);
-    }
-    if (s.skip_existing && world.rank() == 0) {
-        remove_stale_temporaries_of(s, plan, pattern ? &*pattern : nullptr, shard_jobs);
-    }
-    if (!world.all(true)) {
-        world.abort(1);
-    }
-    const std::vector<std::size_t> jobs =
-        assigned_jobs(plan.job_count(), shard, world.rank(), world.size());
-    const unsigned threads = s.threads > 0 ? s.threads : usable_threads();
-    const auto seconds = earlier_seconds(s);
-    JobOptions options;
-    if (s.measure) {
-        options.measure = measure_callback(s);
-    }
-    std::atomic<std::size_t> reused{0};
-    const auto work = [&](std::size_t position) {
-        const std::size_t job = jobs[position];
-        const std::string path = pattern ? pattern->expand(plan, job) : std::string();
-        if (s.skip_existing && !path.empty() && fs::exists(path)) {
-            SummaryRow row = reused_row(plan, job, read_pack_file(path), options, path);
-            if (const auto found = seconds.find(path);
-                found != seconds.end() && !found->second.empty()) {
+/// One job of a sweep as its summary line: the pack made (and written, when packs are), or
+/// with --skip-existing read back from the file that is there. Counts reused packs.
+class SweepJob {
+  public:
+    SweepJob(const Settings& s, const Plan& plan, const OutPattern* pattern,
+             const JobOptions& options)
+        : s_(s), plan_(plan), pattern_(pattern), options_(options), seconds_(earlier_seconds(s)) {}
+
+    /// The summary line of job `job` of the plan.
+    std::string operator()(std::size_t job) {
+        const std::string path = pattern_ != nullptr ? pattern_->expand(plan_, job) : std::string();
+        if (s_.skip_existing && !path.empty() && fs::exists(path)) {
+            SummaryRow row = reused_row(plan_, job, read_pack_file(path), options_, path);
+            if (const auto found = seconds_.find(path);
+                found != seconds_.end() && !found->second.empty()) {
                 row.seconds = std::stod(found->second);
             }
-            ++reused;
+            ++reused_;
             return schema().line(row);
         }
-        const JobResult result = run_job(plan, job, options, path);
+        const JobResult result = run_job(plan_, job, options_, path);
         if (!path.empty()) {
             try {
-                write_pack_file(path, result.pack, s.force);
+                write_pack_file(path, result.pack, s_.force);
             } catch (const FileExists&) {
-                if (!s.skip_existing) {
+                if (!s_.skip_existing) {
                     throw;
                 }
                 // Another batch made this pack meanwhile: it is kept, as if it had been
                 // there at the start.
-                ++reused;
-                return schema().line(reused_row(plan, job, read_pack_file(path), options, path));
+                ++reused_;
+                return schema().line(reused_row(plan_, job, read_pack_file(path), options_, path));
             }
         }
         return schema().line(result.row);
-    };
-    const auto start = std::chrono::steady_clock::now();
-    const ProgressLine progress(jobs.size(), world);
-    std::vector<std::string> lines;
-    try {
-        lines = run_jobs(jobs.size(), threads, work, world.rank() == 0 ? s.progress_seconds : 0.0,
-                         progress);
-    } catch (const std::exception& e) {
-        std::cerr << "sgmp: " << printable(e.what()) << "\n";
-        world.abort(1);
     }
-    std::string mine;
-    for (const std::string& line : lines) {
-        mine += line;
-    }
-    const std::vector<std::string> texts = world.gather(mine);
-    const std::vector<std::string> reused_by_rank = world.gather(std::to_string(reused.load()));
+
+    /// Packs read back instead of made so far.
+    std::size_t reused() const { return reused_.load(); }
+
+  private:
+    const Settings& s_;
+    const Plan& plan_;
+    const OutPattern* pattern_;
+    const JobOptions& options_;
+    std::map<std::string, std::string> seconds_;  // of an earlier summary, by pack path
+    std::atomic<std::size_t> reused_{0};
+};
+
+/// What this rank's part of a sweep gave: its summary lines and its count of reused packs.
+struct RankResult {
+    std::string lines;
+    std::size_t reused = 0;
+};
+
+/// Gathers every rank's lines on rank 0, which writes the summary and prints the closing
+/// line; the other ranks return at once.
+void write_sweep_summary(const Settings& s, const World& world, const Plan& plan,
+                         const Shard& shard, const RankResult& mine, std::size_t rank_jobs,
+                         unsigned threads, std::chrono::steady_clock::time_point start) {
+    const std::vector<std::string> texts = world.gather(mine.lines);
+    const std::vector<std::string> reused_by_rank = world.gather(std::to_string(mine.reused));
     if (world.rank() != 0) {
-        return 0;
+        return;
     }
     std::size_t reused_in_all = 0;
     for (const std::string& count : reused_by_rank) {
@@ -413,7 +188,53 @@ int run_sweep(const Settings& s, const World& world) {
         "sgmp: batch of %zu packs (%zu reused) on %zu rank(s) x %u thread(s), %.3f s, "
         "%.1f packs/s on rank 0 -> %s\n",
         plan.job_count() / shard.count, reused_in_all, world.size(), threads, elapsed,
-        elapsed > 0.0 ? static_cast<double>(jobs.size()) / elapsed : 0.0, s.summary.c_str());
+        elapsed > 0.0 ? static_cast<double>(rank_jobs) / elapsed : 0.0, s.summary.c_str());
+}
+
+/// A sweep: its options and outputs checked on every rank (so all stop on the same error),
+/// this rank's jobs run on its threads, and the summary written by rank 0.
+int run_sweep(const Settings& s, const World& world) {
+    const Plan plan = plan_of(s);
+    const std::optional<OutPattern> pattern = pattern_of(s, plan);
+    const OutPattern* pattern_ptr = pattern ? &*pattern : nullptr;
+    const Shard shard = s.shard.empty() ? Shard{} : parse_shard(s.shard);
+    if (s.force && s.skip_existing) {
+        throw BadValue{"--force and --skip-existing: choose one (remake or keep existing packs)"};
+    }
+    try {
+        check_writable(s.summary, true);  // its directory; an existing summary comes next
+    } catch (const std::runtime_error& e) {
+        throw FileProblem{std::string("--summary ") + e.what()};
+    }
+    std::optional<OutputLock> summary_lock;
+    lock_summary(s, world, summary_lock);
+    check_job_limit(plan, shard);
+    check_shard_outputs(s, world, plan, pattern_ptr, assigned_jobs(plan.job_count(), shard));
+    const std::vector<std::size_t> jobs =
+        assigned_jobs(plan.job_count(), shard, world.rank(), world.size());
+    const unsigned threads = s.threads > 0 ? s.threads : usable_threads();
+    JobOptions options;
+    if (s.measure) {
+        options.measure = measure_callback(s);
+    }
+    SweepJob sweep_job(s, plan, pattern_ptr, options);
+    const auto work = [&](std::size_t position) { return sweep_job(jobs[position]); };
+    const auto start = std::chrono::steady_clock::now();
+    const ProgressLine progress(jobs.size(), world);
+    std::vector<std::string> lines;
+    try {
+        lines = run_jobs(jobs.size(), threads, work, world.rank() == 0 ? s.progress_seconds : 0.0,
+                         progress);
+    } catch (const std::exception& e) {
+        std::cerr << "sgmp: " << printable(e.what()) << "\n";
+        world.abort(1);
+    }
+    RankResult mine;
+    for (const std::string& line : lines) {
+        mine.lines += line;
+    }
+    mine.reused = sweep_job.reused();
+    write_sweep_summary(s, world, plan, shard, mine, jobs.size(), threads, start);
     return 0;
 }
 

@@ -120,6 +120,103 @@ Json provenance(const std::string& input, const Pack& pack, const MeasureOptions
                 {"parameters", parameters}};
 }
 
+namespace {
+
+/// The metric table's values of `m` into `j`, in its metrics.json order: the headline values
+/// (`detail` false) or the detail (true).
+void put_metrics(Json& j, const Measurement& m, bool detail) {
+    for (const MetricDescriptor* d : ranked_metrics(&MetricDescriptor::json_rank)) {
+        if ((d->json_rank >= kJsonDetail) != detail) {
+            continue;
+        }
+        if (const auto v = d->value(m, d->tolerance)) {
+            j[d->name] = d->integer ? Json(static_cast<std::int64_t>(*v)) : Json(*v);
+        }
+    }
+}
+
+/// Every metric's definition, by key.
+Json definitions_json() {
+    Json definitions = Json::object();
+    for (const auto& [key, text] : metric_definitions()) {
+        definitions[key] = text;
+    }
+    return definitions;
+}
+
+/// How g(r) was counted: bins, origins, the density and its rule, the split pairs.
+Json g_r_detail_json(const Rdf& rdf) {
+    return Json{{"bin_width_over_d", rdf.bin_width_over_d},
+                {"bins", rdf.g.size()},
+                {"origins", rdf.origins},
+                {"edge_corrected_origins", rdf.corrected_origins},
+                {"density", rdf.density},
+                {"density_rule", rdf.density_rule == RdfDensity::Space ? "space" : "neighbours"},
+                {"space_density", rdf.space_density},
+                {"split_pairs", {rdf.split_pairs[0], rdf.split_pairs[1]}},
+                {"split_volume", {rdf.split_volume[0], rdf.split_volume[1]}},
+                {"space", box_json(rdf.space)}};
+}
+
+/// A blend's mixing: the species' volume shares overall and in each height quarter.
+Json mixing_json(const MixingProfile& mixing) {
+    Json quarters = Json::array();
+    const double slab = (mixing.y_high - mixing.y_low) / 4.0;
+    for (std::size_t q = 0; q < 4; ++q) {
+        quarters.push_back(Json{
+            {"y_low", mixing.y_low + static_cast<double>(q) * slab},
+            {"y_high", q == 3 ? mixing.y_high : mixing.y_low + static_cast<double>(q + 1) * slab},
+            {"volume_shares", mixing.quarters[q]}});
+    }
+    return Json{{"species", mixing.species},
+                {"overall_volume_shares", mixing.overall},
+                {"quarters", quarters},
+                {"deviation_max", mixing.deviation}};
+}
+
+/// A blend's per-species values, each species with its Voronoi local φ where measured.
+Json species_with_voronoi(const Measurement& m, const std::vector<std::string>& names) {
+    Json species = species_json(*m.species, names);
+    if (m.voronoi) {
+        for (Json& one : species["species"]) {
+            for (const VoronoiSpecies& v : m.voronoi->by_species) {
+                if (v.species == one["species"].get<int>()) {
+                    one[metric_with(MetricRole::LocalPacking).name] = v.mean;
+                    one[metric_with(MetricRole::LocalSpread).name] = v.sd;
+                    one["voronoi_phi_global"] = v.global;
+                }
+            }
+        }
+    }
+    return species;
+}
+
+/// The optional parts of metrics.json, each where measured: mixing, size distribution,
+/// species and Voronoi cells.
+void put_optional_parts(Json& j, const Measurement& m, const std::vector<std::string>& names) {
+    if (m.mixing) {
+        j["mixing"] = mixing_json(*m.mixing);
+    }
+    if (m.size_moments) {
+        const auto rcp = desmond_weeks_phi_rcp(*m.size_moments);
+        j["size_distribution"] = Json{{"polydispersity", m.size_moments->polydispersity},
+                                      {"skewness", m.size_moments->skewness},
+                                      {"phi_rcp_desmond_weeks", rcp ? Json(*rcp) : Json()}};
+    }
+    if (m.species) {
+        j["species"] = species_with_voronoi(m, names);
+    }
+    if (m.voronoi) {
+        j["voronoi_detail"] = Json{{"cells", m.voronoi->cells},
+                                   {"global", m.voronoi->global},
+                                   {"cell_volume", m.voronoi->cell_volume},
+                                   {"cap_cells", m.voronoi->cap_cells},
+                                   {"histogram_bins", m.voronoi->histogram.size()}};
+    }
+}
+
+}  // namespace
+
 Json metrics_json(const Measurement& m, const Json& prov) {
     Json j;
     j["schema_version"] = kSchemaVersion;
@@ -127,20 +224,9 @@ Json metrics_json(const Measurement& m, const Json& prov) {
     j["diameter"] = m.mean_diameter;
     const auto& c = m.local.coordination;
     const auto& names = coordination_tolerance_names();
-    const auto metrics = ranked_metrics(&MetricDescriptor::json_rank);
-    const auto put = [&](bool detail) {
-        for (const MetricDescriptor* d : metrics) {
-            if ((d->json_rank >= kJsonDetail) != detail) {
-                continue;
-            }
-            if (const auto v = d->value(m, d->tolerance)) {
-                j[d->name] = d->integer ? Json(static_cast<std::int64_t>(*v)) : Json(*v);
-            }
-        }
-    };
-    put(false);
+    put_metrics(j, m, false);
     j["region"] = box_json(m.region);
-    put(true);  // the detail
+    put_metrics(j, m, true);  // the detail
     j["origins"] = c.origins;
     j["polydisperse"] = m.polydisperse;
     j["radius_min"] = m.min_radius;
@@ -148,11 +234,7 @@ Json metrics_json(const Measurement& m, const Json& prov) {
     j["container"] = m.container.to_string();
     j["container_source"] = m.container_source;
     j["top"] = m.top;
-    Json definitions = Json::object();
-    for (const auto& [key, text] : metric_definitions()) {
-        definitions[key] = text;
-    }
-    j["definitions"] = definitions;
+    j["definitions"] = definitions_json();
     j["sides"] = m.container.periodic ? "periodic" : "walls";
     j["overlaps_detail"] = Json{{"floor_over_d", m.overlaps.floor},
                                 {"pairs", overlap_json(m.overlaps.pairs)},
@@ -162,60 +244,8 @@ Json metrics_json(const Measurement& m, const Json& prov) {
         pz[names[t]] = c.p_z[t];
     }
     j["p_z"] = pz;
-    const auto& rdf = m.local.rdf;
-    j["g_r_detail"] =
-        Json{{"bin_width_over_d", rdf.bin_width_over_d},
-             {"bins", rdf.g.size()},
-             {"origins", rdf.origins},
-             {"edge_corrected_origins", rdf.corrected_origins},
-             {"density", rdf.density},
-             {"density_rule", rdf.density_rule == RdfDensity::Space ? "space" : "neighbours"},
-             {"space_density", rdf.space_density},
-             {"split_pairs", {rdf.split_pairs[0], rdf.split_pairs[1]}},
-             {"split_volume", {rdf.split_volume[0], rdf.split_volume[1]}},
-             {"space", box_json(rdf.space)}};
-    if (m.mixing) {
-        Json quarters = Json::array();
-        const double slab = (m.mixing->y_high - m.mixing->y_low) / 4.0;
-        for (std::size_t q = 0; q < 4; ++q) {
-            quarters.push_back(
-                Json{{"y_low", m.mixing->y_low + static_cast<double>(q) * slab},
-                     {"y_high", q == 3 ? m.mixing->y_high
-                                       : m.mixing->y_low + static_cast<double>(q + 1) * slab},
-                     {"volume_shares", m.mixing->quarters[q]}});
-        }
-        j["mixing"] = Json{{"species", m.mixing->species},
-                           {"overall_volume_shares", m.mixing->overall},
-                           {"quarters", quarters},
-                           {"deviation_max", m.mixing->deviation}};
-    }
-    if (m.size_moments) {
-        const auto rcp = desmond_weeks_phi_rcp(*m.size_moments);
-        j["size_distribution"] = Json{{"polydispersity", m.size_moments->polydispersity},
-                                      {"skewness", m.size_moments->skewness},
-                                      {"phi_rcp_desmond_weeks", rcp ? Json(*rcp) : Json()}};
-    }
-    if (m.species) {
-        j["species"] = species_json(*m.species, names);
-        if (m.voronoi) {
-            for (Json& one : j["species"]["species"]) {
-                for (const VoronoiSpecies& v : m.voronoi->by_species) {
-                    if (v.species == one["species"].get<int>()) {
-                        one[metric_with(MetricRole::LocalPacking).name] = v.mean;
-                        one[metric_with(MetricRole::LocalSpread).name] = v.sd;
-                        one["voronoi_phi_global"] = v.global;
-                    }
-                }
-            }
-        }
-    }
-    if (m.voronoi) {
-        j["voronoi_detail"] = Json{{"cells", m.voronoi->cells},
-                                   {"global", m.voronoi->global},
-                                   {"cell_volume", m.voronoi->cell_volume},
-                                   {"cap_cells", m.voronoi->cap_cells},
-                                   {"histogram_bins", m.voronoi->histogram.size()}};
-    }
+    j["g_r_detail"] = g_r_detail_json(m.local.rdf);
+    put_optional_parts(j, m, names);
     j["q6_detail"] = Json{{"cutoff", m.local.bond_order.cutoff},
                           {"origins_with_bonds", m.local.bond_order.origins_with_bonds}};
     if (m.thesis_rdf) {

@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "precomputed_text.hpp"
 #include "sgmp/metrics/metric_descriptors.hpp"
 #include "sgmp/metrics/metrics_output.hpp"
 #include "sgmp/metrics/summary_columns.hpp"
@@ -17,25 +18,16 @@
 
 namespace sgmp::report {
 
+using detail::count_of;
+using detail::kUnknown;
+using detail::lines_of;
 using metrics::coordination_tolerance_names;
 using metrics::kSchemaVersion;
 using metrics::summary_column_of;
 using metrics::summary_columns;
 using metrics::SummaryColumn;
+
 namespace {
-
-constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
-
-std::vector<std::string_view> lines_of(std::string_view text) {
-    std::vector<std::string_view> lines;
-    std::size_t start = 0;
-    while (start < text.size()) {
-        const std::size_t end = std::min(text.find('\n', start), text.size());
-        lines.push_back(text.substr(start, end - start));
-        start = end + 1;
-    }
-    return lines;
-}
 
 /// Columns `wanted` of a CSV in the testbed layout (header, `#` lines, rows).
 std::vector<std::vector<double>> columns(std::string_view text, const std::string& source,
@@ -78,18 +70,6 @@ double number_at(const nlohmann::ordered_json& j, const std::string& key,
         throw InputError(source, 0, "has no number '" + key + "'");
     }
     return j[key].get<double>();
-}
-
-/// A recorded particle count: a whole number in [1, 2⁵³] (beyond, a double no longer holds
-/// every whole number, and the cast to size_t would be undefined).
-std::size_t count_of(double value, const std::string& source, std::size_t line) {
-    constexpr double kLargest = 9007199254740992.0;  // 2⁵³
-    if (!(value >= 1.0 && value <= kLargest) || value != std::floor(value)) {
-        throw InputError(source, line,
-                         "count " + format_number(value) +
-                             " must be a whole number of particles from 1 to 2^53");
-    }
-    return static_cast<std::size_t>(value);
 }
 
 /// The array of numbers at j[key][name], named in the error when it is missing or is not
@@ -363,108 +343,31 @@ PackSummary summary_from_measure(const std::string& source, const nlohmann::orde
     return s;
 }
 
-std::vector<std::pair<std::string, PackSummary>> summaries_from_batch(std::string_view text,
-                                                                      const std::string& source) {
-    const auto lines = lines_of(text);
-    std::vector<std::string> header;
-    std::vector<std::pair<std::string, PackSummary>> out;
-    const auto& names = coordination_tolerance_names();
-    for (std::size_t n = 0; n < lines.size(); ++n) {
-        if (lines[n].empty() || lines[n].front() == '#') {
-            continue;
-        }
-        const auto fields = split_csv_line(lines[n]);
-        for (const auto& f : fields) {  // paths and parameters reach the JSON outputs
-            if (!is_utf8(f)) {
-                throw InputError(source, n + 1,
-                                 "field '" + f +
-                                     "' is not UTF-8 (a Latin-1 byte?): a summary "
-                                     "must be UTF-8 text");
-            }
-        }
-        if (header.empty()) {
-            header = fields;
-            const std::string& marker =
-                metrics::metric_with(metrics::MetricRole::BatchSummary).summary_column;
-            if (std::find(header.begin(), header.end(), marker) == header.end() ||
-                header.front() != "job") {
-                throw InputError(source, n + 1,
-                                 "is not an sgmp batch summary (no job, " + marker + " columns)");
-            }
-            continue;
-        }
-        if (fields.size() != header.size()) {
-            throw InputError(source, n + 1, "has another number of fields than the header");
-        }
-        const auto field = [&](const std::string& name) -> const std::string& {
-            const auto at = std::find(header.begin(), header.end(), name);
-            if (at == header.end()) {
-                throw InputError(source, 1, "has no column '" + name + "'");
-            }
-            return fields[static_cast<std::size_t>(at - header.begin())];
-        };
-        const auto number = [&](const std::string& name) {
-            const std::string& f = field(name);
-            double value = 0.0;
-            const auto r = std::from_chars(f.data(), f.data() + f.size(), value);
-            if (f.empty() || r.ec != std::errc() || r.ptr != f.data() + f.size()) {
-                throw InputError(source, n + 1,
-                                 "'" + name + "' is '" + f +
-                                     "', not a number (was the batch run with --measure?)");
-            }
-            return value;
-        };
-        // A metric not measured is an empty field (read as NaN, not judged); a field that
-        // holds "nan" or "inf" claims a measured value that cannot be one.
-        const auto measured = [&](const std::string& name) {
-            const double value = number(name);
-            if (!std::isfinite(value)) {
-                throw InputError(source, n + 1,
-                                 "'" + name + "' is '" + field(name) +
-                                     "': a measured value must be finite (a metric not "
-                                     "measured is an empty field)");
-            }
-            return value;
-        };
-        PackSummary s;
-        s.source = field("path");
-        if (s.source.empty()) {
-            throw InputError(source, n + 1, "names no pack (a batch run with --no-packs)");
-        }
-        for (std::size_t c = 1; c < header.size(); ++c) {
-            if (header[c] == "seconds") {
-                break;  // the parameters and the seed come first
-            }
-            s.provenance.emplace_back(header[c], fields[c]);
-        }
-        s.count = count_of(number("count"), source, n + 1);
-        s.diameter = kUnknown;
-        for (const auto& rule : metric_rules()) {
-            if (rule.kind != MetricKind::Scalar) {
-                continue;
-            }
-            double v = kUnknown;
-            const SummaryColumn* column = summary_column_of(rule.name);
-            const bool absent =
-                column != nullptr && column->optional &&
-                (std::find(header.begin(), header.end(), column->column) == header.end() ||
-                 field(column->column).empty());
-            if (column != nullptr && !absent) {
-                v = measured(column->column);
-            }
-            s.scalars.push_back(v);
-        }
-        for (std::size_t t = 0; t < names.size(); ++t) {
-            s.z_mean.push_back(
-                measured(summary_column_of(metrics::coordination_metric(t).name)->column));
-        }
-        s.p_z.assign(names.size(), {});
-        out.emplace_back(s.source, std::move(s));
+namespace detail {
+
+std::vector<std::string_view> lines_of(std::string_view text) {
+    std::vector<std::string_view> lines;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        lines.push_back(text.substr(start, end - start));
+        start = end + 1;
     }
-    if (header.empty()) {
-        throw InputError(source, 0, "holds no header row");
-    }
-    return out;
+    return lines;
 }
+
+/// A recorded particle count: a whole number in [1, 2⁵³] (beyond, a double no longer holds
+/// every whole number, and the cast to size_t would be undefined).
+std::size_t count_of(double value, const std::string& source, std::size_t line) {
+    constexpr double kLargest = 9007199254740992.0;  // 2⁵³
+    if (!(value >= 1.0 && value <= kLargest) || value != std::floor(value)) {
+        throw InputError(source, line,
+                         "count " + format_number(value) +
+                             " must be a whole number of particles from 1 to 2^53");
+    }
+    return static_cast<std::size_t>(value);
+}
+
+}  // namespace detail
 
 }  // namespace sgmp::report

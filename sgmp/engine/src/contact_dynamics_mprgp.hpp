@@ -25,6 +25,201 @@
 
 namespace sgmp::engine::contact_dynamics {
 
+/// The state of one MPRGP solve (solve_mprgp): the impulses x, the linear term q, the
+/// gradient g = Wx + q, the search direction d and the products' scratch.
+template <class Row>
+class Mprgp {
+  public:
+    /// The problem of `rows` from their warm start, with its first gradient and direction.
+    Mprgp(Dynamics& s, std::vector<Row>& rows, double ssor)
+        : s_(s),
+          rows_(rows),
+          n_(rows.size()),
+          ssor_(ssor),
+          alpha_bar_(1.9 / std::max(delassus_bound(s, rows), 1e-300)),
+          x_(n_),
+          q_(n_),
+          g_(n_),
+          d_(n_),
+          ad_(n_),
+          free_g_(n_),
+          z_(n_),
+          scratch_(scratch_size(s, rows)) {
+        const double inv_h = 1.0 / s.h;
+        velocities_for(s, rows, std::vector<double>(n_, 0.0));
+        for (std::size_t c = 0; c < n_; ++c) {
+            x_[c] = std::max(0.0, rows[c].p);
+            q_[c] = rows[c].gap * inv_h + closing_velocity(s, rows[c]);
+        }
+        full_gradient();
+        free_part();
+        d_ = z_;
+    }
+
+    /// Iterates until every projected gradient component is at most `bound` or the products
+    /// with W reach `max_products`.
+    void run(double bound, int max_products) {
+        while (products_ < max_products) {
+            const Split now = split();
+            if (now.largest <= bound) {
+                break;
+            }
+            if (now.chopped <= now.reduced) {
+                conjugate_gradient_step();
+            } else {
+                proportioning_step();
+            }
+        }
+    }
+
+    /// Leaves the impulses in the rows and their velocities in the pack; returns the products
+    /// with W.
+    int finish() {
+        for (std::size_t c = 0; c < n_; ++c) {
+            rows_[c].p = x_[c];
+        }
+        velocities_for(s_, rows_, x_);
+        return products_;
+    }
+
+  private:
+    /// ‖β‖², φ̃ᵀφ and the largest projected gradient component.
+    struct Split {
+        double chopped = 0.0;
+        double reduced = 0.0;
+        double largest = 0.0;
+    };
+
+    /// g = Wx + q.
+    void full_gradient() {
+        delassus_times(s_, rows_, x_, g_, scratch_);
+        for (std::size_t c = 0; c < n_; ++c) {
+            g_[c] += q_[c];
+        }
+    }
+
+    /// The free gradient φ and its preconditioned form z (z = φ without preconditioning).
+    void free_part() {
+        for (std::size_t c = 0; c < n_; ++c) {
+            free_g_[c] = x_[c] > 0.0 ? g_[c] : 0.0;
+        }
+        if (ssor_ > 0.0) {
+            ssor_apply(s_, rows_, x_, free_g_, ssor_, z_, scratch_);
+        } else {
+            z_ = free_g_;
+        }
+    }
+
+    /// The chopped and reduced free gradients' measures and the largest component.
+    Split split() const {
+        Split r;
+        for (std::size_t c = 0; c < n_; ++c) {
+            if (x_[c] > 0.0) {
+                r.reduced += std::min(x_[c] / alpha_bar_, g_[c]) * g_[c];
+                r.largest = std::max(r.largest, std::abs(g_[c]));
+            } else if (g_[c] < 0.0) {
+                r.chopped += g_[c] * g_[c];
+                r.largest = std::max(r.largest, -g_[c]);
+            }
+        }
+        return r;
+    }
+
+    /// The expansion step: a projected gradient step of length ᾱ on the free set, then the
+    /// gradient afresh and a new search direction from its free part.
+    void expand() {
+        for (std::size_t c = 0; c < n_; ++c) {
+            x_[c] = std::max(0.0, x_[c] - alpha_bar_ * (x_[c] > 0.0 ? g_[c] : 0.0));
+        }
+        full_gradient();
+        ++products_;
+        free_part();
+        d_ = z_;
+    }
+
+    /// The largest step along d that keeps x ≥ 0.
+    double feasible_step() const {
+        double a_f = INFINITY;
+        for (std::size_t c = 0; c < n_; ++c) {
+            if (d_[c] > 0.0) {
+                a_f = std::min(a_f, x_[c] / d_[c]);
+            }
+        }
+        return a_f;
+    }
+
+    /// A conjugate gradient step along d, cut to the feasible step (then an expansion) where
+    /// it would leave x ≥ 0; a restart where no descent is left along d.
+    void conjugate_gradient_step() {
+        delassus_times(s_, rows_, d_, ad_, scratch_);
+        ++products_;
+        double dad = 0.0, gd = 0.0;
+        for (std::size_t c = 0; c < n_; ++c) {
+            dad += d_[c] * ad_[c];
+            gd += g_[c] * d_[c];
+        }
+        if (!(dad > 0.0) || !(gd > 0.0)) {  // no descent left along d: restart
+            full_gradient();
+            ++products_;
+            expand();
+            return;
+        }
+        const double a_cg = gd / dad;
+        const double a_f = feasible_step();
+        if (a_cg <= a_f) {
+            for (std::size_t c = 0; c < n_; ++c) {
+                x_[c] -= a_cg * d_[c];
+                g_[c] -= a_cg * ad_[c];
+            }
+            free_part();
+            double zad = 0.0;
+            for (std::size_t c = 0; c < n_; ++c) {
+                zad += z_[c] * ad_[c];
+            }
+            const double gamma = zad / dad;
+            for (std::size_t c = 0; c < n_; ++c) {
+                d_[c] = z_[c] - gamma * d_[c];
+            }
+        } else {
+            for (std::size_t c = 0; c < n_; ++c) {
+                x_[c] = std::max(0.0, x_[c] - a_f * d_[c]);
+                g_[c] -= a_f * ad_[c];
+            }
+            expand();
+        }
+    }
+
+    /// A steepest step on the chopped gradient β (proportioning), projected onto x ≥ 0.
+    void proportioning_step() {
+        for (std::size_t c = 0; c < n_; ++c) {
+            z_[c] = x_[c] > 0.0 ? 0.0 : std::min(g_[c], 0.0);  // β
+        }
+        delassus_times(s_, rows_, z_, ad_, scratch_);
+        ++products_;
+        double bab = 0.0, gb = 0.0;
+        for (std::size_t c = 0; c < n_; ++c) {
+            bab += z_[c] * ad_[c];
+            gb += g_[c] * z_[c];
+        }
+        const double a = bab > 0.0 ? gb / bab : alpha_bar_;
+        for (std::size_t c = 0; c < n_; ++c) {
+            x_[c] = std::max(0.0, x_[c] - a * z_[c]);
+            g_[c] -= a * ad_[c];
+        }
+        free_part();
+        d_ = z_;
+    }
+
+    Dynamics& s_;
+    std::vector<Row>& rows_;
+    std::size_t n_;
+    double ssor_;
+    double alpha_bar_;
+    std::vector<double> x_, q_, g_, d_, ad_, free_g_, z_;
+    std::vector<V3> scratch_;
+    int products_ = 1;
+};
+
 /// Conjugate gradients on the rows carrying an impulse (the free set) while the chopped
 /// gradient (of the rows at p = 0 that would press) stays below the free one (Γ = 1), a
 /// feasible step and a projected gradient step of 1.9/L (expansion) where a CG step would
@@ -37,140 +232,9 @@ namespace sgmp::engine::contact_dynamics {
 template <class Row>
 int solve_mprgp(Dynamics& s, std::vector<Row>& rows, double tolerance, int max_products,
                 double ssor) {
-    const std::size_t n = rows.size();
-    const double inv_h = 1.0 / s.h;
-    const double alpha_bar = 1.9 / std::max(delassus_bound(s, rows), 1e-300);
-    std::vector<double> x(n), q(n), g(n), d(n), ad(n), free_g(n), z(n);
-    std::vector<V3> scratch(scratch_size(s, rows));
-    velocities_for(s, rows, std::vector<double>(n, 0.0));
-    for (std::size_t c = 0; c < n; ++c) {
-        x[c] = std::max(0.0, rows[c].p);
-        q[c] = rows[c].gap * inv_h + closing_velocity(s, rows[c]);
-    }
-    const auto full_gradient = [&] {
-        delassus_times(s, rows, x, g, scratch);
-        for (std::size_t c = 0; c < n; ++c) {
-            g[c] += q[c];
-        }
-    };
-    // The free gradient φ and its preconditioned form z (z = φ without preconditioning).
-    const auto free_part = [&] {
-        for (std::size_t c = 0; c < n; ++c) {
-            free_g[c] = x[c] > 0.0 ? g[c] : 0.0;
-        }
-        if (ssor > 0.0) {
-            ssor_apply(s, rows, x, free_g, ssor, z, scratch);
-        } else {
-            z = free_g;
-        }
-    };
-    // ‖β‖², φ̃ᵀφ and the largest projected gradient component.
-    struct Split {
-        double chopped = 0.0;
-        double reduced = 0.0;
-        double largest = 0.0;
-    };
-    const auto split = [&] {
-        Split r;
-        for (std::size_t c = 0; c < n; ++c) {
-            if (x[c] > 0.0) {
-                r.reduced += std::min(x[c] / alpha_bar, g[c]) * g[c];
-                r.largest = std::max(r.largest, std::abs(g[c]));
-            } else if (g[c] < 0.0) {
-                r.chopped += g[c] * g[c];
-                r.largest = std::max(r.largest, -g[c]);
-            }
-        }
-        return r;
-    };
-    int products = 1;
-    // The expansion step: a projected gradient step of length ᾱ on the free set, then the
-    // gradient afresh and a new search direction from its free part.
-    const auto expand = [&] {
-        for (std::size_t c = 0; c < n; ++c) {
-            x[c] = std::max(0.0, x[c] - alpha_bar * (x[c] > 0.0 ? g[c] : 0.0));
-        }
-        full_gradient();
-        ++products;
-        free_part();
-        d = z;
-    };
-    full_gradient();
-    free_part();
-    d = z;
-    const double bound = tolerance * s.h;
-    while (products < max_products) {
-        const Split now = split();
-        if (now.largest <= bound) {
-            break;
-        }
-        if (now.chopped <= now.reduced) {
-            delassus_times(s, rows, d, ad, scratch);
-            ++products;
-            double dad = 0.0, gd = 0.0;
-            for (std::size_t c = 0; c < n; ++c) {
-                dad += d[c] * ad[c];
-                gd += g[c] * d[c];
-            }
-            if (!(dad > 0.0) || !(gd > 0.0)) {  // no descent left along d: restart
-                full_gradient();
-                ++products;
-                expand();
-                continue;
-            }
-            const double a_cg = gd / dad;
-            double a_f = INFINITY;
-            for (std::size_t c = 0; c < n; ++c) {
-                if (d[c] > 0.0) {
-                    a_f = std::min(a_f, x[c] / d[c]);
-                }
-            }
-            if (a_cg <= a_f) {
-                for (std::size_t c = 0; c < n; ++c) {
-                    x[c] -= a_cg * d[c];
-                    g[c] -= a_cg * ad[c];
-                }
-                free_part();
-                double zad = 0.0;
-                for (std::size_t c = 0; c < n; ++c) {
-                    zad += z[c] * ad[c];
-                }
-                const double gamma = zad / dad;
-                for (std::size_t c = 0; c < n; ++c) {
-                    d[c] = z[c] - gamma * d[c];
-                }
-            } else {
-                for (std::size_t c = 0; c < n; ++c) {
-                    x[c] = std::max(0.0, x[c] - a_f * d[c]);
-                    g[c] -= a_f * ad[c];
-                }
-                expand();
-            }
-        } else {
-            for (std::size_t c = 0; c < n; ++c) {
-                z[c] = x[c] > 0.0 ? 0.0 : std::min(g[c], 0.0);  // β
-            }
-            delassus_times(s, rows, z, ad, scratch);
-            ++products;
-            double bab = 0.0, gb = 0.0;
-            for (std::size_t c = 0; c < n; ++c) {
-                bab += z[c] * ad[c];
-                gb += g[c] * z[c];
-            }
-            const double a = bab > 0.0 ? gb / bab : alpha_bar;
-            for (std::size_t c = 0; c < n; ++c) {
-                x[c] = std::max(0.0, x[c] - a * z[c]);
-                g[c] -= a * ad[c];
-            }
-            free_part();
-            d = z;
-        }
-    }
-    for (std::size_t c = 0; c < n; ++c) {
-        rows[c].p = x[c];
-    }
-    velocities_for(s, rows, x);
-    return products;
+    Mprgp<Row> solve(s, rows, ssor);
+    solve.run(tolerance * s.h, max_products);
+    return solve.finish();
 }
 
 }  // namespace sgmp::engine::contact_dynamics

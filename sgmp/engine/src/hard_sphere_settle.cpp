@@ -12,11 +12,14 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "hard_sphere_settle_step.hpp"
 #include "sgmp/engine/coulomb_pyramid.hpp"
 #include "sgmp/engine/neighbour_list.hpp"
 
 namespace sgmp::engine {
 namespace {
+
+using namespace settle_step;
 
 /// Largest violation of a bound or a row (in units of s) accepted from the LP: its step
 /// then overlaps by at most 10⁻⁸·s.
@@ -39,185 +42,6 @@ constexpr int kSteadySteps = 8;
 /// (5,000). With the cost it takes 3–8. A sphere balanced but for a force below this
 /// stays, so the certificate's residual is below it too (10⁻⁶·wᵢ ≪ 10⁻³ m·g).
 constexpr double kNeutralPenalty = 1e-6;
-
-/// A row of the LP: its contact (contact_key) and, for a frictional contact, the
-/// edge of its pyramid (kNormalRow for a plain non-overlap row).
-struct RowKey {
-    std::uint64_t contact = 0;
-    std::uint32_t edge = 0;
-    bool operator==(const RowKey&) const = default;
-};
-constexpr std::uint32_t kNormalRow = 0xFFU;
-struct RowKeyHash {
-    std::size_t operator()(const RowKey& k) const {
-        return std::hash<std::uint64_t>{}(k.contact * 16U + k.edge);
-    }
-};
-
-/// The LP of one iteration in the scaled variables u = Δ/s (units of d), and the pairs of
-/// its rows.
-struct Step {
-    std::vector<int> row_index;
-    std::vector<int> col_index;
-    std::vector<double> element;
-    std::vector<double> row_upper;
-    std::vector<RowKey> row_key;
-    std::vector<double> col_lower;
-    std::vector<double> col_upper;
-    std::vector<double> objective;
-};
-
-/// Columns of sphere i: its scaled moves along x, y and z, then (frictional) its scaled
-/// rotation ψ = θ/(2·s) about x, y and z (θ in radians: a sphere of diameter d turning by θ
-/// moves its surface by at most s·|ψ|·d).
-constexpr std::size_t kMoves = 3;
-std::size_t columns_per_sphere(const SettleOptions& options) {
-    return options.friction ? 6 : 3;
-}
-
-/// Appends rows to a Step: `add` puts a coefficient of one column into the open row,
-/// `close` ends it with its bound and key.
-struct RowWriter {
-    Step& st;
-    int row = 0;
-    void add(std::size_t column, double value) {
-        if (value == 0.0) {
-            return;  // no explicit zeros: CLP may pivot on them
-        }
-        st.row_index.push_back(row);
-        st.col_index.push_back(static_cast<int>(column));
-        st.element.push_back(value);
-    }
-    void add(std::size_t first_column, const Vec3& v) {
-        for (int a = 0; a < 3; ++a) {
-            add(first_column + static_cast<std::size_t>(a), v[a]);
-        }
-    }
-    void close(double upper, RowKey key) {
-        st.row_upper.push_back(upper);
-        st.row_key.push_back(key);
-        ++row;
-    }
-};
-
-/// The frictional rows of one contact of sphere i with partner j (j = none for a wall):
-/// for each pyramid edge E around the normal N pushing i away from its partner,
-/// E·(uᵢ − uⱼ at the contact point) ≥ −gap, in the scaled columns:
-///     −E·uᵢ + 2rᵢ·(N×E)·ψᵢ + E·uⱼ + 2rⱼ·(N×E)·ψⱼ ≤ gap/s
-/// (the rotation terms move the contact point; see the header for the duality).
-void frictional_rows(RowWriter& w, std::size_t columns, std::size_t i, const Ball* partner,
-                     std::size_t j, const Vec3& normal, double radius_i, double upper,
-                     std::uint64_t contact, const SettleOptions& options,
-                     std::vector<char>& turns) {
-    const auto edges = coulomb_pyramid(normal, *options.friction);
-    for (std::size_t k = 0; k < edges.size(); ++k) {
-        const Vec3& edge = edges[k];
-        const Vec3 moment = normal.cross(edge);
-        w.add(columns * i, -edge);
-        w.add(columns * i + kMoves, 2.0 * radius_i * moment);
-        if (partner != nullptr) {
-            w.add(columns * j, edge);
-            w.add(columns * j + kMoves, 2.0 * partner->r * moment);
-        }
-        w.close(upper, {contact, static_cast<std::uint32_t>(k)});
-    }
-    turns[i] = 1;
-    if (partner != nullptr) {
-        turns[j] = 1;
-    }
-}
-
-Step build_step(const std::vector<Ball>& balls, const NeighbourList& list, const Container& box,
-                double trust, const std::vector<double>& weight, const SettleOptions& options) {
-    Step st;
-    RowWriter w{st};
-    const std::size_t n = balls.size();
-    const std::size_t columns = columns_per_sphere(options);
-    const double cutoff = 2.0 * std::sqrt(3.0) * trust;
-    std::vector<char> turns(n, 0);  // spheres with a frictional contact may turn
-    for (std::size_t i = 0; i < n; ++i) {
-        for (const std::uint32_t j : list.of(i)) {
-            double dx = balls[j].x - balls[i].x;
-            double dz = balls[j].z - balls[i].z;
-            box.to_nearest_image(dx, dz);
-            const Vec3 d(dx, balls[j].y - balls[i].y, dz);
-            const double dist = d.norm();
-            const double gap = dist - balls[i].r - balls[j].r;
-            if (gap >= cutoff || dist == 0.0) {
-                continue;
-            }
-            const RowKey key{contact_key(i, j, Partner::Sphere), kNormalRow};
-            if (options.friction && gap <= trust) {
-                frictional_rows(w, columns, i, &balls[j], j, -d / dist, balls[i].r, gap / trust,
-                                key.contact, options, turns);
-                continue;
-            }
-            w.add(columns * i, d / dist);
-            w.add(columns * j, -d / dist);
-            w.close(gap / trust, key);
-        }
-    }
-    st.col_lower.assign(columns * n, -1.0);
-    st.col_upper.assign(columns * n, 1.0);
-    st.objective.assign(columns * n, 0.0);
-    const auto clamp = [&](std::size_t col, double lo, double hi) {
-        st.col_upper[col] = std::min(1.0, hi / trust);
-        st.col_lower[col] = std::min(std::max(-1.0, lo / trust), st.col_upper[col]);  // rounding
-    };
-    for (std::size_t i = 0; i < n; ++i) {
-        const Ball& b = balls[i];
-        const std::size_t c = columns * i;
-        if (!box.periodic) {
-            clamp(c, box.x_min + b.r - b.x, box.x_max - b.r - b.x);
-            clamp(c + 2, box.z_min + b.r - b.z, box.z_max - b.r - b.z);
-        }
-        clamp(c + 1, box.floor + b.r - b.y, 1e300);
-        st.objective[c + 1] = weight[i];
-        if (!options.friction) {
-            continue;
-        }
-        for (const auto& [gap, normal, wall] : wall_gaps(Vec3(b.x, b.y, b.z), b.r, box)) {
-            if (gap <= trust) {
-                frictional_rows(w, columns, i, nullptr, 0, normal, b.r, std::max(gap, 0.0) / trust,
-                                contact_key(i, 0, wall), options, turns);
-            }
-        }
-    }
-    for (std::size_t i = 0; options.friction && i < n; ++i) {
-        for (std::size_t a = kMoves; a < columns && turns[i] == 0; ++a) {
-            st.col_lower[columns * i + a] = 0.0;  // no contact to turn against: held still
-            st.col_upper[columns * i + a] = 0.0;
-        }
-    }
-    return st;
-}
-
-/// The step with each move u = p − q split into p, q ≥ 0, both at cost penalty·wᵢ (wᵢ the
-/// sphere's weight) beside u's own: a move that lowers no energy costs penalty·wᵢ·|u| and
-/// is not taken. Columns 2k and 2k + 1 are u_k's p and q.
-Step split_moves(const Step& st, double penalty, const std::vector<double>& weight,
-                 std::size_t columns) {
-    Step out;
-    out.row_upper = st.row_upper;
-    out.row_key = st.row_key;
-    for (std::size_t e = 0; e < st.element.size(); ++e) {
-        for (const int half : {0, 1}) {
-            out.row_index.push_back(st.row_index[e]);
-            out.col_index.push_back(2 * st.col_index[e] + half);
-            out.element.push_back(half == 0 ? st.element[e] : -st.element[e]);
-        }
-    }
-    for (std::size_t k = 0; k < st.objective.size(); ++k) {
-        const double lo = st.col_lower[k];
-        const double hi = st.col_upper[k];
-        out.col_lower.insert(out.col_lower.end(), {std::max(0.0, lo), std::max(0.0, -hi)});
-        out.col_upper.insert(out.col_upper.end(), {std::max(0.0, hi), std::max(0.0, -lo)});
-        const double cost = penalty * weight[k / columns];
-        out.objective.insert(out.objective.end(),
-                             {st.objective[k] + cost, -st.objective[k] + cost});
-    }
-    return out;
-}
 
 /// Sphere i's scaled displacement from the LP's columns.
 std::array<double, 3> displacement(const std::vector<double>& u, std::size_t i,
@@ -353,6 +177,159 @@ std::vector<ContactForce> lp_forces(const ClpSimplex& model, const Step& st) {
     return forces;
 }
 
+/// Throws std::invalid_argument on a diameter, trust region or friction out of range.
+void check_settle_arguments(double diameter, const SettleOptions& options) {
+    if (!(diameter > 0.0) || !(options.trust_min > 0.0) ||
+        !(options.trust_start >= options.trust_min) ||
+        !(options.trust_max >= options.trust_start) ||
+        (options.friction && !(*options.friction >= 0.0 && std::isfinite(*options.friction)))) {
+        throw std::invalid_argument("settle_hard_spheres: bad diameter, trust region or friction");
+    }
+}
+
+/// The pack in units of d: its spheres, their weights (2r)³ and the container.
+struct ScaledPack {
+    std::vector<Ball> balls;
+    std::vector<double> weight;
+    Container box;
+};
+
+/// `particles` and `container` in units of `diameter`.
+ScaledPack scaled_pack(const std::vector<Particle>& particles, const Container& container,
+                       double diameter) {
+    const std::size_t n = particles.size();
+    ScaledPack pack{std::vector<Ball>(n), std::vector<double>(n),
+                    Container{container.x_min / diameter, container.x_max / diameter,
+                              container.z_min / diameter, container.z_max / diameter,
+                              container.floor / diameter, container.periodic}};
+    for (std::size_t i = 0; i < n; ++i) {
+        const Particle& p = particles[i];
+        pack.balls[i] = {p.center.x() / diameter, p.center.y() / diameter, p.center.z() / diameter,
+                         p.radius / diameter};
+        pack.weight[i] = std::pow(2.0 * pack.balls[i].r, 3);
+    }
+    return pack;
+}
+
+/// The largest trust region: `trust_max`, and with periodic sides below
+/// (period/2 − 2·r_max)/(2√3), since a pair's rows come from its nearest image alone, so no
+/// other image may come within a step's reach 2·r_max + 2√3·s.
+double largest_trust(const ScaledPack& pack, double trust_max) {
+    if (!pack.box.periodic) {
+        return trust_max;
+    }
+    double r_max = 0.0;
+    for (const Ball& b : pack.balls) {
+        r_max = std::max(r_max, b.r);
+    }
+    const double period =
+        std::min(pack.box.x_max - pack.box.x_min, pack.box.z_max - pack.box.z_min);
+    return std::min(trust_max, (0.5 * period - 2.0 * r_max) / (2.0 * std::sqrt(3.0)));
+}
+
+/// The step's moves `u` when no pair can meet: each sphere falls as far as it may; a sphere
+/// resting on the floor carries its weight there (frictionless forces only).
+void free_fall_moves(const Step& built, std::size_t columns, const ScaledPack& pack,
+                     const SettleOptions& options, std::vector<double>& u, Basis& basis,
+                     SettleStats& stats) {
+    const std::size_t n = pack.balls.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        u[columns * i + 1] = built.col_lower[columns * i + 1];
+    }
+    basis.columns.clear();
+    stats.forces.clear();
+    for (std::size_t i = 0; i < n && !options.friction; ++i) {
+        if (built.col_lower[columns * i + 1] > -1.0) {
+            stats.forces.push_back({i, 0, Partner::Floor, pack.weight[i]});
+        }
+    }
+}
+
+/// The step's moves `u` from the LP `st` (warm-started from `basis`, which keeps the new
+/// basis), with a split move's two halves joined under `penalty` > 0, and the frictionless
+/// contact forces; false when the solver fails.
+bool lp_moves(ClpSimplex& model, const Step& st, std::size_t count, double penalty,
+              const SettleOptions& options, std::vector<double>& u, Basis& basis,
+              SettleStats& stats) {
+    if (!solve_step(model, st, basis, Start::Warm, stats)) {
+        return false;
+    }
+    if (penalty > 0.0) {
+        const double* x = model.primalColumnSolution();
+        for (std::size_t k = 0; k < count; ++k) {
+            u[k] = x[2 * k] - x[2 * k + 1];
+        }
+    } else {
+        std::copy_n(model.primalColumnSolution(), count, u.begin());
+    }
+    save_basis(model, st, basis);
+    if (!options.friction && penalty == 0.0) {
+        stats.forces = lp_forces(model, st);
+    }
+    return true;
+}
+
+/// Moves the spheres by trust·u; returns the energy dropped and counts in `falling` the
+/// spheres held by the trust region on their way down.
+double apply_moves(ScaledPack& pack, const std::vector<double>& u, std::size_t columns,
+                   double trust, std::size_t& falling) {
+    double drop = 0.0;
+    for (std::size_t i = 0; i < pack.balls.size(); ++i) {
+        const auto [ux, uy, uz] = displacement(u, i, columns);
+        pack.balls[i].x += trust * ux;
+        pack.balls[i].y += trust * uy;
+        pack.balls[i].z += trust * uz;
+        drop -= pack.weight[i] * trust * uy;
+        falling += uy <= -1.0 + 1e-6 ? 1 : 0;
+    }
+    return drop;
+}
+
+/// The trust region of the settling's steps: doubled while many spheres fall freely or after
+/// kSteadySteps steady steps, quartered when a step stalls.
+class TrustRegion {
+  public:
+    TrustRegion(double start, double largest) : trust_(std::min(start, largest)), max_(largest) {}
+
+    double size() const { return trust_; }
+
+    /// The next step's region after one that dropped `drop` with `falling` of `n` spheres
+    /// falling freely (unchanged after a still step).
+    void update(bool still, std::size_t falling, std::size_t n, double drop) {
+        if (still) {
+            // No move lowers the energy by more than it costs: the end.
+        } else if (static_cast<double>(falling) > kSlidingShare * static_cast<double>(n)) {
+            trust_ = std::min(2.0 * trust_, max_);
+            steady_ = 0;
+        } else if (drop < kStallRate * trust_) {
+            trust_ /= 4.0;
+            steady_ = 0;
+        } else if (++steady_ >= kSteadySteps) {
+            trust_ = std::min(2.0 * trust_, max_);
+            steady_ = 0;
+        }
+    }
+
+  private:
+    double trust_;
+    double max_;
+    int steady_ = 0;  // steps in a row at this trust region (kSteadySteps)
+};
+
+/// Writes the settled positions back (wrapped when periodic) and the largest move, in d.
+void write_back(const ScaledPack& pack, const std::vector<Ball>& start, const Container& container,
+                double diameter, std::vector<Particle>& particles, SettleStats& stats) {
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const Ball& b = pack.balls[i];
+        const double dx = b.x - start[i].x;
+        const double dy = b.y - start[i].y;
+        const double dz = b.z - start[i].z;
+        stats.move_max = std::max(stats.move_max, std::sqrt(dx * dx + dy * dy + dz * dz));
+        particles[i].center =
+            container.wrapped(Vec3(b.x * diameter, b.y * diameter, b.z * diameter));
+    }
+}
+
 }  // namespace
 
 bool lp_solver_available() {
@@ -361,126 +338,50 @@ bool lp_solver_available() {
 
 SettleStats settle_hard_spheres(std::vector<Particle>& particles, const Container& container,
                                 double diameter, const SettleOptions& options) {
-    if (!(diameter > 0.0) || !(options.trust_min > 0.0) ||
-        !(options.trust_start >= options.trust_min) ||
-        !(options.trust_max >= options.trust_start) ||
-        (options.friction && !(*options.friction >= 0.0 && std::isfinite(*options.friction)))) {
-        throw std::invalid_argument("settle_hard_spheres: bad diameter, trust region or friction");
-    }
+    check_settle_arguments(diameter, options);
     SettleStats stats;
     const std::size_t n = particles.size();
     if (n == 0) {
         return stats;
     }
-    // Everything in units of d.
-    std::vector<Ball> balls(n);
-    std::vector<double> weight(n);
-    const Container box{container.x_min / diameter, container.x_max / diameter,
-                        container.z_min / diameter, container.z_max / diameter,
-                        container.floor / diameter, container.periodic};
-    for (std::size_t i = 0; i < n; ++i) {
-        const Particle& p = particles[i];
-        balls[i] = {p.center.x() / diameter, p.center.y() / diameter, p.center.z() / diameter,
-                    p.radius / diameter};
-        weight[i] = std::pow(2.0 * balls[i].r, 3);
-    }
-    const std::vector<Ball> start = balls;
+    ScaledPack pack = scaled_pack(particles, container, diameter);  // in units of d
+    const std::vector<Ball> start = pack.balls;
     const std::size_t columns = columns_per_sphere(options);
     const double penalty = options.friction ? kNeutralPenalty : 0.0;
-    // With periodic sides a pair's rows come from its nearest image alone, so no other image
-    // may come within a step's reach 2·r_max + 2√3·s: s stays below (period/2 − 2·r_max)/(2√3).
-    double trust_max = options.trust_max;
-    if (box.periodic) {
-        double r_max = 0.0;
-        for (const Ball& b : balls) {
-            r_max = std::max(r_max, b.r);
-        }
-        const double period = std::min(box.x_max - box.x_min, box.z_max - box.z_min);
-        trust_max = std::min(trust_max, (0.5 * period - 2.0 * r_max) / (2.0 * std::sqrt(3.0)));
-    }
-    double trust = std::min(options.trust_start, trust_max);
-    int steady = 0;  // steps in a row at this trust region (kSteadySteps)
+    TrustRegion trust(options.trust_start, largest_trust(pack, options.trust_max));
     NeighbourList list;
     Basis basis;
     ClpSimplex model;
     model.setLogLevel(0);
     while (stats.iterations < options.max_iterations) {
-        list.build(balls, 2.0 * std::sqrt(3.0) * trust, box);
-        const Step built = build_step(balls, list, box, trust, weight, options);
-        const Step st = penalty > 0.0 ? split_moves(built, penalty, weight, columns) : built;
+        list.build(pack.balls, 2.0 * std::sqrt(3.0) * trust.size(), pack.box);
+        const Step built =
+            build_step(pack.balls, list, pack.box, trust.size(), pack.weight, options);
+        const Step st = penalty > 0.0 ? split_moves(built, penalty, pack.weight, columns) : built;
         std::vector<double> u(columns * n);
-        if (st.row_key.empty()) {  // no pair can meet: each sphere falls as far as it may
-            for (std::size_t i = 0; i < n; ++i) {
-                u[columns * i + 1] = built.col_lower[columns * i + 1];
-            }
-            basis.columns.clear();
-            stats.forces.clear();  // a sphere resting on the floor carries its weight there
-            for (std::size_t i = 0; i < n && !options.friction; ++i) {
-                if (built.col_lower[columns * i + 1] > -1.0) {
-                    stats.forces.push_back({i, 0, Partner::Floor, weight[i]});
-                }
-            }
-        } else {
-            if (!solve_step(model, st, basis, Start::Warm, stats)) {
-                stats.solver_failed = true;  // the pack is left as the last step made it
-                break;
-            }
-            if (penalty > 0.0) {
-                const double* x = model.primalColumnSolution();
-                for (std::size_t k = 0; k < columns * n; ++k) {
-                    u[k] = x[2 * k] - x[2 * k + 1];
-                }
-            } else {
-                std::copy_n(model.primalColumnSolution(), columns * n, u.begin());
-            }
-            save_basis(model, st, basis);
-            if (!options.friction && penalty == 0.0) {
-                stats.forces = lp_forces(model, st);
-            }
+        if (st.row_key.empty()) {
+            free_fall_moves(built, columns, pack, options, u, basis, stats);
+        } else if (!lp_moves(model, st, columns * n, penalty, options, u, basis, stats)) {
+            stats.solver_failed = true;  // the pack is left as the last step made it
+            break;
         }
         ++stats.iterations;
-        double drop = 0.0;
-        std::size_t falling = 0;  // spheres held by the trust region on their way down
-        for (std::size_t i = 0; i < n; ++i) {
-            const auto [ux, uy, uz] = displacement(u, i, columns);
-            balls[i].x += trust * ux;
-            balls[i].y += trust * uy;
-            balls[i].z += trust * uz;
-            drop -= weight[i] * trust * uy;
-            falling += uy <= -1.0 + 1e-6 ? 1 : 0;
-        }
+        std::size_t falling = 0;
+        const double drop = apply_moves(pack, u, columns, trust.size(), falling);
         stats.energy_drop += drop;
         const bool still =
             penalty > 0.0 && std::all_of(u.begin(), u.end(), [](double v) { return v == 0.0; });
-        if (still) {
-            // No move lowers the energy by more than it costs: the end.
-        } else if (static_cast<double>(falling) > kSlidingShare * static_cast<double>(n)) {
-            trust = std::min(2.0 * trust, trust_max);
-            steady = 0;
-        } else if (drop < kStallRate * trust) {
-            trust /= 4.0;
-            steady = 0;
-        } else if (++steady >= kSteadySteps) {
-            trust = std::min(2.0 * trust, trust_max);
-            steady = 0;
-        }
+        trust.update(still, falling, n, drop);
         if (options.progress) {
-            options.progress(stats.iterations, trust);
+            options.progress(stats.iterations, trust.size());
         }
-        if (still || trust < options.trust_min) {
+        if (still || trust.size() < options.trust_min) {
             stats.converged = true;
             stats.ended_still = still;
             break;
         }
     }
-    for (std::size_t i = 0; i < n; ++i) {
-        const double dx = balls[i].x - start[i].x;
-        const double dy = balls[i].y - start[i].y;
-        const double dz = balls[i].z - start[i].z;
-        stats.move_max = std::max(stats.move_max, std::sqrt(dx * dx + dy * dy + dz * dz));
-        particles[i].center = container.wrapped(
-            Vec3(balls[i].x * diameter, balls[i].y * diameter, balls[i].z * diameter));
-    }
+    write_back(pack, start, container, diameter, particles, stats);
     return stats;
 }
 

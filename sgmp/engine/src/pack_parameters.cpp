@@ -1,5 +1,7 @@
 #include "sgmp/engine/pack_parameters.hpp"
 
+#include "pack_parameter_rows.hpp"
+
 #include "sgmp/pack/size_mode_rows.hpp"
 
 #include "sgmp/engine/hard_sphere_settle.hpp"
@@ -17,58 +19,7 @@
 namespace sgmp::engine {
 namespace {
 
-using Row = PackParameter;
-using Check = std::function<void(const PackRequest&, const PackCheckContext&)>;
-
-[[noreturn]] void refuse(const char* name, std::string value, std::string rule) {
-    throw ParameterError(name, std::move(value), std::move(rule));
-}
-
-template <class Member>
-Row number(std::string name, std::string group, Member member, std::string help, Check check) {
-    return number_row<PackRequest, PackCheckContext>(std::move(name), std::move(group), member,
-                                                     std::move(help), std::move(check));
-}
-
-template <class Member>
-Row whole(std::string name, std::string group, Member member, std::string help, Check check) {
-    return whole_row<PackRequest, PackCheckContext>(std::move(name), std::move(group), member,
-                                                    std::move(help), std::move(check));
-}
-
-/// A member holding one name of a name table `table()` (parameter_table.hpp).
-template <class Member, class Table>
-Row choice(std::string name, std::string group, Member member, Table table, std::string help) {
-    return choice_row<PackRequest, PackCheckContext>(std::move(name), std::move(group), member,
-                                                     table, std::move(help));
-}
-
-bool relaxed(const PackRequest& r) {
-    return r.relax.mode != RelaxMode::None;
-}
-bool frictional(const PackRequest& r) {
-    return r.relax.mode == RelaxMode::Frictional;
-}
-
-/// Checks `low ≤ value ≤ high` (NaN fails).
-template <class Member>
-Check in_range(const char* name, Member member, double low, double high, std::string rule) {
-    return [=](const PackRequest& r, const PackCheckContext&) {
-        const double v = static_cast<double>(member(r));
-        if (!(v >= low) || !(v <= high)) {
-            refuse(name, format_number(v), rule);
-        }
-    };
-}
-
-template <class Member>
-Check at_least_one(const char* name, Member member) {
-    return [=](const PackRequest& r, const PackCheckContext&) {
-        if (member(r) < 1) {
-            refuse(name, std::to_string(member(r)), "must be at least 1");
-        }
-    };
-}
+using namespace pack_rows;
 
 bool is_blend(const PackRequest& r) {
     return std::any_of(r.size_modes.begin(), r.size_modes.end(), [&](const SizeMode& m) {
@@ -140,44 +91,8 @@ void check_fall_step(const PackRequest& r, const PackCheckContext& context) {
     }
 }
 
-void check_relax_stages(const PackRequest& r, const PackCheckContext&) {
-    const RelaxSchedule x = relax_schedule(r.relax);
-    if (x.stages < 1 || x.stages > 10) {
-        refuse("relax_stages", std::to_string(x.stages), "must be 1 to 10");
-    }
-    if (!(x.stiffness * std::pow(r.relax.stiffness_factor, x.stages - 1) <= 1e12)) {
-        refuse("relax_stages", std::to_string(x.stages),
-               "the last stage's stiffness must not exceed 1e12 m*g/d");
-    }
-}
-
-/// A row of the stiffness schedule (relax_schedule): unset by default, so that each mode
-/// runs its own; `member` reaches the optional the request holds (the number or whole-number
-/// row's parse and rule), and the header records the value the relaxation runs (`effective`).
-template <class T, class Member>
-Row scheduled(std::string name, Member member, std::function<T(const RelaxSchedule&)> effective,
-              std::string help, Check check) {
-    Row row = [&] {
-        if constexpr (std::is_integral_v<T>) {
-            return whole(std::move(name), "relax", member, std::move(help), std::move(check));
-        } else {
-            return number(std::move(name), "relax", member, std::move(help), std::move(check));
-        }
-    }();
-    row.format = [effective](const PackRequest& r) {
-        const T value = effective(relax_schedule(r.relax));
-        if constexpr (std::is_integral_v<T>) {
-            return std::to_string(value);
-        } else {
-            return format_number(value);
-        }
-    };
-    row.unset_by_default = true;
-    return row;
-}
-
-std::vector<Row> count_and_request_rows() {
-    std::vector<Row> rows;
+/// The particle count's row: required, 1 to kMaxCount.
+Row count_row() {
     Row count = whole(
         "count", "count", [](auto& r) -> auto& { return r.count; },
         "number of particles N (1 to " + std::to_string(kMaxCount) + ")",
@@ -189,12 +104,11 @@ std::vector<Row> count_and_request_rows() {
         });
     count.rule = "must be a whole number between 1 and " + std::to_string(kMaxCount);
     count.required = true;
-    rows.push_back(std::move(count));
-    rows.push_back(number(
-        "phi_target", "request", [](auto& r) -> auto& { return r.phi_target; },
-        "target packing fraction phi* in (0, 0.74048] for equal spheres, (0, 1) for a blend of "
-        "several sizes; sets the diameter by (N/3)(pi/6)d^3 = phi*",
-        check_phi_target));
+    return count;
+}
+
+/// The starting arrangement's row: required, one of the four.
+Row arrangement_row() {
     Row arrangement;
     arrangement.name = "arrangement";
     arrangement.group = "request";
@@ -211,26 +125,11 @@ std::vector<Row> count_and_request_rows() {
     };
     arrangement.format = [](const PackRequest& r) { return std::string(to_string(r.arrangement)); };
     arrangement.required = true;
-    rows.push_back(std::move(arrangement));
-    rows.push_back(seed_row<PackRequest, PackCheckContext>(
-        "request", "random seed (colours, loose-random positions, random choices)"));
-    Row modes = size_modes_row<PackRequest, PackCheckContext>(
-        "request",
-        "particle sizes as relative-diameter:fraction[:density] items, e.g. 1:0.7,0.5:0.3 "
-        "(species 1, 2, ... in this order; fractions in --fraction-basis); the scale s solves "
-        "(N/3)(pi/6) sum n_i (a_i s)^3 = phi* with number fractions n_i",
-        [](auto& r) -> auto& { return r.size_modes; });
-    modes.check = check_size_modes;
-    rows.push_back(std::move(modes));
-    rows.push_back(size_distribution_row<PackRequest, PackCheckContext>(
-        "request",
-        "size distribution as a CSV file: header diameter,fraction[,density], one row per "
-        "species (diameters in any unit; species 1, 2, ... in file order); or "
-        "lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]]: ln D normal with that median and sd, cut "
-        "at the quantiles QLO, QHI (default 0.01, 0.99) into CLASSES (default 10) species of "
-        "equal fraction, each of its class's median diameter",
-        [](auto& r) -> auto& { return r.size_modes; },
-        [](auto& r) -> auto& { return r.size_distribution; }));
+    return arrangement;
+}
+
+/// The largest diameter's row: a physical length, recorded when given.
+Row largest_diameter_row() {
     Row largest;
     largest.name = "largest_diameter";
     largest.group = "request";
@@ -250,7 +149,30 @@ std::vector<Row> count_and_request_rows() {
     largest.format = [](const PackRequest& r) { return r.largest_diameter; };
     largest.recorded = [](const PackRequest& r) { return !r.largest_diameter.empty(); };
     largest.unset_by_default = true;
-    rows.push_back(std::move(largest));
+    return largest;
+}
+
+/// The rows of the particles' sizes: modes or a distribution, the largest diameter, the
+/// fractions' basis and a blend's drop order.
+void add_size_rows(std::vector<Row>& rows) {
+    Row modes = size_modes_row<PackRequest, PackCheckContext>(
+        "request",
+        "particle sizes as relative-diameter:fraction[:density] items, e.g. 1:0.7,0.5:0.3 "
+        "(species 1, 2, ... in this order; fractions in --fraction-basis); the scale s solves "
+        "(N/3)(pi/6) sum n_i (a_i s)^3 = phi* with number fractions n_i",
+        [](auto& r) -> auto& { return r.size_modes; });
+    modes.check = check_size_modes;
+    rows.push_back(std::move(modes));
+    rows.push_back(size_distribution_row<PackRequest, PackCheckContext>(
+        "request",
+        "size distribution as a CSV file: header diameter,fraction[,density], one row per "
+        "species (diameters in any unit; species 1, 2, ... in file order); or "
+        "lognormal:MEDIAN:SIGMA[:CLASSES[:QLO:QHI]]: ln D normal with that median and sd, cut "
+        "at the quantiles QLO, QHI (default 0.01, 0.99) into CLASSES (default 10) species of "
+        "equal fraction, each of its class's median diameter",
+        [](auto& r) -> auto& { return r.size_modes; },
+        [](auto& r) -> auto& { return r.size_distribution; }));
+    rows.push_back(largest_diameter_row());
     Row basis = choice(
         "fraction_basis", "request", [](auto& r) -> auto& { return r.fraction_basis; },
         [] { return fraction_bases(); },
@@ -271,6 +193,21 @@ std::vector<Row> count_and_request_rows() {
         "shuffled (a random permutation)");
     order.recorded = [](const PackRequest& r) { return r.size_modes.size() > 1; };
     rows.push_back(std::move(order));
+}
+
+/// The request's rows: count, target, arrangement, seed, sizes and sides.
+std::vector<Row> count_and_request_rows() {
+    std::vector<Row> rows;
+    rows.push_back(count_row());
+    rows.push_back(number(
+        "phi_target", "request", [](auto& r) -> auto& { return r.phi_target; },
+        "target packing fraction phi* in (0, 0.74048] for equal spheres, (0, 1) for a blend of "
+        "several sizes; sets the diameter by (N/3)(pi/6)d^3 = phi*",
+        check_phi_target));
+    rows.push_back(arrangement_row());
+    rows.push_back(seed_row<PackRequest, PackCheckContext>(
+        "request", "random seed (colours, loose-random positions, random choices)"));
+    add_size_rows(rows);
     Row sides = choice(
         "sides", "request", [](auto& r) -> auto& { return r.sides; }, [] { return sides_names(); },
         "the container's lateral sides: walls (the thesis') or periodic (x and z periodic, the "
@@ -368,136 +305,6 @@ void add_protocol_rows(std::vector<Row>& rows) {
         "bound on sweep-and-move cycles per particle (>= 1); a particle reaching it rests where "
         "its last fall left it",
         at_least_one("max_moves", [](const PackRequest& r) { return r.protocol.max_moves; })));
-}
-
-void add_relax_rows(std::vector<Row>& rows) {
-    const std::string g = "relax";
-    const std::size_t first = rows.size();
-    Row relax = choice(
-        "relax", g, [](auto& r) -> auto& { return r.relax.mode; }, [] { return relax_modes(); },
-        "after deposition: none | frictionless (relax the whole pack under gravity to an "
-        "equilibrium of frictionless soft spheres by FIRE energy minimisation, then settle it as "
-        "hard spheres into a certified equilibrium by linear programming; about 5 s at N = 1002, "
-        "2 min at N = 3000) | frictional (the same with Coulomb friction at --relax-friction: "
-        "tangential springs capped at mu*F_n, then a frictional hard-sphere settling into a "
-        "certified equilibrium; slower still)");
-    relax.check = [](const PackRequest& r, const PackCheckContext&) {
-        if (r.relax.mode != RelaxMode::None && !lp_solver_available()) {
-            refuse("relax", std::string(to_string(r.relax.mode)),
-                   "needs COIN-OR CLP, which this build lacks (SGMP_WITH_CLP=OFF)");
-        }
-    };
-    rows.push_back(std::move(relax));
-    rows.push_back(scheduled<double>(
-        "relax_stiffness", [](auto& r) -> auto& { return r.relax.stiffness; },
-        [](const RelaxSchedule& x) { return x.stiffness; },
-        "contact stiffness k of the first relaxation stage in m*g/d (a contact carrying one "
-        "weight m*g overlaps by d/k); default 2e4 frictionless, 2e3 frictional",
-        in_range(
-            "relax_stiffness",
-            [](const PackRequest& r) { return relax_schedule(r.relax).stiffness; }, 1e2, 1e12,
-            "must be in [100, 1e12] (m*g/d)")));
-    rows.push_back(number(
-        "relax_stiffness_factor", g, [](auto& r) -> auto& { return r.relax.stiffness_factor; },
-        "each later relaxation stage multiplies the stiffness by this factor",
-        in_range(
-            "relax_stiffness_factor", [](const PackRequest& r) { return r.relax.stiffness_factor; },
-            1.0, 1e6, "must be in [1, 1e6]")));
-    rows.push_back(scheduled<int>(
-        "relax_stages", [](auto& r) -> auto& { return r.relax.stages; },
-        [](const RelaxSchedule& x) { return x.stages; },
-        "number of stiffness stages (1 to 10); default 1 frictionless (run to convergence), 5 "
-        "frictional",
-        check_relax_stages));
-    rows.push_back(number(
-        "relax_shell", g, [](auto& r) -> auto& { return r.relax.shell; },
-        "contact shell s in [0, 0.01]: the soft spheres are (1+s) times the real ones, so soft "
-        "contacts end as gaps of at most s*(ri+rj); 0: contacts end touching",
-        in_range(
-            "relax_shell", [](const PackRequest& r) { return r.relax.shell; }, 0.0, 0.01,
-            "must be in [0, 0.01]")));
-    rows.push_back(number(
-        "relax_force_tolerance", g, [](auto& r) -> auto& { return r.relax.force_tolerance; },
-        "a stage has converged when no sphere feels a net force above this, in m*g (m the mass "
-        "of a sphere of relative size 1)",
-        [](const PackRequest& r, const PackCheckContext&) {
-            const double t = r.relax.force_tolerance;
-            if (!(t > 0.0) || !(t <= 1.0)) {
-                refuse("relax_force_tolerance", format_number(t), "must be in (0, 1] (m*g)");
-            }
-        }));
-    rows.push_back(scheduled<double>(
-        "relax_time", [](auto& r) -> auto& { return r.relax.time; },
-        [](const RelaxSchedule& x) { return x.time; },
-        "bound on the first stage's simulated time, in units of sqrt(H/g) (H: the pack's height "
-        "above the floor); default 200 frictionless, 5 frictional",
-        [](const PackRequest& r, const PackCheckContext&) {
-            const double time = relax_schedule(r.relax).time;
-            if (!(time > 0.0) || !(time <= 1e4)) {
-                refuse("relax_time", format_number(time), "must be in (0, 10000]");
-            }
-        }));
-    rows.push_back(number(
-        "relax_crossings", g, [](auto& r) -> auto& { return r.relax.crossings; },
-        "bound on each later stage's steps, in units of H/d (the elastic relaxation crosses the "
-        "pack's height); the pack records the force left (relax_force_max)",
-        [](const PackRequest& r, const PackCheckContext&) {
-            if (!(r.relax.crossings > 0.0) || !(r.relax.crossings <= 1e4)) {
-                refuse("relax_crossings", format_number(r.relax.crossings),
-                       "must be in (0, 10000]");
-            }
-        }));
-    rows.push_back(whole(
-        "relax_settle_limit", g, [](auto& r) -> auto& { return r.relax.settle_limit; },
-        "bound on the LP iterations of the hard-sphere settling that ends the relaxation (1 to "
-        "1000000; --relax-settle dynamics: hundreds of time steps); a pack that reaches it is "
-        "usually not a certified equilibrium",
-        [](const PackRequest& r, const PackCheckContext&) {
-            if (r.relax.settle_limit < 1 || r.relax.settle_limit > 1000000) {
-                refuse("relax_settle_limit", std::to_string(r.relax.settle_limit),
-                       "must be between 1 and 1000000");
-            }
-        }));
-    for (std::size_t i = first; i < rows.size(); ++i) {
-        rows[i].recorded = relaxed;
-    }
-    Row settle = choice(
-        "relax_settle", g, [](auto& r) -> auto& { return r.relax.settle; },
-        [] { return relax_settles(); },
-        "how --relax settles as hard spheres: lp (sequential linear programming, the default) "
-        "or dynamics (non-smooth contact dynamics, each step's contacts by SSOR-preconditioned "
-        "MPRGP; frictionless: its forces the certificate's witness, 2-3x slower than lp at "
-        "N = 1002, does not converge at N = 3000; frictional: Coulomb pyramid rows, stalls "
-        "uncertified at N = 150: sgmp/engine/docs/relax-certified.md)");
-    settle.recorded = [](const PackRequest& r) {
-        return r.relax.mode != RelaxMode::None && r.relax.settle != RelaxSettle::Lp;
-    };
-    settle.check = [](const PackRequest& r, const PackCheckContext&) {
-        if (r.relax.settle == RelaxSettle::Dynamics && r.relax.mode == RelaxMode::None) {
-            refuse("relax_settle", "dynamics", "needs --relax frictionless or frictional");
-        }
-    };
-    rows.push_back(std::move(settle));
-    Row friction = number(
-        "relax_friction", g, [](auto& r) -> auto& { return r.relax.friction; },
-        "sliding friction mu of --relax frictional (pairs and walls), in [0, 10]; the DEM "
-        "frictional class's own mu, untuned",
-        in_range(
-            "relax_friction", [](const PackRequest& r) { return r.relax.friction; }, 0.0, 10.0,
-            "must be in [0, 10]"));
-    friction.recorded = frictional;
-    rows.push_back(std::move(friction));
-    Row tangential = number(
-        "relax_tangential_ratio", g, [](auto& r) -> auto& { return r.relax.tangential_ratio; },
-        "tangential over normal contact stiffness of --relax frictional, in (0, 1]",
-        [](const PackRequest& r, const PackCheckContext&) {
-            const double t = r.relax.tangential_ratio;
-            if (!(t > 0.0) || !(t <= 1.0)) {
-                refuse("relax_tangential_ratio", format_number(t), "must be in (0, 1]");
-            }
-        });
-    tangential.recorded = frictional;
-    rows.push_back(std::move(tangential));
 }
 
 std::vector<Row> make_rows() {

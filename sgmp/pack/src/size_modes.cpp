@@ -178,13 +178,129 @@ std::optional<std::pair<double, std::string>> parse_physical_length(std::string_
     return std::pair{*value, unit};
 }
 
-std::vector<SizeMode> parse_size_distribution_csv(std::string_view text, const std::string& source,
-                                                  std::string* largest_diameter) {
-    std::string diameter_unit;
-    std::vector<std::string> header;
+namespace {
+
+/// The columns of a size-distribution CSV's header: their positions (−1: absent) and the
+/// diameter's unit when a diameter_UNIT column states it.
+struct DistributionColumns {
+    std::size_t count = 0;
     int diameter = -1;
     int fraction = -1;
     int density = -1;
+    std::string diameter_unit;
+};
+
+/// The header line `fields` (line `number` of `source`) as columns; throws InputError on an
+/// unknown or repeated column, a unit not in length_units(), or no diameter or fraction.
+DistributionColumns distribution_columns(const std::vector<std::string>& fields,
+                                         const std::string& source, std::size_t number) {
+    DistributionColumns columns;
+    columns.count = fields.size();
+    for (std::size_t c = 0; c < fields.size(); ++c) {
+        std::string name = fields[c];
+        if (name.rfind("diameter_", 0) == 0) {  // diameter_UNIT: the unit stated
+            columns.diameter_unit = name.substr(9);
+            if (!metres_per_unit(columns.diameter_unit)) {
+                throw InputError(source, number,
+                                 "column '" + name + "': the diameter's unit must be one of " +
+                                     std::string(length_units()));
+            }
+            name = "diameter";
+        }
+        int* slot = name == "diameter"   ? &columns.diameter
+                    : name == "fraction" ? &columns.fraction
+                    : name == "density"  ? &columns.density
+                                         : nullptr;
+        if (slot == nullptr) {
+            throw InputError(source, number,
+                             "unknown column '" + name +
+                                 "': the columns are diameter (or diameter_UNIT, UNIT "
+                                 "one of " +
+                                 std::string(length_units()) +
+                                 "), fraction and optionally density");
+        }
+        if (*slot >= 0) {
+            throw InputError(source, number, "names '" + name + "' twice");
+        }
+        *slot = static_cast<int>(c);
+    }
+    if (columns.diameter < 0 || columns.fraction < 0) {
+        throw InputError(source, number,
+                         "the header must name 'diameter' and 'fraction' (and "
+                         "optionally 'density')");
+    }
+    return columns;
+}
+
+/// One species row `fields` (line `number` of `source`) as a mode of its own diameter (not
+/// yet relative); throws InputError on a wrong field count or a value out of range.
+SizeMode distribution_row(const std::vector<std::string>& fields,
+                          const DistributionColumns& columns, const std::string& source,
+                          std::size_t number) {
+    if (fields.size() != columns.count) {
+        throw InputError(source, number,
+                         "has " + std::to_string(fields.size()) + " fields, the header " +
+                             std::to_string(columns.count));
+    }
+    const auto value = [&](int column, const char* what) {
+        const auto v = parse_csv_number<double>(fields[static_cast<std::size_t>(column)]);
+        if (!v) {
+            throw InputError(source, number,
+                             std::string(what) + " '" + fields[static_cast<std::size_t>(column)] +
+                                 "' is not a finite number");
+        }
+        return *v;
+    };
+    SizeMode mode{value(columns.diameter, "diameter"), value(columns.fraction, "fraction"),
+                  std::nullopt};
+    if (!(mode.relative_diameter > 0.0)) {
+        throw InputError(source, number,
+                         "diameter " + format_number(mode.relative_diameter) +
+                             ": a diameter must be greater than 0");
+    }
+    if (mode.fraction < 0.0) {
+        throw InputError(
+            source, number,
+            "fraction " + format_number(mode.fraction) + ": a fraction must not be negative");
+    }
+    if (columns.density >= 0) {
+        mode.density = value(columns.density, "density");
+        if (!(*mode.density > 0.0)) {
+            throw InputError(
+                source, number,
+                "density " + format_number(*mode.density) + ": a density must be greater than 0");
+        }
+    }
+    return mode;
+}
+
+/// The modes relative to the largest diameter (only ratios matter: the largest is 1);
+/// returns that largest diameter. Throws InputError (at line `number`) when there is no
+/// mode or every fraction is 0.
+double make_relative(std::vector<SizeMode>& modes, const std::string& source, std::size_t number) {
+    if (modes.empty()) {
+        throw InputError(source, number, "holds no species row (a header, then one row each)");
+    }
+    double total = 0.0;
+    double largest = 0.0;
+    for (const SizeMode& m : modes) {
+        total += m.fraction;
+        largest = std::max(largest, m.relative_diameter);
+    }
+    if (!(total > 0.0)) {
+        throw InputError(source, number, "every fraction is 0: at least one must be positive");
+    }
+    for (SizeMode& m : modes) {
+        m.relative_diameter /= largest;
+    }
+    return largest;
+}
+
+}  // namespace
+
+std::vector<SizeMode> parse_size_distribution_csv(std::string_view text, const std::string& source,
+                                                  std::string* largest_diameter) {
+    std::optional<DistributionColumns> columns;
     std::vector<SizeMode> modes;
     std::size_t number = 0;
     std::size_t start = 0;
@@ -203,97 +319,15 @@ std::vector<SizeMode> parse_size_distribution_csv(std::string_view text, const s
         if (!fields) {
             throw InputError(source, number, "a quoted field is not closed");
         }
-        if (header.empty()) {
-            header = *fields;
-            for (std::size_t c = 0; c < header.size(); ++c) {
-                std::string name = header[c];
-                if (name.rfind("diameter_", 0) == 0) {  // diameter_UNIT: the unit stated
-                    diameter_unit = name.substr(9);
-                    if (!metres_per_unit(diameter_unit)) {
-                        throw InputError(source, number,
-                                         "column '" + name +
-                                             "': the diameter's unit must be one of " +
-                                             std::string(length_units()));
-                    }
-                    name = "diameter";
-                }
-                int* slot = name == "diameter"   ? &diameter
-                            : name == "fraction" ? &fraction
-                            : name == "density"  ? &density
-                                                 : nullptr;
-                if (slot == nullptr) {
-                    throw InputError(source, number,
-                                     "unknown column '" + name +
-                                         "': the columns are diameter (or diameter_UNIT, UNIT "
-                                         "one of " +
-                                         std::string(length_units()) +
-                                         "), fraction and optionally density");
-                }
-                if (*slot >= 0) {
-                    throw InputError(source, number, "names '" + name + "' twice");
-                }
-                *slot = static_cast<int>(c);
-            }
-            if (diameter < 0 || fraction < 0) {
-                throw InputError(source, number,
-                                 "the header must name 'diameter' and 'fraction' (and "
-                                 "optionally 'density')");
-            }
+        if (!columns) {
+            columns = distribution_columns(*fields, source, number);
             continue;
         }
-        if (fields->size() != header.size()) {
-            throw InputError(source, number,
-                             "has " + std::to_string(fields->size()) + " fields, the header " +
-                                 std::to_string(header.size()));
-        }
-        const auto value = [&](int column, const char* what) {
-            const auto v = parse_csv_number<double>((*fields)[static_cast<std::size_t>(column)]);
-            if (!v) {
-                throw InputError(source, number,
-                                 std::string(what) + " '" +
-                                     (*fields)[static_cast<std::size_t>(column)] +
-                                     "' is not a finite number");
-            }
-            return *v;
-        };
-        SizeMode mode{value(diameter, "diameter"), value(fraction, "fraction"), std::nullopt};
-        if (!(mode.relative_diameter > 0.0)) {
-            throw InputError(source, number,
-                             "diameter " + format_number(mode.relative_diameter) +
-                                 ": a diameter must be greater than 0");
-        }
-        if (mode.fraction < 0.0) {
-            throw InputError(
-                source, number,
-                "fraction " + format_number(mode.fraction) + ": a fraction must not be negative");
-        }
-        if (density >= 0) {
-            mode.density = value(density, "density");
-            if (!(*mode.density > 0.0)) {
-                throw InputError(source, number,
-                                 "density " + format_number(*mode.density) +
-                                     ": a density must be greater than 0");
-            }
-        }
-        modes.push_back(mode);
+        modes.push_back(distribution_row(*fields, *columns, source, number));
     }
-    if (modes.empty()) {
-        throw InputError(source, number, "holds no species row (a header, then one row each)");
-    }
-    double total = 0.0;
-    double largest = 0.0;
-    for (const SizeMode& m : modes) {
-        total += m.fraction;
-        largest = std::max(largest, m.relative_diameter);
-    }
-    if (!(total > 0.0)) {
-        throw InputError(source, number, "every fraction is 0: at least one must be positive");
-    }
-    for (SizeMode& m : modes) {
-        m.relative_diameter /= largest;  // only ratios matter: the largest is 1
-    }
-    if (largest_diameter != nullptr && !diameter_unit.empty()) {
-        *largest_diameter = format_number(largest) + " " + diameter_unit;
+    const double largest = make_relative(modes, source, number);
+    if (largest_diameter != nullptr && columns && !columns->diameter_unit.empty()) {
+        *largest_diameter = format_number(largest) + " " + columns->diameter_unit;
     }
     return modes;
 }

@@ -2,7 +2,7 @@
 /// @file summary_columns.hpp
 /// The metric columns of `sgmp batch`'s summary.csv, drawn from the metric table
 /// (metric_descriptors.hpp): the one list its writer (the measure hook sgmp/app gives the
-/// batch) and its reader (report/precomputed.cpp) share. Each column holds one scalar of a
+/// batch) and its reader (report/batch_summaries.cpp) share. Each column holds one scalar of a
 /// Measurement (measure.hpp), named as in summary.csv and as in `measure`'s metrics.json.
 ///
 /// The summary measures g(r) out to kSummaryGrRange only: the split ratio's windows end at

@@ -89,6 +89,21 @@ std::vector<ContactDynamicsOptions> tight() {
     return all;
 }
 
+/// Three spheres on the floor of `box` at ρ = 0.7·d from the axis x = z = 0, at angles 0,
+/// 120° and 240°, and a fourth 0.05·d above where it would rest on them (its centre
+/// cos θ·d above theirs, cos θ = √(1 − ρ²/d²)).
+std::vector<Particle> sphere_over_three(const Container& box) {
+    const double rho = 0.7 * kD;
+    const double y0 = box.floor + 0.5 * kD;
+    std::vector<Particle> p;
+    for (int k = 0; k < 3; ++k) {
+        const double a = 2.0 * std::numbers::pi * k / 3.0;
+        p.push_back(sphere(rho * std::cos(a), y0, rho * std::sin(a)));
+    }
+    p.push_back(sphere(0, y0 + std::sqrt(1.0 - 0.49) * kD + 0.05 * kD, 0));
+    return p;
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(contact_dynamics)
@@ -154,13 +169,8 @@ BOOST_AUTO_TEST_CASE(a_sphere_on_three_held_by_the_walls_splits_its_weight) {
     box.z_max = 0.5 * std::sqrt(3.0) * rho + r;
     box.z_min = -box.z_max;
     const double y0 = box.floor + r;
-    std::vector<Particle> p;
-    for (int k = 0; k < 3; ++k) {
-        const double a = 2.0 * std::numbers::pi * k / 3.0;
-        p.push_back(sphere(rho * std::cos(a), y0, rho * std::sin(a)));
-    }
+    const std::vector<Particle> p = sphere_over_three(box);
     const double cos_theta = std::sqrt(1.0 - 0.49);
-    p.push_back(sphere(0, y0 + cos_theta * kD + 0.05 * kD, 0));
     const double upper = 1.0 / (3.0 * cos_theta);
     const double push = upper * 0.7;
     const auto close = boost::test_tools::tolerance(1e-6);
@@ -194,17 +204,10 @@ BOOST_AUTO_TEST_CASE(with_friction_a_sphere_rests_on_three_spread_on_the_floor) 
     // lower spheres on the floor, the upper one on them, and the frictional certificate
     // (its own LP on the final positions: force and torque, every force in the pyramid)
     // certifies it. A sphere on the floor alone carries its weight, and does not turn.
-    const double rho = 0.7 * kD;
     const double r = 0.5 * kD;
     const Container box;
     const double y0 = box.floor + r;
-    std::vector<Particle> p;
-    for (int k = 0; k < 3; ++k) {
-        const double a = 2.0 * std::numbers::pi * k / 3.0;
-        p.push_back(sphere(rho * std::cos(a), y0, rho * std::sin(a)));
-    }
-    const double cos_theta = std::sqrt(1.0 - 0.49);
-    p.push_back(sphere(0, y0 + cos_theta * kD + 0.05 * kD, 0));
+    const std::vector<Particle> p = sphere_over_three(box);
     for (ContactDynamicsOptions o : tight()) {
         if (o.solver != ContactSolver::Mprgp) {
             continue;  // friction is solved by MPRGP only

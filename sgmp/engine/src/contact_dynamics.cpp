@@ -353,7 +353,7 @@ ContactDynamicsStats settle_by_contact_dynamics(std::vector<Particle>& particles
         }
     }
     stats.time_step = s.h / std::sqrt(diameter);
-    stats.forces = s.friction > 0.0 ? edge_contact_forces(s) : contact_forces(s);
+    stats.forces = contact_forces(s);
     stats.contacts = stats.forces.size();
     write_back(s, particles, diameter, stats);
     return stats;

@@ -118,6 +118,14 @@ void store_edge_impulses(Dynamics& s) {
     for (const EdgeRow& r : s.edges) {
         store_of(s, r)[r.slot] = r.p;
     }
+    // Each contact's normal impulse Σₖ pₖ (the edges of contact c are rows 8c … 8c + 7).
+    for (std::size_t c = 0; c < s.contacts.size(); ++c) {
+        double normal = 0.0;
+        for (std::size_t k = 0; k < s.stride; ++k) {
+            normal += s.edges[c * s.stride + k].p;
+        }
+        s.contacts[c].p = normal;
+    }
 }
 
 double edge_step_residual(const Dynamics& s) {
@@ -131,32 +139,6 @@ double edge_step_residual(const Dynamics& s) {
         largest = std::max(largest, std::hypot(force, torque));
     }
     return largest / s.h;
-}
-
-std::vector<ContactForce> edge_contact_forces(const Dynamics& s) {
-    static constexpr std::array<Partner, 5> kWalls{Partner::Floor, Partner::XMin, Partner::XMax,
-                                                   Partner::ZMin, Partner::ZMax};
-    std::vector<ContactForce> forces;
-    for (std::size_t r = 0; r < s.edges.size(); r += s.stride) {
-        double normal = 0.0;
-        for (std::size_t k = 0; k < s.stride; ++k) {
-            normal += s.edges[r + k].p;
-        }
-        if (normal <= 0.0) {
-            continue;
-        }
-        const EdgeRow& e = s.edges[r];
-        ContactForce f;
-        f.first = s.particle[e.a];
-        if (e.b == kWall) {
-            f.partner = kWalls[e.wall];
-        } else {
-            f.second = s.particle[e.b];
-        }
-        f.force = normal / s.h;
-        forces.push_back(f);
-    }
-    return forces;
 }
 
 double closing_velocity(const Dynamics& s, const EdgeRow& r) {

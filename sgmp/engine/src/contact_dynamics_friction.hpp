@@ -23,7 +23,6 @@
 #include <vector>
 
 #include "contact_dynamics_state.hpp"
-#include "sgmp/engine/equilibrium_certificate.hpp"
 
 namespace sgmp::engine::contact_dynamics {
 
@@ -37,14 +36,12 @@ void gather_edges(Dynamics& s);
 /// v ← v° − h·ŷ, ω ← 0, then the warm-start impulses of the edge rows.
 void start_edge_velocities(Dynamics& s);
 
-/// Keeps the edge impulses for the next step's warm start.
+/// Keeps the edge impulses for the next step's warm start, and each contact's normal
+/// impulse Σₖ pₖ in its `Contact::p` (whose forces the step reports, as frictionless).
 void store_edge_impulses(Dynamics& s);
 
 /// The largest residual of the step (above), in m·g.
 double edge_step_residual(const Dynamics& s);
-
-/// The normal forces Σₖ pₖ/h > 0 of the last step per contact, on the caller's indices.
-std::vector<ContactForce> edge_contact_forces(const Dynamics& s);
 
 // The edge rows' operations of the MPRGP template (contact_dynamics_mprgp.hpp).
 double closing_velocity(const Dynamics& s, const EdgeRow& r);

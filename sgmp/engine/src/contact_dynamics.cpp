@@ -8,9 +8,11 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "contact_dynamics_coulomb.hpp"
 #include "contact_dynamics_friction.hpp"
 #include "contact_dynamics_solvers.hpp"
 #include "contact_dynamics_state.hpp"
+#include "sgmp/engine/coulomb_pyramid.hpp"
 #include "sgmp/engine/neighbour_list.hpp"
 
 namespace sgmp::engine {
@@ -19,6 +21,8 @@ namespace {
 
 using namespace contact_dynamics;
 constexpr long kProgressEvery = 100;
+/// Returns to the first step after a sphere moved in the polish (with inertia), at most.
+constexpr int kMostReturns = 5;
 
 /// Verlet skin over the smallest diameter (as the soft stage's).
 constexpr double kSkinOverDmin = 0.25;
@@ -30,11 +34,11 @@ void check_options(const ContactDynamicsOptions& o) {
         !positive(o.shrink_below) || o.relaxation >= 2.0 || o.max_sweeps < 1 || o.max_steps < 1 ||
         o.stall_window < 1 || !(o.ssor >= 0.0 && o.ssor < 2.0) ||
         !(std::isfinite(o.friction) && o.friction >= 0.0) ||
-        (o.friction > 0.0 && o.solver != ContactSolver::Mprgp)) {
+        (o.friction > 0.0 && o.solver == ContactSolver::Apgd)) {
         throw std::invalid_argument(
             "contact dynamics: steps, cap and tolerances must be finite and > 0, relaxation in "
             "(0, 2), smallest step in (0, 1], shrink > 1, sweeps, steps and window >= 1, ssor in "
-            "[0, 2), friction finite and >= 0 (with friction: the MPRGP solver)");
+            "[0, 2), friction finite and >= 0 (with friction: the MPRGP or SOR solver)");
     }
 }
 
@@ -70,7 +74,11 @@ Dynamics make_dynamics(const std::vector<Particle>& particles, const Container& 
     s.cap = std::min(o.step_cap * diameter, s.skin / 8.0);
     s.diameter = diameter;
     if (o.friction > 0.0) {
-        prepare_friction(s, o.friction);
+        if (o.solver == ContactSolver::Sor) {  // NSGS: the cone inside the certificate's pyramid
+            prepare_friction(s, pyramid_inscribed_friction(o.friction), 3);
+        } else {
+            prepare_friction(s, o.friction, kPyramidEdges);
+        }
     }
     return s;
 }
@@ -89,7 +97,7 @@ void rebuild(Dynamics& s) {
                 const auto from = s.pair_p.begin() +
                                   static_cast<std::ptrdiff_t>((s.previous.first_slot(i) + k) * m);
                 const bool pressed = std::any_of(from, from + static_cast<std::ptrdiff_t>(m),
-                                                 [](double p) { return p > 0.0; });
+                                                 [](double p) { return p != 0.0; });
                 const auto at = pressed ? std::find(now.begin(), now.end(), old[k]) : now.end();
                 if (at != now.end()) {
                     const std::size_t to =
@@ -201,7 +209,7 @@ void keep_velocities(Dynamics& s, bool inertia) {
         const V3& v = s.v[i];
         V3& k = s.kept[i];
         const double power = (v.x - k.x) * v.x + (v.y - k.y) * v.y + (v.z - k.z) * v.z;
-        k = inertia && power > 0.0 ? v : V3{};
+        k = inertia && power > 0.0 && v.y <= 0.0 ? v : V3{};
     }
 }
 
@@ -257,6 +265,7 @@ void write_back(const Dynamics& s, std::vector<Particle>& particles, double diam
 /// Divides the step by `factor`, and the kept impulses with it (the forces p/h stay).
 void shrink_step(Dynamics& s, double factor) {
     s.h /= factor;
+    std::fill(s.kept.begin(), s.kept.end(), V3{});  // the polish starts at rest
     for (double& p : s.pair_p) {
         p /= factor;
     }
@@ -265,21 +274,27 @@ void shrink_step(Dynamics& s, double factor) {
     }
 }
 
-/// One time step; returns its largest residual, m·g.
-double step(Dynamics& s, const ContactDynamicsOptions& o, int sweeps, ContactDynamicsStats& stats) {
-    keep_list(s);
-    gather_contacts(s);
-    if (s.friction > 0.0) {
+/// The frictional contact problem of a step: contact by contact (Sor) or over the pyramid's
+/// edge rows (MPRGP); returns the step's residual, m·g.
+double solve_frictional(Dynamics& s, const ContactDynamicsOptions& o, int sweeps,
+                        ContactDynamicsStats& stats) {
+    if (o.solver == ContactSolver::Sor) {
+        gather_coulomb(s);
+        start_coulomb_velocities(s);
+        stats.sweeps += solve_coulomb(s, o.sweep_tolerance, o.relaxation, sweeps);
+        store_coulomb_impulses(s);
+    } else {
         gather_edges(s);
         start_edge_velocities(s);
         stats.sweeps += solve_edges(s, o.sweep_tolerance, sweeps, o.ssor);
         store_edge_impulses(s);
-        const double residual = edge_step_residual(s);
-        move(s);
-        keep_velocities(s, o.inertia);
-        ++stats.steps;
-        return residual;
     }
+    return edge_step_residual(s);
+}
+
+/// The frictionless contact problem of a step; returns the step's residual, m·g.
+double solve_frictionless(Dynamics& s, const ContactDynamicsOptions& o, int sweeps,
+                          ContactDynamicsStats& stats) {
     start_velocities(s);
     switch (o.solver) {
         case ContactSolver::Apgd:
@@ -293,7 +308,15 @@ double step(Dynamics& s, const ContactDynamicsOptions& o, int sweeps, ContactDyn
             break;
     }
     store_impulses(s);
-    const double residual = step_residual(s);
+    return step_residual(s);
+}
+
+/// One time step; returns its largest residual, m·g.
+double step(Dynamics& s, const ContactDynamicsOptions& o, int sweeps, ContactDynamicsStats& stats) {
+    keep_list(s);
+    gather_contacts(s);
+    const double residual = s.friction > 0.0 ? solve_frictional(s, o, sweeps, stats)
+                                             : solve_frictionless(s, o, sweeps, stats);
     move(s);
     keep_velocities(s, o.inertia);
     ++stats.steps;
@@ -316,15 +339,21 @@ ContactDynamicsStats settle_by_contact_dynamics(std::vector<Particle>& particles
     }
     Dynamics s = make_dynamics(particles, container, diameter, options);
     rebuild(s);
+    const double h_first = options.time_step * std::sqrt(diameter);
     const double h_min = options.time_step * options.smallest_step * std::sqrt(diameter);
     double best_before = INFINITY;  // the least residual before the present window
     double best = INFINITY;
+    // With inertia, the polish at smaller steps starts and stays at rest; a sphere that
+    // starts to move there (a residual above shrink_below) sends the settling back to the
+    // first step, with inertia, at most kMostReturns times.
+    ContactDynamicsOptions live = options;
+    int returns = 0;
     while (stats.steps < options.max_steps) {
         // Each shrink of h multiplies the sweeps by the same factor: the smaller steps are
         // there to converge the contact problem, not to move.
         const double ratio = std::round(options.time_step * std::sqrt(diameter) / s.h);
         const int sweeps = static_cast<int>(std::min(1e8, options.max_sweeps * ratio));
-        stats.residual_max = step(s, options, sweeps, stats);
+        stats.residual_max = step(s, live, sweeps, stats);
         best = std::min(best, stats.residual_max);
         const bool smallest = s.h <= h_min * (1.0 + 1e-12);
         if (stats.residual_max <= options.residual_tolerance) {
@@ -333,17 +362,29 @@ ContactDynamicsStats settle_by_contact_dynamics(std::vector<Particle>& particles
                 break;
             }
             shrink_step(s, std::min(options.step_shrink, s.h / h_min));  // polish the gaps
+            live.inertia = false;
+            continue;
+        }
+        if (options.inertia && !live.inertia && stats.residual_max > options.shrink_below &&
+            returns < kMostReturns) {
+            shrink_step(s, s.h / h_first);  // back to the first step
+            live.inertia = true;
+            ++returns;
+            best_before = best = INFINITY;
             continue;
         }
         if (stats.steps % options.stall_window == 0) {
-            // Stalled near an equilibrium (a creep far from one goes on at the same h):
-            // smaller steps, or the end.
-            if (best > 0.5 * best_before && best_before < options.shrink_below) {
+            // Stalled near an equilibrium (a creep far from one goes on at the same h; with
+            // inertia, a sphere still gathering speed is not a stall): smaller steps, or the
+            // end.
+            const bool moving = live.inertia && stats.residual_max > 2.0 * best;
+            if (best > 0.5 * best_before && best_before < options.shrink_below && !moving) {
                 if (smallest) {
                     stats.stalled = true;
                     break;
                 }
                 shrink_step(s, std::min(options.step_shrink, s.h / h_min));
+                live.inertia = false;
             }
             best_before = std::min(best_before, best);
             best = INFINITY;

@@ -63,10 +63,10 @@ std::vector<double>& store_of(Dynamics& s, const EdgeRow& r) {
 
 }  // namespace
 
-void prepare_friction(Dynamics& s, double friction) {
+void prepare_friction(Dynamics& s, double friction, std::size_t stride) {
     const std::size_t n = s.balls.size();
     s.friction = friction;
-    s.stride = kPyramidEdges;
+    s.stride = stride;
     s.w.assign(n, V3{});
     s.inv_i.resize(n);
     for (std::size_t i = 0; i < n; ++i) {

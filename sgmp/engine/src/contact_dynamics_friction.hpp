@@ -26,8 +26,9 @@
 
 namespace sgmp::engine::contact_dynamics {
 
-/// Sizes the rotation state and the kept impulses for friction μ > 0 (after the balls).
-void prepare_friction(Dynamics& s, double friction);
+/// Sizes the rotation state and the kept impulses for friction μ > 0 (after the balls),
+/// `stride` impulses kept per pair slot or wall: 8 edge rows, or 3 components of a vector.
+void prepare_friction(Dynamics& s, double friction, std::size_t stride);
 
 /// The step's edge rows: every contact `gather_contacts` found, 8 rows each, with the last
 /// step's impulses.

@@ -67,13 +67,16 @@ struct Dynamics {
     std::vector<double> wall_p;  ///< impulse per sphere and wall (5 each)
     std::vector<Contact> contacts;
     /// Frictional settling (friction > 0): angular velocities, inverse moments of inertia
-    /// (a solid sphere: 1/(0.4·m·r²)) and the step's edge rows; pair_p and wall_p then keep
-    /// `stride` = 8 impulses per slot.
+    /// (a solid sphere: 1/(0.4·m·r²)) and the step's edge rows (MPRGP); pair_p and wall_p
+    /// then keep `stride` = 8 impulses per slot.
     double friction = 0.0;
     std::size_t stride = 1;
     std::vector<V3> w;
     std::vector<double> inv_i;
     std::vector<EdgeRow> edges;
+    /// Frictional settling by NSGS (contact_dynamics_coulomb.hpp): each contact's impulse
+    /// vector on its partner b; pair_p and wall_p then keep `stride` = 3 components per slot.
+    std::vector<V3> impulse;
     double diameter = 0.0;
     Container box;
     double h = 0.0;

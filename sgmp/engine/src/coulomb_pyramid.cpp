@@ -21,4 +21,9 @@ std::array<Vec3, kPyramidEdges> coulomb_pyramid(const Vec3& normal, double frict
     return edges;
 }
 
+double pyramid_inscribed_friction(double friction) {
+    const double c = std::cos(std::numbers::pi / kPyramidEdges);
+    return friction * c * c;
+}
+
 }  // namespace sgmp::engine

@@ -22,11 +22,15 @@
 /// The goal is the static equilibrium, not the dynamics: by default every step starts at
 /// rest (vᵢ° = 0). With `inertia`, a sphere keeps its velocity (vᵢ° = vᵢ⁺) while the step's
 /// net force on it, Fᵢ = mᵢ·(vᵢ⁺ − vᵢ°)/h, pushes along it (Fᵢ·vᵢ⁺ > 0, FIRE's rule sphere
-/// by sphere), else it starts the next step at rest. Inertia carries a sphere sliding down
-/// a shallow slope (a creep at a residual of 10⁻² m·g, which steps from rest take h²·Rᵢ at a
-/// time), but it also keeps the motion the unconverged contact problems cause: at N = 1002
-/// (loose-random, seed 1) the settling with it stalled uncertified after 223 s, without it
-/// the pack was certified (sgmp/engine/docs/relax-certified.md). Keeping every velocity,
+/// by sphere) and it does not rise (vᵢ⁺·ŷ ≤ 0), else it starts the next step at rest. Inertia
+/// carries a sphere sliding or rolling down a shallow slope (a creep at a residual of
+/// 10⁻² m·g, which steps from rest take h²·Rᵢ at a time), but it also keeps the motion the
+/// unconverged contact problems cause: frictionless at N = 1002 (loose-random, seed 1) the
+/// settling with it stalled uncertified after 223 s, without it the pack was certified
+/// (sgmp/engine/docs/relax-certified.md); the frictional settling needs it. With inertia
+/// the polish at smaller steps (below) runs from rest, and a sphere that starts to move
+/// there (a residual above `shrink_below`) sends the settling back to the first step, at
+/// most 5 times. Keeping every velocity,
 /// damped, pumped energy in the same way. From rest, a step is the proximal step
 ///
 ///     min Σᵢ mᵢ·|cᵢ' − cᵢ + h²·ŷ|²/2   over the linearised hard-sphere constraints.
@@ -77,6 +81,13 @@
 /// to `smallest_step`·time_step, where a stall ends the settling (not converged: the
 /// certificate, with its own LP, then says whether the pack is an equilibrium).
 ///
+/// Friction (μ = `friction` > 0): the spheres also turn, and the residual asks torques to
+/// balance. The `Sor` solver then runs NSGS with an exact local Coulomb solve per contact
+/// (contact_dynamics_coulomb.hpp) in the widest circular cone inside the certificate's
+/// pyramid, μ·cos²(π/8) (coulomb_pyramid.hpp), so every force it finds is one the
+/// frictional certificate may use; `Mprgp` solves the pyramid's 8 edge rows per contact
+/// with the associated law (contact_dynamics_friction.hpp).
+///
 /// Everything runs in a fixed order on one thread: the same pack gives the same bytes.
 #include <cstddef>
 #include <functional>
@@ -92,7 +103,9 @@ namespace sgmp::engine {
 enum class ContactSolver {
     /// Nesterov's accelerated projected gradient on the dual, with gradient restart.
     Apgd,
-    /// Projected SOR (NSGS over-relaxed), sweeps from the top down.
+    /// Projected SOR (NSGS over-relaxed), sweeps from the top down; with friction, NSGS
+    /// with the closed-form Coulomb solve of each contact, alternate sweeps top down and
+    /// bottom up.
     Sor,
     /// Conjugate gradients on the free contacts with expansion and proportioning steps
     /// (MPRGP: Dostál, Optimal Quadratic Programming Algorithms, Springer 2009, ch. 8),
@@ -115,8 +128,8 @@ struct ContactDynamicsOptions {
     /// MPRGP only: ω of its symmetric Gauss–Seidel preconditioner, in [0, 2); 0: none.
     double ssor = 1.0;
     /// Sliding friction μ ≥ 0 of pairs and walls: above 0 every contact carries a force
-    /// inside the 8-edge Coulomb pyramid (coulomb_pyramid.hpp), the spheres turn, and the
-    /// residual asks torques to balance too (MPRGP only; contact_dynamics_friction.hpp).
+    /// inside the 8-edge Coulomb pyramid (coulomb_pyramid.hpp; Sor: inside its inscribed
+    /// cone), the spheres turn, and the residual asks torques to balance too (MPRGP or Sor).
     double friction = 0.0;
     double residual_tolerance = 1e-4;  ///< ends when max Rᵢ is below this, m·g
     long max_steps = 200000;           ///< steps at most
@@ -143,7 +156,7 @@ struct ContactDynamicsStats {
 /// sides the centres are wrapped into the cell at the end. Throws std::invalid_argument for
 /// options out of range (non-finite; step, cap, tolerances or counts ≤ 0; ω outside (0, 2);
 /// smallest_step outside (0, 1]; step_shrink ≤ 1; ssor outside [0, 2); friction < 0, or
-/// friction with a solver other than MPRGP).
+/// friction with APGD).
 ContactDynamicsStats settle_by_contact_dynamics(std::vector<Particle>& particles,
                                                 const Container& container, double diameter,
                                                 const ContactDynamicsOptions& options = {});

@@ -21,4 +21,8 @@ inline constexpr int kPyramidEdges = 8;
 /// The edges Eₖ of the pyramid around `normal` (a unit vector) at sliding friction μ ≥ 0.
 std::array<Vec3, kPyramidEdges> coulomb_pyramid(const Vec3& normal, double friction);
 
+/// The friction μ·cos²(π/8) of the widest circular cone inside the pyramid at μ (its facets
+/// lie μ'·cos(π/8) from the normal): a force in that cone is a sum of the pyramid's edges.
+double pyramid_inscribed_friction(double friction);
+
 }  // namespace sgmp::engine

@@ -48,8 +48,8 @@ struct RelaxParams {
     /// at most s·(rᵢ + rⱼ); only deeper soft overlaps are left for the clearing and the
     /// hard-sphere finish. The default 0 makes the soft spheres the real ones: every loaded
     /// contact is parted by the clearing to touching (gaps of 10⁻⁹–10⁻⁷·d), so the pack's
-    /// contacts count at δ = 10⁻⁶ as well (sgmp/engine/notes/relaxation-2026-11.md); with s = 3·10⁻⁴
-    /// they end as gaps of up to 3·10⁻⁴·d and Z(10⁻⁶) is 0.
+    /// contacts count at δ = 10⁻⁶ as well (sgmp/engine/notes/relaxation-2026-11.md); with s =
+    /// 3·10⁻⁴ they end as gaps of up to 3·10⁻⁴·d and Z(10⁻⁶) is 0.
     double shell = 0.0;
     /// A stage has converged when no sphere feels a net force above this, in m·g.
     double force_tolerance = 1e-4;

@@ -307,6 +307,7 @@ BOOST_AUTO_TEST_CASE(a_frictional_pack_settled_by_nsgs_is_certified) {
     BOOST_TEST(*pack.metadata.get("certificate") == "frictional");
     BOOST_TEST(*pack.metadata.get("relax_settle_end") == "residual");
     BOOST_TEST(*pack.metadata.get_number("certificate_residual_max") <= 1e-3);
+    // The certificate's bound (its gap tolerance); the polish at h/3 leaves about 10⁻⁷·d.
     BOOST_TEST(*pack.metadata.get_number("certificate_overlap_max") <= 1e-6);
 }
 

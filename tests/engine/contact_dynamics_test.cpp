@@ -270,19 +270,28 @@ BOOST_AUTO_TEST_CASE(bad_options_are_refused) {
     BOOST_CHECK_THROW(settle_by_contact_dynamics(p, box, 0.0), std::invalid_argument);
 }
 
+namespace {
+
+/// A loose-random pack of 150 relaxed in `mode` and settled by the contact dynamics.
+PackRequest dynamics_request(RelaxMode mode, std::uint64_t seed, Sides sides = Sides::Walls) {
+    PackRequest request;
+    request.count = 150;
+    request.arrangement = Arrangement::LooseRandom;
+    request.seed = seed;
+    request.sides = sides;
+    request.relax.mode = mode;
+    request.relax.settle = RelaxSettle::Dynamics;
+    return request;
+}
+
+}  // namespace
+
 BOOST_AUTO_TEST_CASE(relaxed_packs_are_certified_by_the_settlings_own_forces) {
     // `--relax frictionless` ends with the contact dynamics; its forces certify the pack
     // (certificate_forces=settling-witness: no certificate LP), on walls and periodic sides.
     for (const Sides sides : {Sides::Walls, Sides::Periodic}) {
         for (const std::uint64_t seed : {1u, 2u, 3u}) {
-            PackRequest request;
-            request.count = 150;
-            request.arrangement = Arrangement::LooseRandom;
-            request.seed = seed;
-            request.sides = sides;
-            request.relax.mode = RelaxMode::Frictionless;
-            request.relax.settle = RelaxSettle::Dynamics;
-            const Pack pack = make_pack(request);
+            const Pack pack = make_pack(dynamics_request(RelaxMode::Frictionless, seed, sides));
             BOOST_TEST(*pack.metadata.get("certified") == "true", "seed " << seed);
             BOOST_TEST(*pack.metadata.get("certificate_forces") == "settling-witness",
                        "seed " << seed);
@@ -296,13 +305,7 @@ BOOST_AUTO_TEST_CASE(a_frictional_pack_settled_by_nsgs_is_certified) {
     // cone inside the certificate's pyramid, then the frictional certificate's own LP (force
     // and torque, every force in the pyramid) on the final positions. Seed 1 of the eight
     // measured (sgmp/engine/notes/relax-frictional-dynamics-2026-12-07.md), all certified.
-    PackRequest request;
-    request.count = 150;
-    request.arrangement = Arrangement::LooseRandom;
-    request.seed = 1;
-    request.relax.mode = RelaxMode::Frictional;
-    request.relax.settle = RelaxSettle::Dynamics;
-    const Pack pack = make_pack(request);
+    const Pack pack = make_pack(dynamics_request(RelaxMode::Frictional, 1));
     BOOST_TEST(*pack.metadata.get("certified") == "true");
     BOOST_TEST(*pack.metadata.get("certificate") == "frictional");
     BOOST_TEST(*pack.metadata.get("relax_settle_end") == "residual");
@@ -312,12 +315,7 @@ BOOST_AUTO_TEST_CASE(a_frictional_pack_settled_by_nsgs_is_certified) {
 }
 
 BOOST_AUTO_TEST_CASE(the_same_request_settles_to_the_same_bytes) {
-    PackRequest request;
-    request.count = 150;
-    request.arrangement = Arrangement::LooseRandom;
-    request.seed = 2;
-    request.relax.mode = RelaxMode::Frictionless;
-    request.relax.settle = RelaxSettle::Dynamics;
+    const PackRequest request = dynamics_request(RelaxMode::Frictionless, 2);
     const Pack first = make_pack(request);
     const Pack second = make_pack(request);
     BOOST_TEST_REQUIRE(first.particles.size() == second.particles.size());

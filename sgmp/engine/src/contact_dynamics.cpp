@@ -185,7 +185,7 @@ void store_impulses(Dynamics& s) {
     std::fill(s.pair_p.begin(), s.pair_p.end(), 0.0);
     std::fill(s.wall_p.begin(), s.wall_p.end(), 0.0);
     for (const Contact& c : s.contacts) {
-        (c.b == kWall ? s.wall_p : s.pair_p)[c.slot] = c.p;
+        kept_impulses(s, c.b)[c.slot] = c.p;
     }
 }
 

@@ -9,20 +9,12 @@ namespace sgmp::engine::contact_dynamics {
 
 namespace {
 
-double dot(const V3& a, const V3& b) {
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-
 V3 cross(const V3& a, const V3& b) {
     return V3{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
 V3 normal_of(const Contact& c) {
     return V3{c.nx, c.ny, c.nz};
-}
-
-std::vector<double>& store_of(Dynamics& s, const Contact& c) {
-    return c.b == kWall ? s.wall_p : s.pair_p;
 }
 
 /// Adds impulse dP of contact c (on b; −dP on a) to the spheres' velocities.
@@ -112,7 +104,7 @@ void gather_coulomb(Dynamics& s) {
     s.impulse.resize(s.contacts.size());
     for (std::size_t k = 0; k < s.contacts.size(); ++k) {
         const Contact& c = s.contacts[k];
-        const std::vector<double>& kept = store_of(s, c);
+        const std::vector<double>& kept = kept_impulses(s, c.b);
         const std::size_t at = c.slot * s.stride;
         // The kept impulse, put back in the present cone (the normal has turned a little).
         s.impulse[k] =
@@ -159,7 +151,7 @@ void store_coulomb_impulses(Dynamics& s) {
     std::fill(s.wall_p.begin(), s.wall_p.end(), 0.0);
     for (std::size_t k = 0; k < s.contacts.size(); ++k) {
         Contact& c = s.contacts[k];
-        std::vector<double>& kept = store_of(s, c);
+        std::vector<double>& kept = kept_impulses(s, c.b);
         const std::size_t at = c.slot * s.stride;
         kept[at] = s.impulse[k].x;
         kept[at + 1] = s.impulse[k].y;

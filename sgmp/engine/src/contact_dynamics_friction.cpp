@@ -13,10 +13,6 @@ namespace sgmp::engine::contact_dynamics {
 
 namespace {
 
-double dot(const V3& a, const V3& b) {
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-
 V3 to_v3(const Vec3& v) {
     return V3{v.x(), v.y(), v.z()};
 }
@@ -57,10 +53,6 @@ double sphere_weight(const Dynamics& s, const EdgeRow& r, std::uint32_t i) {
     return dot(r.e, r.e) * s.inv_m[i] + s.balls[i].r * s.balls[i].r * dot(r.q, r.q) * s.inv_i[i];
 }
 
-std::vector<double>& store_of(Dynamics& s, const EdgeRow& r) {
-    return r.b == kWall ? s.wall_p : s.pair_p;
-}
-
 }  // namespace
 
 void prepare_friction(Dynamics& s, double friction, std::size_t stride) {
@@ -89,7 +81,7 @@ void gather_edges(Dynamics& s) {
             r.gap = c.gap;
             r.wall = c.wall;
             r.slot = static_cast<std::uint32_t>(c.slot * s.stride + k);
-            r.p = store_of(s, r)[r.slot];
+            r.p = kept_impulses(s, r.b)[r.slot];
             double weight = sphere_weight(s, r, r.a);
             if (r.b != kWall) {
                 weight += sphere_weight(s, r, r.b);
@@ -116,7 +108,7 @@ void store_edge_impulses(Dynamics& s) {
     std::fill(s.pair_p.begin(), s.pair_p.end(), 0.0);
     std::fill(s.wall_p.begin(), s.wall_p.end(), 0.0);
     for (const EdgeRow& r : s.edges) {
-        store_of(s, r)[r.slot] = r.p;
+        kept_impulses(s, r.b)[r.slot] = r.p;
     }
     // Each contact's normal impulse Σₖ pₖ (the edges of contact c are rows 8c … 8c + 7).
     for (std::size_t c = 0; c < s.contacts.size(); ++c) {

@@ -84,6 +84,16 @@ struct Dynamics {
     double cap = 0.0;  ///< largest displacement per step
 };
 
+inline double dot(const V3& a, const V3& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+/// The impulses kept between steps for a contact whose partner is `b`: per wall
+/// (`Dynamics::wall_p`) or per neighbour-list pair slot (`Dynamics::pair_p`).
+inline std::vector<double>& kept_impulses(Dynamics& s, std::uint32_t b) {
+    return b == kWall ? s.wall_p : s.pair_p;
+}
+
 /// Adds impulse `dp` of contact c to its spheres' velocities (a pushed along −n).
 inline void apply(Dynamics& s, const Contact& c, double dp) {
     V3& va = s.v[c.a];

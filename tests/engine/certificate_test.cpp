@@ -4,8 +4,10 @@
 
 #include <chrono>
 #include <cmath>
+#include <random>
 #include <string>
 
+#include "sgmp/engine/coulomb_pyramid.hpp"
 #include "sgmp/engine/equilibrium_certificate.hpp"
 #include "sgmp/pack/pack_file.hpp"
 
@@ -141,6 +143,103 @@ BOOST_AUTO_TEST_CASE(a_witness_certifies_only_when_its_forces_balance) {
     BOOST_CHECK_THROW(certify_frictionless(column, kBox, kD, {},
                                            std::vector<ContactForce>{{0, 0, Partner::Floor, -1.0}}),
                       std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(pyramid_edge_forces_rebuild_any_force_inside_the_pyramid) {
+    // Σₖ βₖ·Eₖ = f·n + f_t with every βₖ ≥ 0, for random normals and forces in the inscribed
+    // cone (closed form: two edges either side of f_t plus an equal share on all eight).
+    // Tolerance 10⁻¹²: a few roundings of numbers of order 1.
+    std::mt19937_64 rng(7);
+    std::normal_distribution<double> gauss;
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int trial = 0; trial < 2000; ++trial) {
+        const Vec3 n = Vec3(gauss(rng), gauss(rng), gauss(rng)).normalized();
+        const double mu = trial % 10 == 0 ? 2.0 : 0.5;
+        const double f = 0.01 + 3.0 * unit(rng);
+        Vec3 t = Vec3(gauss(rng), gauss(rng), gauss(rng));
+        t -= t.dot(n) * n;
+        t *= unit(rng) * pyramid_inscribed_friction(mu) * f / t.norm();
+        const auto beta = pyramid_edge_forces(n, mu, f, t + 0.3 * n);  // normal part ignored
+        const auto edges = coulomb_pyramid(n, mu);
+        Vec3 sum = Vec3::Zero();
+        for (std::size_t k = 0; k < beta.size(); ++k) {
+            BOOST_TEST_REQUIRE(beta[k] >= 0.0);
+            sum += beta[k] * edges[k];
+        }
+        BOOST_TEST((sum - (f * n + t)).norm() <= 1e-12, "trial " << trial);
+    }
+    // Beyond the pyramid (|f_t| = 2·μ·f): scaled back along f_t onto the pyramid's boundary,
+    // the normal part kept; every share of the rest is then 0.
+    const Vec3 n(0.0, 1.0, 0.0);
+    const auto beta = pyramid_edge_forces(n, 0.5, 1.0, Vec3(1.0, 0.0, 0.3));
+    const auto edges = coulomb_pyramid(n, 0.5);
+    Vec3 sum = Vec3::Zero();
+    int nonzero = 0;
+    for (std::size_t k = 0; k < beta.size(); ++k) {
+        BOOST_TEST(beta[k] >= 0.0);
+        sum += beta[k] * edges[k];
+        nonzero += beta[k] > 0.0 ? 1 : 0;
+    }
+    BOOST_TEST(sum.y() == 1.0, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(sum.z() / sum.x() == 0.3, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(nonzero <= 2);
+    BOOST_TEST(std::hypot(sum.x(), sum.z()) <= 0.5 + 1e-12);  // inside the cone at μ
+    for (const double b : pyramid_edge_forces(n, 0.5, -1.0, Vec3(0.1, 0, 0))) {
+        BOOST_TEST(b == 0.0);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(a_frictional_witness_certifies_with_its_tangential_forces) {
+    // The sphere wedged between two walls, nothing below: normal forces F from each wall and
+    // an upward friction of 1/2 on each side carry its weight; the two frictions' torques
+    // about the centre cancel (closed form). At μ = 0.1 the inscribed cone holds 0.0854·F,
+    // so F = 10 holds 0.5 with room.
+    Container wedge = kBox;
+    wedge.x_min = -0.5 * kD;
+    wedge.x_max = 0.5 * kD;
+    const std::vector<Particle> one{sphere(0, kBox.floor + 2 * kD, 0)};
+    const Vec3 up(0.0, 0.5, 0.0);
+    const std::vector<ContactForce> exact{{0, 0, Partner::XMin, 10.0, up},
+                                          {0, 0, Partner::XMax, 10.0, up}};
+    const auto held = certify_frictional(one, wedge, kD, 0.1, {}, exact);
+    BOOST_TEST(held.by_witness);
+    BOOST_TEST(held.certified);
+    BOOST_TEST(held.residual_max <= 1e-14);
+    BOOST_TEST(held.force.at(0) == 10.0, boost::test_tools::tolerance(1e-12));
+    // At μ = 0.05 the pyramid holds at most 0.0462·10 < 0.5 a side: the witness is scaled
+    // into it and falls short; the LP then finds larger normal forces and certifies.
+    const auto scaled = certify_frictional(one, wedge, kD, 0.05, {}, exact);
+    BOOST_TEST(!scaled.by_witness);
+    BOOST_TEST(scaled.certified);
+    // Without the tangential forces the witness cannot hold the sphere.
+    const std::vector<ContactForce> normal_only{{0, 0, Partner::XMin, 10.0},
+                                                {0, 0, Partner::XMax, 10.0}};
+    BOOST_TEST(!certify_frictional(one, wedge, kD, 0.1, {}, normal_only).by_witness);
+}
+
+BOOST_AUTO_TEST_CASE(a_frictional_witness_means_the_same_named_from_either_sphere) {
+    // A pair on the floor, side by side, with a tangential force that balances nothing:
+    // naming the contact (0, 1) with f_t on sphere 0, or (1, 0) with −f_t on sphere 1, is one
+    // force, so the residuals are the same to the last bit. (A residual tolerance of 10 m·g
+    // lets the witness stand, so its own residuals are reported, not the LP's.)
+    const double y0 = kBox.floor + 0.5 * kD;
+    const std::vector<Particle> pair{sphere(0, y0, 0), sphere(kD, y0, 0)};
+    const Vec3 t(0.0, 0.02, 0.03);
+    const std::vector<ContactForce> from_0{
+        {0, 1, Partner::Sphere, 0.2, t}, {0, 0, Partner::Floor, 1.0}, {1, 0, Partner::Floor, 1.0}};
+    std::vector<ContactForce> from_1 = from_0;
+    from_1[0] = {1, 0, Partner::Sphere, 0.2, Vec3(-t)};
+    const CertificateOptions lenient{1e-6, 10.0};
+    const auto a = certify_frictional(pair, kBox, kD, 0.5, lenient, from_0);
+    const auto b = certify_frictional(pair, kBox, kD, 0.5, lenient, from_1);
+    BOOST_TEST_REQUIRE(a.by_witness);
+    BOOST_TEST_REQUIRE(a.residual.size() == 2u);
+    BOOST_TEST(a.residual == b.residual, boost::test_tools::per_element());
+    // The pair force is not balanced by anything: each sphere keeps it, √(0.2² + 0.02² + 0.03²)
+    // in force plus the friction's torque over d (lever r = d/2: |r·f_t|/d = 0.5·|f_t|).
+    const double force = std::sqrt(0.2 * 0.2 + 0.02 * 0.02 + 0.03 * 0.03);
+    const double torque = 0.5 * std::sqrt(0.02 * 0.02 + 0.03 * 0.03);
+    BOOST_TEST(a.residual[0] == std::hypot(force, torque), boost::test_tools::tolerance(1e-12));
 }
 
 BOOST_AUTO_TEST_CASE(an_overlap_deeper_than_the_tolerance_is_not_certified) {

@@ -302,12 +302,14 @@ BOOST_AUTO_TEST_CASE(relaxed_packs_are_certified_by_the_settlings_own_forces) {
 
 BOOST_AUTO_TEST_CASE(a_frictional_pack_settled_by_nsgs_is_certified) {
     // `--relax frictional --relax-settle dynamics` at μ = 0.5: NSGS contact by contact in the
-    // cone inside the certificate's pyramid, then the frictional certificate's own LP (force
-    // and torque, every force in the pyramid) on the final positions. Seed 1 of the eight
-    // measured (sgmp/engine/notes/relax-frictional-dynamics-2026-12-07.md), all certified.
+    // cone inside the certificate's pyramid; its last step's force vectors, written as the
+    // pyramid's edge forces, balance force and torque on the final positions (the witness:
+    // no certificate LP). Seed 1 of the eight measured
+    // (sgmp/engine/notes/relax-frictional-dynamics-2026-12-07.md), all certified.
     const Pack pack = make_pack(dynamics_request(RelaxMode::Frictional, 1));
     BOOST_TEST(*pack.metadata.get("certified") == "true");
     BOOST_TEST(*pack.metadata.get("certificate") == "frictional");
+    BOOST_TEST(*pack.metadata.get("certificate_forces") == "settling-witness");
     BOOST_TEST(*pack.metadata.get("relax_settle_end") == "residual");
     BOOST_TEST(*pack.metadata.get_number("certificate_residual_max") <= 1e-3);
     // The certificate's bound (its gap tolerance); the polish at h/3 leaves about 10⁻⁷·d.

@@ -228,12 +228,15 @@ void move(Dynamics& s) {
     }
 }
 
-/// The last step's forces p/h > 0 on the caller's indices.
+/// The last step's forces p/h > 0 on the caller's indices; with NSGS friction, also the
+/// tangential force on `first` (the impulse vector P is on b, −P on a).
 std::vector<ContactForce> contact_forces(const Dynamics& s) {
     static constexpr std::array<Partner, 5> kWalls{Partner::Floor, Partner::XMin, Partner::XMax,
                                                    Partner::ZMin, Partner::ZMax};
+    const bool vectors = s.impulse.size() == s.contacts.size();
     std::vector<ContactForce> forces;
-    for (const Contact& c : s.contacts) {
+    for (std::size_t k = 0; k < s.contacts.size(); ++k) {
+        const Contact& c = s.contacts[k];
         if (c.p <= 0.0) {
             continue;
         }
@@ -245,6 +248,12 @@ std::vector<ContactForce> contact_forces(const Dynamics& s) {
             f.second = s.particle[c.b];
         }
         f.force = c.p / s.h;
+        if (vectors) {
+            const V3& p = s.impulse[k];
+            const Vec3 n(c.nx, c.ny, c.nz);
+            const Vec3 on_b(p.x, p.y, p.z);
+            f.tangential = -(on_b - on_b.dot(n) * n) / s.h;
+        }
         forces.push_back(f);
     }
     return forces;

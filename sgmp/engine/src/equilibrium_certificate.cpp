@@ -177,22 +177,46 @@ std::vector<double> solve_forces(const System& system) {
 #endif
 }
 
-/// The witness's forces on `contacts` (0 where it names none); throws on a negative one.
+/// A witness force on one contact: normal, and tangential on the contact key's lower
+/// sphere (walls: on the sphere).
+struct KeyedForce {
+    double normal = 0.0;
+    Vec3 tangential = Vec3::Zero();
+};
+
+/// The witness's forces on `contacts` (0 where it names none), as one column per contact
+/// (frictionless) or the pyramid's 8 edge multipliers per contact (frictional,
+/// coulomb_pyramid.hpp); throws on a negative force.
 std::vector<double> witness_forces(const std::vector<Contact>& contacts,
-                                   std::span<const ContactForce> witness) {
-    std::unordered_map<std::uint64_t, double> by_key;
+                                   std::span<const ContactForce> witness,
+                                   std::optional<double> friction) {
+    std::unordered_map<std::uint64_t, KeyedForce> by_key;
     by_key.reserve(witness.size());
     for (const ContactForce& w : witness) {
         if (!(w.force >= 0.0)) {
             throw std::invalid_argument("certificate: a witness force is negative or NaN");
         }
-        by_key[contact_key(w.first, w.second, w.partner)] += w.force;
+        KeyedForce& k = by_key[contact_key(w.first, w.second, w.partner)];
+        k.normal += w.force;
+        const bool on_lower = w.partner != Partner::Sphere || w.first < w.second;
+        k.tangential += on_lower ? w.tangential : Vec3(-w.tangential);
     }
-    std::vector<double> f(contacts.size(), 0.0);
+    const std::size_t per = friction ? static_cast<std::size_t>(kPyramidEdges) : 1;
+    std::vector<double> f(per * contacts.size(), 0.0);
     for (std::size_t k = 0; k < contacts.size(); ++k) {
         const Contact& c = contacts[k];
         const auto it = by_key.find(contact_key(c.first, c.second, c.partner));
-        f[k] = it != by_key.end() ? it->second : 0.0;
+        if (it == by_key.end()) {
+            continue;
+        }
+        if (!friction) {
+            f[k] = it->second.normal;
+            continue;
+        }
+        const bool first_is_lower = c.wall || c.first < c.second;
+        const Vec3 t = first_is_lower ? it->second.tangential : Vec3(-it->second.tangential);
+        const auto beta = pyramid_edge_forces(c.normal, *friction, it->second.normal, t);
+        std::copy(beta.begin(), beta.end(), f.begin() + static_cast<std::ptrdiff_t>(per * k));
     }
     return f;
 }
@@ -284,8 +308,8 @@ EquilibriumCertificate certify(const std::vector<Particle>& particles, const Con
     const System system = build_system(particles, contacts, weight, diameter, friction);
     const bool fits = cert.overlap_max_over_d <= options.gap_tolerance_over_d;
     std::vector<double> f;
-    if (!witness.empty() && !friction) {
-        f = witness_forces(contacts, witness);
+    if (!witness.empty()) {
+        f = witness_forces(contacts, witness, friction);
         record_residuals(system, f, cert);
         cert.by_witness = fits && cert.residual_max <= options.residual_tolerance;
     }
@@ -344,8 +368,9 @@ EquilibriumCertificate certify_frictionless(const std::vector<Particle>& particl
 
 EquilibriumCertificate certify_frictional(const std::vector<Particle>& particles,
                                           const Container& container, double diameter,
-                                          double friction, const CertificateOptions& options) {
-    return certify(particles, container, diameter, friction, options, {});
+                                          double friction, const CertificateOptions& options,
+                                          std::span<const ContactForce> witness) {
+    return certify(particles, container, diameter, friction, options, witness);
 }
 
 }  // namespace sgmp::engine

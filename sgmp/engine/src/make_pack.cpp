@@ -278,7 +278,8 @@ Pack make_pack(const PackRequest& request, const ProgressCallback& progress, Pac
         local.certificate =
             request.relax.mode == RelaxMode::Frictionless
                 ? certify_frictionless(particles, container, d, {}, local.relax.settle_forces)
-                : certify_frictional(particles, container, d, request.relax.friction);
+                : certify_frictional(particles, container, d, request.relax.friction, {},
+                                     local.relax.settle_forces);
         local.certificate_seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - certifying).count();
         local.relax.settle_forces.clear();

@@ -25,4 +25,13 @@ std::array<Vec3, kPyramidEdges> coulomb_pyramid(const Vec3& normal, double frict
 /// lie μ'·cos(π/8) from the normal): a force in that cone is a sum of the pyramid's edges.
 double pyramid_inscribed_friction(double friction);
 
+/// Non-negative edge multipliers β with Σₖ βₖ·Eₖ = f·n + f_t (f ≥ 0 the normal force, f_t
+/// the force across `normal`, its normal part ignored): with f_t/μ' = a·uₖ + b·uₖ₊₁ over the
+/// two edge directions uₖ = (Eₖ − n)/μ' either side of f_t (a, b ≥ 0), βⱼ = (f − a − b)/8
+/// plus a on edge k and b on edge k + 1, exact while a + b ≤ f (f_t inside the pyramid);
+/// beyond it a and b are scaled to a + b = f (the nearest force the pyramid holds along
+/// f_t). At μ = 0 f_t is dropped. f < 0 gives all zeros.
+std::array<double, kPyramidEdges> pyramid_edge_forces(const Vec3& normal, double friction,
+                                                      double normal_force, const Vec3& tangential);
+
 }  // namespace sgmp::engine

@@ -26,6 +26,19 @@
 /// the forces reported are non-negative forces on the pack's contacts with the residuals
 /// reported, so the certificate means the same; the witness only saves the LP (10 s at
 /// N = 3000).
+///
+/// A frictional witness also names each contact's tangential force. The force on sphere
+/// `first` is f·n + f_t (f_t projected on the contact's tangent plane at the final
+/// positions); it is written exactly as non-negative multipliers of the pyramid's edges,
+///
+///     f·n + f_t = Σₖ βₖ·Eₖ,   β = (f − a − b)/8 on every edge, plus a on Eₖ and b on Eₖ₊₁,
+///
+/// where f_t/μ' = a·uₖ + b·uₖ₊₁ (uₖ = (Eₖ − n)/μ', the two edge directions either side of
+/// f_t; a, b ≥ 0) and Σₖ uₖ = 0. It needs a + b ≤ f, i.e. f_t inside the pyramid's octagon
+/// (a force in the inscribed cone, pyramid_inscribed_friction, always is); a tangential
+/// force beyond it by rounding is scaled back onto its boundary. The residuals are then
+/// those of the certificate's own system, so a witness certifies exactly when those edge
+/// forces do.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -68,6 +81,8 @@ struct ContactForce {
     std::size_t second = 0;  ///< used when partner is Sphere
     Partner partner = Partner::Sphere;
     double force = 0.0;
+    /// The force on `first` across the normal, m·g (frictional witnesses; 0 otherwise).
+    Vec3 tangential = Vec3::Zero();
 };
 
 struct EquilibriumCertificate {
@@ -97,9 +112,11 @@ EquilibriumCertificate certify_frictionless(const std::vector<Particle>& particl
 /// Coulomb cone |f_t| ≤ μ·f_n (so any forces it finds obey Coulomb's law), and every sphere
 /// balances force and torque: the residual of sphere i is √(|R_F,i|² + |R_T,i/d|²), its
 /// torque taken about the centre, the contact at the surface point cᵢ − rᵢ·n. No rolling
-/// resistance. Spheres on no contact are counted as underconstrained.
+/// resistance. Spheres on no contact are counted as underconstrained. A `witness` (normal
+/// and tangential forces, above) is tried first, as for the frictionless certificate.
 EquilibriumCertificate certify_frictional(const std::vector<Particle>& particles,
                                           const Container& container, double diameter,
-                                          double friction, const CertificateOptions& options = {});
+                                          double friction, const CertificateOptions& options = {},
+                                          std::span<const ContactForce> witness = {});
 
 }  // namespace sgmp::engine

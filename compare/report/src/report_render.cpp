@@ -197,9 +197,10 @@ std::vector<std::string> rule_statements() {
         "O'Brien-Fleming-type spending of 5 % per one-sided test over the information "
         "fractions t_k = (1/N + 1/n_b)/(1/n_k + 1/n_b); a row keeps the verdict of the first "
         "look that decides, and is inconclusive for good only at the last. An undecided row "
-        "names the side that limits it (limited_by) and the candidate seeds "
-        "(seeds_to_decide) or reference pours (pours_to_decide) that would decide it at the "
-        "same estimate and scatter. Without --max-seeds: one look, the fixed-sample test.",
+        "names the side that limits it (limited_by: candidate, reference, or both when neither "
+        "alone would) and the candidate seeds (seeds_to_decide) or reference pours "
+        "(pours_to_decide) that would decide it at the same estimate and scatter. Without "
+        "--max-seeds: one look, the fixed-sample test.",
         "Lengths are in units of the mean diameter d. Z at tolerance X counts neighbours with "
         "gap |ci - cj| - ri - rj <= X d, over centres in the region; g(r) bins are centred on "
         "multiples of the bin width (contact at d is a bin centre) and its density is the one "

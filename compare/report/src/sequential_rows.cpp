@@ -1,6 +1,7 @@
 #include "sgmp/report/sequential_rows.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -69,6 +70,20 @@ void name_limit(MetricRow& row, const MetricRule& rule, const Packs& a, const Pa
     if (seeds) {
         row.limited_by = "candidate";
         row.seeds_to_decide = seeds;
+        return;
+    }
+    // Neither side alone: both grown in the proportion they have now.
+    const double ratio = double(b.size()) / double(last.candidate_n);
+    const auto pours_for = [&](std::size_t n) {
+        return std::max(b.size(), static_cast<std::size_t>(std::ceil(ratio * double(n))));
+    };
+    const auto both = smallest_deciding(last.candidate_n, [&](std::size_t n) {
+        return decides_with(rule, a, b, level_of(rule, last), n, pours_for(n));
+    });
+    if (both) {
+        row.limited_by = "both";
+        row.seeds_to_decide = both;
+        row.pours_to_decide = pours_for(*both);
     }
 }
 
@@ -182,7 +197,12 @@ std::string sequential_note(const MetricRow& row) {
         return text + "limited by the reference: " + std::to_string(*row.pours_to_decide) +
                " pours decide";
     }
-    return text + "no side alone decides up to " + std::to_string(kMostProjected);
+    if (row.limited_by == "both" && row.seeds_to_decide && row.pours_to_decide) {
+        return text + "limited by both sides: " + std::to_string(*row.seeds_to_decide) +
+               " seeds and " + std::to_string(*row.pours_to_decide) + " pours decide";
+    }
+    return text + "no depth up to " + std::to_string(kMostProjected) +
+           " seeds decides (the estimate on the margin)";
 }
 
 std::string sequential_csv_fields(const MetricRow& row) {

@@ -15,7 +15,10 @@
 ///              last look (pours_to_decide; the test at the last look's level);
 ///   candidate  neither, but more candidate seeds than --max-seeds would (seeds_to_decide
 ///              above it);
-///   ""         no side alone up to 10⁴ (the estimate sits on the margin).
+///   both       no side alone up to 10⁴, but both grown in their present proportion would
+///              (seeds_to_decide candidate seeds and pours_to_decide pours, the smallest
+///              such pair, at the last look's level);
+///   ""         not even both up to 10⁴ seeds (the estimate sits on the margin).
 
 #include <cstddef>
 #include <string>

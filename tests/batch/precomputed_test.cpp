@@ -13,6 +13,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -133,6 +134,18 @@ BOOST_AUTO_TEST_CASE(reports_from_precomputed_metrics) {
         BOOST_TEST(rows.at(metric).at(19) == "inconclusive", metric);  // the verdict column
         BOOST_TEST(rows.at(metric).at(16) == "not measured", metric);
     }
+    // Both sides from batch rows: nothing to draw for g(r), P(Z) or φ(y), so those plots are
+    // left out (an empty g(r) plot made gnuplot fail, "plots skipped"); Z(δ) is drawn.
+    BOOST_REQUIRE(run(compare + " report --no-voronoi --out rows-only --metrics summary.csv --a " +
+                      a + " --b " + b) == 0);
+    std::vector<std::string> drawn;
+    for (const auto& entry : fs::directory_iterator(dir / "rows-only" / "plots")) {
+        if (entry.path().extension() == ".svg") {
+            drawn.push_back(entry.path().filename().string());
+        }
+    }
+    BOOST_TEST(drawn == std::vector<std::string>{"c0_N250_zdelta.svg"},
+               boost::test_tools::per_element());
     BOOST_TEST(slurp(dir / "errors").empty(), slurp(dir / "errors"));
     // A metrics file whose P(Z) is not an array is refused naming the entry (it was
     // "[json.exception.type_error.302] type must be array, but is string").

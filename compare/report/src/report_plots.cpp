@@ -267,8 +267,9 @@ void write_pz_plot(std::ostringstream& gp, const fs::path& plots, const PlotPane
             const auto& curve = panel.curves[k];
             const std::string file =
                 panel.stem + "_pz_" + std::to_string(k) + "_" + names[t] + ".dat";
-            write_text_file(plots / file,
-                            columns(integers(curve.curves->p_z[t].size()), curve.curves->p_z[t]));
+            static const std::vector<double> kNone;
+            const auto& p_z = t < curve.curves->p_z.size() ? curve.curves->p_z[t] : kNone;
+            write_text_file(plots / file, columns(integers(p_z.size()), p_z));
             // The second tolerance's curves dashed, when both are shown.
             const std::string line =
                 t == plotted.front() ? styles[k].line : dashed(styles[k].line, " dt 4");
@@ -293,7 +294,7 @@ void write_zdelta_plot(std::ostringstream& gp, const fs::path& plots, const Plot
         std::vector<double> deltas;
         std::vector<double> z;
         for (std::size_t t = 0; t < tolerances.size(); ++t) {
-            if (tolerances[t] > 0.0) {
+            if (tolerances[t] > 0.0 && t < curve.curves->z_mean.size()) {
                 deltas.push_back(tolerances[t]);
                 z.push_back(curve.curves->z_mean[t]);
             }
@@ -322,17 +323,37 @@ void write_phiy_plot(std::ostringstream& gp, const fs::path& plots, const PlotPa
     gp << "\n";
 }
 
-/// The four plots of a panel; their SVG paths (relative to the report) go to `files`.
+/// Whether some curve of `panel` holds the data `has` asks for (packs taken from a
+/// `--metrics` summary hold no g(r), P(Z) or φ(y): their plots are left out, not drawn empty).
+template <class Has>
+bool any_curve(const PlotPanel& panel, const Has& has) {
+    return std::any_of(panel.curves.begin(), panel.curves.end(),
+                       [&](const PlotCurve& c) { return c.curves != nullptr && has(*c.curves); });
+}
+
+/// The four plots of a panel, each when some curve has its data; their SVG paths
+/// (relative to the report) go to `files`.
 void write_panel(std::ostringstream& gp, const fs::path& plots, const PlotPanel& panel,
                  std::vector<std::string>& files) {
-    write_gr_plot(gp, plots, panel);
-    files.push_back("plots/" + panel.stem + "_gr.svg");
-    write_pz_plot(gp, plots, panel);
-    files.push_back("plots/" + panel.stem + "_pz.svg");
-    write_zdelta_plot(gp, plots, panel);
-    files.push_back("plots/" + panel.stem + "_zdelta.svg");
-    write_phiy_plot(gp, plots, panel);
-    files.push_back("plots/" + panel.stem + "_phiy.svg");
+    const auto& tolerances = coordination_tolerances();
+    if (any_curve(panel, [](const auto& c) { return !c.gr.empty(); })) {
+        write_gr_plot(gp, plots, panel);
+        files.push_back("plots/" + panel.stem + "_gr.svg");
+    }
+    if (any_curve(panel, [&](const auto& c) {
+            return c.p_z.size() == tolerances.size() && !c.p_z[kHeadlinePzTolerance].empty();
+        })) {
+        write_pz_plot(gp, plots, panel);
+        files.push_back("plots/" + panel.stem + "_pz.svg");
+    }
+    if (any_curve(panel, [&](const auto& c) { return c.z_mean.size() == tolerances.size(); })) {
+        write_zdelta_plot(gp, plots, panel);
+        files.push_back("plots/" + panel.stem + "_zdelta.svg");
+    }
+    if (any_curve(panel, [](const auto& c) { return !c.phi_y.empty(); })) {
+        write_phiy_plot(gp, plots, panel);
+        files.push_back("plots/" + panel.stem + "_phiy.svg");
+    }
 }
 
 /// Runs gnuplot on plots/plots.gp (its output in plots/gnuplot.log) and checks that every

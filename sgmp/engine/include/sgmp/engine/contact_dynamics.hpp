@@ -30,7 +30,9 @@
 /// (sgmp/engine/docs/relax-certified.md); the frictional settling needs it. With inertia
 /// the polish at smaller steps (below) runs from rest, and a sphere that starts to move
 /// there (a residual above `shrink_below`) sends the settling back to the first step, at
-/// most 5 times. Keeping every velocity,
+/// most 5 times. With friction (`Sor`), whose steps end at their sweep cap, the settling
+/// ends at rest only once every contact that carried a force is closed to 0.5·10⁻⁶·d (at
+/// most 20 more polish steps, else it ends stalled). Keeping every velocity,
 /// damped, pumped energy in the same way. From rest, a step is the proximal step
 ///
 ///     min Σᵢ mᵢ·|cᵢ' − cᵢ + h²·ŷ|²/2   over the linearised hard-sphere constraints.
@@ -124,7 +126,10 @@ struct ContactDynamicsOptions {
     bool inertia = false;           ///< keep velocities while their power is positive
     double step_cap = 0.02;         ///< largest displacement per step, over d
     double sweep_tolerance = 1e-7;  ///< NSGS ends when no force changes by more, m·g
-    int max_sweeps = 500;           ///< sweeps (APGD iterations, MPRGP products) per step
+    /// With inertia: the tolerance of the steps at the first h (the pack still moving); the
+    /// polish at smaller h solves to sweep_tolerance. 0: sweep_tolerance throughout.
+    double moving_sweep_tolerance = 0.0;
+    int max_sweeps = 500;  ///< sweeps (APGD iterations, MPRGP products) per step
     /// MPRGP only: ω of its symmetric Gauss–Seidel preconditioner, in [0, 2); 0: none.
     double ssor = 1.0;
     /// Sliding friction μ ≥ 0 of pairs and walls: above 0 every contact carries a force

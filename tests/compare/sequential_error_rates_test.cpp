@@ -14,11 +14,13 @@
 #include <string>
 #include <vector>
 
+#include "scalar_centres.hpp"
 #include "sgmp/report/agreement.hpp"
 #include "sgmp/report/equivalence.hpp"
 #include "sgmp/report/group_sequential.hpp"
 
 using namespace sgmp::report;
+using sgmp::report::test::centre_of;
 
 namespace {
 
@@ -26,26 +28,6 @@ constexpr double kStated = 0.05;
 
 double binomial_se(std::size_t rows) {
     return std::sqrt(kStated * (1 - kStated) / double(rows));
-}
-
-/// A physically possible centre for each scalar rule (check_physical), in rule order.
-double centre_of(const MetricRule& rule) {
-    if (rule.name == "phi" || rule.name == "voronoi_phi_mean") {
-        return 0.60;
-    }
-    if (rule.name.rfind("z_mean", 0) == 0) {
-        return 6.0;
-    }
-    if (rule.name == "split_ratio" || rule.name == "q6_local_mean") {
-        return 0.5;
-    }
-    if (rule.name == "voronoi_phi_sd") {
-        return 0.1;
-    }
-    if (rule.name == "q6_global") {
-        return 0.3;
-    }
-    return 0.0;  // the overlap metrics (info): none
 }
 
 /// A pack of scalar metrics only: each judged rule at its centre + offset + σ·N(0, 1),

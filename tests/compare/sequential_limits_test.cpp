@@ -10,32 +10,14 @@
 #include <string>
 #include <vector>
 
+#include "scalar_centres.hpp"
 #include "sgmp/report/agreement.hpp"
 #include "sgmp/report/group_sequential.hpp"
 
 using namespace sgmp::report;
+using sgmp::report::test::centre_of;
 
 namespace {
-
-/// A physically possible centre of each scalar rule (check_physical).
-double centre_of(const MetricRule& rule) {
-    if (rule.name == "phi" || rule.name == "voronoi_phi_mean") {
-        return 0.60;
-    }
-    if (rule.name.rfind("z_mean", 0) == 0) {
-        return 6.0;
-    }
-    if (rule.name == "split_ratio" || rule.name == "q6_local_mean") {
-        return 0.5;
-    }
-    if (rule.name == "voronoi_phi_sd") {
-        return 0.1;
-    }
-    if (rule.name == "q6_global") {
-        return 0.3;
-    }
-    return 0.0;
-}
 
 /// Pack `index` of a group: every judged scalar at its centre + offset·m ± m.
 PackSummary pack(std::size_t index, double offset_share) {

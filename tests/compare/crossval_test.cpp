@@ -233,6 +233,30 @@ BOOST_AUTO_TEST_CASE(tuned_comparisons_are_withheld_and_disclosed) {
     }
 }
 
+BOOST_AUTO_TEST_CASE(a_relaxed_mode_partly_certified_says_so_and_not_that_it_is_unstable) {
+    // loose-random relaxed, 2 packs at N = 150 with certificates, one of them not certified:
+    // the answer counts the certified packs; it never reads Z as instability where
+    // certificates decide (a certified pack is an equilibrium whatever its Z).
+    Report report = sample_report();
+    Group relaxed{"loose-random", {}};
+    for (const char* certified : {"true", "false"}) {
+        PackSummary p;
+        p.count = 150;
+        p.provenance = {{"relax", "frictional"}, {"certified", certified}};
+        relaxed.packs.push_back(p);
+    }
+    report.groups.push_back(relaxed);
+    const std::string md = render_crossval_markdown(cross_validate(report, sample_manifest(), {}));
+    const auto line_start = md.find("- **loose-random**: ");
+    BOOST_TEST_REQUIRE(line_start != std::string::npos);
+    const std::string line = md.substr(line_start, md.find('\n', line_start) - line_start);
+    BOOST_TEST(line.find("Certified equilibria (contact forces balance every sphere): at N = 150, "
+                         "1 of 2 packs; a count with an uncertified pack is not judged.") !=
+                   std::string::npos,
+               line);
+    BOOST_TEST(line.find("cannot be mechanically stable") == std::string::npos, line);
+}
+
 BOOST_AUTO_TEST_CASE(holm_keeps_what_the_step_down_rule_keeps) {
     // Holm at 5 % over 4 p-values: 0.01 ≤ 0.05/4 kept, 0.02 ≤ 0.05/3 fails: one rejection;
     // order does not matter.

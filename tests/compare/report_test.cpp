@@ -165,7 +165,7 @@ BOOST_AUTO_TEST_CASE(a_relaxed_pack_without_a_true_certificate_is_not_judged) {
     relaxed.packs[0].provenance.emplace_back("certificate_residual_max", "1.45");
     const Report r = build_report({relaxed, group("B", 1.05, 3)}, plan_of({{0, 1}}));
     const Comparison& c = r.comparisons.at(0);
-    BOOST_TEST(c.invalid == "1 pack not certified (largest residual 1.45 m*g)");
+    BOOST_TEST(c.invalid == "1 pack not certified (largest residual 1.45 m·g)");
     BOOST_TEST(c.count_of(Verdict::Info) == c.rows.size());
     BOOST_TEST(c.row("phi").tolerance_rule.rfind("not certified (would be ", 0) == 0u);
     // Certified, or claiming no equilibrium (no relax key): judged.

@@ -51,9 +51,11 @@ void fill_from_packs(HeadlineRow& row, const Group& group) {
                 ++heights;
             }
             certified += key == "certified" && value == "true" ? 1 : 0;
+            row.with_certificate += key == "certified" ? 1 : 0;
         }
     }
     row.certified = packs > 0 && certified == packs;
+    row.certified_packs = certified;
     if (heights > 0) {
         row.start_height = height_sum / static_cast<double>(heights);
     }

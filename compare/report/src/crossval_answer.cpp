@@ -119,14 +119,24 @@ std::string relation(const StandIn& s, const std::vector<const HeadlineRow*>& ro
     return out.str();
 }
 
-/// Where the mode's packs cannot be mechanically stable, or that they are certified.
+/// Where the mode's packs cannot be mechanically stable, or that they are certified (all, or
+/// how many where some are not: a certificate, not Z, decides for a relaxed mode).
 std::string stability(const std::vector<const HeadlineRow*>& rows) {
     std::vector<std::size_t> unstable;
+    std::string partly;
     double z_lo = std::numeric_limits<double>::infinity();
     double z_hi = 0.0;
     bool certified = !rows.empty();
     for (const HeadlineRow* row : rows) {
         certified = certified && row->certified;
+        if (row->with_certificate > 0) {
+            if (!row->certified) {
+                partly += (partly.empty() ? "" : "; ") + std::string("at N = ") +
+                          std::to_string(row->count) + ", " + std::to_string(row->certified_packs) +
+                          " of " + std::to_string(row->with_certificate) + " packs";
+            }
+            continue;
+        }
         const bool measured = std::any_of(row->against.begin(), row->against.end(),
                                           [](const HeadlineVerdict& v) { return !v.rows.empty(); });
         const double z = measured
@@ -140,6 +150,10 @@ std::string stability(const std::vector<const HeadlineRow*>& rows) {
     }
     if (certified) {
         return "Its packs are certified equilibria (contact forces balance every sphere).";
+    }
+    if (!partly.empty()) {
+        return "Certified equilibria (contact forces balance every sphere): " + partly +
+               "; a count with an uncertified pack is not judged.";
     }
     if (unstable.empty()) {
         return "";

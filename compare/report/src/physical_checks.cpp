@@ -87,7 +87,7 @@ std::string uncertified_reason(const PackSummary& pack) {
         return "no equilibrium certificate for --relax " + relax;
     }
     char text[64];
-    std::snprintf(text, sizeof text, "largest residual %.3g m*g",
+    std::snprintf(text, sizeof text, "largest residual %.3g m·g",
                   std::strtod(residual.c_str(), nullptr));
     return text;
 }

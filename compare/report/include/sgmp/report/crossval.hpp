@@ -50,6 +50,9 @@ struct HeadlineRow {
     std::optional<double> start_height;    // mean `start_height` key of the packs
     /// Every pack at this count carries an equilibrium certificate (`certified=true`).
     bool certified = false;
+    /// Packs at this count that carry a certificate (a `certified` key), and those certified.
+    std::size_t with_certificate = 0;
+    std::size_t certified_packs = 0;
     std::optional<ThesisStart> thesis_start;
 
     /// Candidate mean of a scalar metric (from the first comparison).

@@ -442,6 +442,14 @@ ContactDynamicsStats settle_by_contact_dynamics(std::vector<Particle>& particles
             // end.
             const bool moving = live.inertia && stats.residual_max > 2.0 * best;
             if (best > 0.5 * best_before && best_before < options.shrink_below && !moving) {
+                if (smallest && options.inertia && returns < kMostReturns) {
+                    // A creep the polish cannot end (with inertia): back to the first step.
+                    shrink_step(s, s.h / h_first);
+                    set_moving(true);
+                    ++returns;
+                    best_before = best = INFINITY;
+                    continue;
+                }
                 if (smallest) {
                     stats.stalled = true;
                     break;

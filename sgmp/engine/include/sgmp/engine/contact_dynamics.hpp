@@ -29,8 +29,8 @@
 /// settling with it stalled uncertified after 223 s, without it the pack was certified
 /// (sgmp/engine/docs/relax-certified.md); the frictional settling needs it. With inertia
 /// the polish at smaller steps (below) runs from rest, and a sphere that starts to move
-/// there (a residual above `shrink_below`) sends the settling back to the first step, at
-/// most 5 times. With friction (`Sor`), whose steps end at their sweep cap, the settling
+/// there (a residual above `shrink_below`), or a stall at the smallest step, sends the
+/// settling back to the first step, at most 5 times. With friction (`Sor`), whose steps end at their sweep cap, the settling
 /// ends at rest only once every contact that carried a force is closed to 0.5·10⁻⁶·d (at
 /// most 20 more polish steps, else it ends stalled). Keeping every velocity,
 /// damped, pumped energy in the same way. From rest, a step is the proximal step

@@ -138,6 +138,22 @@ void keep_list(Dynamics& s) {
     }
 }
 
+/// The separation cⱼ − cᵢ of spheres i and j (nearest image when periodic) and its length.
+struct Separation {
+    double dx = 0.0;
+    double dy = 0.0;
+    double dz = 0.0;
+    double dist = 0.0;
+};
+
+Separation separation(const Dynamics& s, std::size_t i, std::size_t j) {
+    const std::vector<Ball>& b = s.balls;
+    double dx = b[j].x - b[i].x, dz = b[j].z - b[i].z;
+    const double dy = b[j].y - b[i].y;
+    s.box.to_nearest_image(dx, dz);
+    return {dx, dy, dz, std::sqrt(dx * dx + dy * dy + dz * dz)};
+}
+
 /// The step's contacts: listed pairs and walls whose gap one step may close (< 2·cap), with
 /// the last step's impulses.
 void gather_contacts(Dynamics& s) {
@@ -149,10 +165,7 @@ void gather_contacts(Dynamics& s) {
         const auto near = s.list.of(i);
         for (std::size_t k = 0; k < near.size(); ++k) {
             const std::uint32_t j = near[k];
-            double dx = b[j].x - b[i].x, dz = b[j].z - b[i].z;
-            const double dy = b[j].y - b[i].y;
-            s.box.to_nearest_image(dx, dz);
-            const double dist = std::sqrt(dx * dx + dy * dy + dz * dz);
+            const auto [dx, dy, dz, dist] = separation(s, i, j);
             const double gap = dist - b[i].r - b[j].r;
             if (gap >= reach) {
                 continue;
@@ -282,10 +295,7 @@ double carrying_gap_max(const Dynamics& s) {
             const Vec3 centre(b[c.a].x, b[c.a].y, b[c.a].z);
             gap = wall_gaps(centre, b[c.a].r, s.box)[c.wall].gap;
         } else {
-            double dx = b[c.b].x - b[c.a].x, dz = b[c.b].z - b[c.a].z;
-            const double dy = b[c.b].y - b[c.a].y;
-            s.box.to_nearest_image(dx, dz);
-            gap = std::sqrt(dx * dx + dy * dy + dz * dz) - b[c.a].r - b[c.b].r;
+            gap = separation(s, c.a, c.b).dist - b[c.a].r - b[c.b].r;
         }
         widest = std::max(widest, gap);
     }
@@ -398,6 +408,21 @@ ContactDynamicsStats settle_by_contact_dynamics(std::vector<Particle>& particles
     };
     set_moving(options.inertia);
     int returns = 0;
+    // Back to the first step with inertia, at most kMostReturns times; false when none is left.
+    const auto back_to_first_step = [&] {
+        if (!options.inertia || returns >= kMostReturns) {
+            return false;
+        }
+        shrink_step(s, s.h / h_first);
+        set_moving(true);
+        ++returns;
+        best_before = best = INFINITY;
+        return true;
+    };
+    const auto polish = [&] {  // the next smaller step, from rest
+        shrink_step(s, std::min(options.step_shrink, s.h / h_min));
+        set_moving(false);
+    };
     int open_polish = 0;  // polish steps at rest with a carrying contact still open
     while (stats.steps < options.max_steps) {
         // Each shrink of h multiplies the sweeps by the same factor: the smaller steps are
@@ -424,17 +449,11 @@ ContactDynamicsStats settle_by_contact_dynamics(std::vector<Particle>& particles
                 stats.stalled = true;  // the certificate says whether the pack is one
                 break;
             }
-            shrink_step(s, std::min(options.step_shrink, s.h / h_min));  // polish the gaps
-            set_moving(false);
+            polish();  // the gaps
             continue;
         }
-        if (options.inertia && !live.inertia && stats.residual_max > options.shrink_below &&
-            returns < kMostReturns) {
-            shrink_step(s, s.h / h_first);  // back to the first step
-            set_moving(true);
-            ++returns;
-            best_before = best = INFINITY;
-            continue;
+        if (!live.inertia && stats.residual_max > options.shrink_below && back_to_first_step()) {
+            continue;  // a sphere moved in the polish
         }
         if (stats.steps % options.stall_window == 0) {
             // Stalled near an equilibrium (a creep far from one goes on at the same h; with
@@ -442,20 +461,14 @@ ContactDynamicsStats settle_by_contact_dynamics(std::vector<Particle>& particles
             // end.
             const bool moving = live.inertia && stats.residual_max > 2.0 * best;
             if (best > 0.5 * best_before && best_before < options.shrink_below && !moving) {
-                if (smallest && options.inertia && returns < kMostReturns) {
-                    // A creep the polish cannot end (with inertia): back to the first step.
-                    shrink_step(s, s.h / h_first);
-                    set_moving(true);
-                    ++returns;
-                    best_before = best = INFINITY;
-                    continue;
+                if (smallest && back_to_first_step()) {
+                    continue;  // a creep the polish cannot end
                 }
                 if (smallest) {
                     stats.stalled = true;
                     break;
                 }
-                shrink_step(s, std::min(options.step_shrink, s.h / h_min));
-                set_moving(false);
+                polish();
             }
             best_before = std::min(best_before, best);
             best = INFINITY;

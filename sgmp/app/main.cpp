@@ -236,7 +236,7 @@ int run_pack(const Options& o) {
             : r.phase == Phase::Dynamics
                 ? "settling as hard spheres: contact-dynamics step " +
                       std::to_string(r.settle_iteration) + ", residual " +
-                      format_number(r.settle_trust) + " m·g"
+                      format_number(r.settle_trust) + " m*g"
                 : "settling as hard spheres: LP iteration " + std::to_string(r.settle_iteration) +
                       ", trust region " + format_number(r.settle_trust) + " d";
         progress.update("sgmp: " + text + seconds_text(), 1 + static_cast<int>(r.phase));

@@ -416,6 +416,7 @@ ContactDynamicsStats settle_by_contact_dynamics(std::vector<Particle>& particles
         shrink_step(s, s.h / h_first);
         set_moving(true);
         ++returns;
+        stats.returns = returns;
         best_before = best = INFINITY;
         return true;
     };
@@ -443,6 +444,7 @@ ContactDynamicsStats settle_by_contact_dynamics(std::vector<Particle>& particles
                 break;
             }
             if (smallest && ++open_polish < kMostOpenPolish) {
+                stats.closing_steps = open_polish;
                 continue;
             }
             if (smallest) {
@@ -462,6 +464,7 @@ ContactDynamicsStats settle_by_contact_dynamics(std::vector<Particle>& particles
             const bool moving = live.inertia && stats.residual_max > 2.0 * best;
             if (best > 0.5 * best_before && best_before < options.shrink_below && !moving) {
                 if (smallest && back_to_first_step()) {
+                    ++stats.stall_returns;
                     continue;  // a creep the polish cannot end
                 }
                 if (smallest) {

@@ -191,6 +191,9 @@ void record_relaxation(const PackRequest& request, const RelaxStats& stats, Meta
     if (dynamics) {
         m.set_integer("relax_settle_sweeps", stats.settle_sweeps);
         m.set_number("relax_settle_residual", stats.settle_residual);
+        m.set_integer("relax_settle_returns", stats.settle_returns);
+        m.set_integer("relax_settle_stall_returns", stats.settle_stall_returns);
+        m.set_integer("relax_settle_closing_steps", stats.settle_closing_steps);
     }
     m.set_number("relax_settle_move_max", stats.settle_move_max);
     m.set_number("relax_settle_energy_drop", stats.settle_energy_drop);

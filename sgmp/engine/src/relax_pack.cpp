@@ -61,6 +61,9 @@ void settle_by_dynamics(std::vector<Particle>& particles, const Container& conta
     stats.settle_sweeps = settle.sweeps;
     stats.settle_converged = settle.converged;
     stats.settle_stalled = settle.stalled;
+    stats.settle_returns = settle.returns;
+    stats.settle_stall_returns = settle.stall_returns;
+    stats.settle_closing_steps = settle.closing_steps;
     stats.settle_move_max = settle.move_max;
     stats.settle_energy_drop = settle.energy_drop;
     stats.settle_residual = settle.residual_max;

@@ -30,10 +30,10 @@
 /// (sgmp/engine/docs/relax-certified.md); the frictional settling needs it. With inertia
 /// the polish at smaller steps (below) runs from rest, and a sphere that starts to move
 /// there (a residual above `shrink_below`), or a stall at the smallest step, sends the
-/// settling back to the first step, at most 5 times. With friction (`Sor`), whose steps end at their sweep cap, the settling
-/// ends at rest only once every contact that carried a force is closed to 0.5·10⁻⁶·d (at
-/// most 20 more polish steps, else it ends stalled). Keeping every velocity,
-/// damped, pumped energy in the same way. From rest, a step is the proximal step
+/// settling back to the first step, at most 5 times. With friction (`Sor`), whose steps end at
+/// their sweep cap, the settling ends at rest only once every contact that carried a force is
+/// closed to 0.5·10⁻⁶·d (at most 20 more polish steps, else it ends stalled). Keeping every
+/// velocity, damped, pumped energy in the same way. From rest, a step is the proximal step
 ///
 ///     min Σᵢ mᵢ·|cᵢ' − cᵢ + h²·ŷ|²/2   over the linearised hard-sphere constraints.
 /// The law is Signorini's at the velocity level with the gap as a
@@ -152,6 +152,9 @@ struct ContactDynamicsStats {
     std::size_t contacts = 0;   ///< contacts carrying a force at the end
     double move_max = 0.0;      ///< largest displacement of a sphere, over d
     double energy_drop = 0.0;   ///< Σ wᵢ·(yᵢ before − yᵢ after)/d, m·g·d
+    int returns = 0;            ///< returns to the first step (with inertia), all causes
+    int stall_returns = 0;      ///< of which after a stall at the smallest step
+    int closing_steps = 0;      ///< smallest-step polish steps at rest with a carrying contact open
     /// The last step's forces f_c = p_c/h > 0, in m·g, on the caller's sphere indices.
     std::vector<ContactForce> forces;
 };

@@ -100,6 +100,9 @@ struct RelaxStats {
     std::vector<ContactForce> settle_forces;
     bool settle_stalled = false;   ///< the contact dynamics stalled at its smallest step
     long long settle_sweeps = 0;   ///< products with W of the contact dynamics (frictionless)
+    int settle_returns = 0;        ///< the contact dynamics' returns to its first step
+    int settle_stall_returns = 0;  ///< of which after a stall at the smallest step
+    int settle_closing_steps = 0;  ///< its polish steps with a carrying contact still open
     double settle_residual = 0.0;  ///< largest force residual of its last step, m·g
     double soft_seconds = 0.0;     ///< wall clock of the soft stages and the finish (not recorded)
     double settle_seconds = 0.0;   ///< wall clock of the settling (not recorded)

@@ -205,7 +205,7 @@ std::vector<std::vector<double>> scattering_as(const std::vector<double>& var, s
 
 BOOST_AUTO_TEST_SUITE(dem_classes)
 
-// Measured when the margins were declared (compare/README.md "Margins"): 72 judgments,
+// Measured when the margins were declared (compare/docs/equivalence-tests.md "Margins"): 72 judgments,
 // 59 right, 0 wrong, 13 inconclusive (the split ratio within a family at every count, g(r)
 // at every count: both are noisier at 2 seeds than their margins); 60/0/12 with the L2 test
 // of g(r) (commit 430ce8a, revised after this set was seen). The test keeps the

@@ -1,3 +1,5 @@
+// Over 500 lines with reason: the one pair pass behind Z(δ), g(r), the split ratio and Q6
+// (docs/pair-passes.md); its setup, per-column sums and finishing share private types.
 #include "sgmp/metrics/local_structure.hpp"
 
 #include <algorithm>

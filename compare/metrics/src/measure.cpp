@@ -222,15 +222,12 @@ std::vector<Particle> spatially_ordered(const std::vector<Particle>& particles, 
     return ordered;
 }
 
-Measurement measure(const Pack& pack, const MeasureOptions& options) {
-    validate(options);
-    if (pack.particles.empty()) {
-        throw PackContentError("the pack has no particles");
-    }
-    release_free_heap();
-    Stopwatch watch;
+namespace {
+
+/// The pack's sizes, container, region and top (Measurement's first fields), checked: a
+/// positive finite mean diameter, at most kMaxSlabs slabs.
+void describe_pack(const Pack& pack, const MeasureOptions& options, Measurement& m) {
     const auto& input = pack.particles;
-    Measurement m;
     m.count = input.size();
     m.mean_diameter = mean_diameter(pack);
     const auto [lo, hi] = std::minmax_element(
@@ -258,67 +255,69 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
                                  " slabs from the floor to the top sphere; at most " +
                                  std::to_string(static_cast<long>(kMaxSlabs)) + " are allowed");
     }
-    // Before any pair search: spheres clumped past the hard-sphere limit (crowding.hpp)
-    // would make every pair pass O(N²), and their metrics mean nothing.
-    if (const auto crowded = overcrowded_cube(input)) {
-        const Particle& p = input[crowded->index];
-        throw PackContentError(
-            "sphere id " + std::to_string(p.id) + " at (" + format_number(p.center.x()) + ", " +
-            format_number(p.center.y()) + ", " + format_number(p.center.z()) +
-            "): " + std::to_string(crowded->centres) +
-            " sphere centres in one cube of side 2*r_min = " + format_number(crowded->cube_side) +
-            " with it; at most " + std::to_string(kMaxCentresPerCube) +
-            " fit unless spheres overlap by more than the smallest radius, which makes the "
-            "pair metrics meaningless");
-    }
-    std::vector<Particle> particles = spatially_ordered(pack.particles, d, options.threads);
-    for (Particle& p : particles) {  // a foreign file's centres may lie a period out
-        p.center = m.container.wrapped(p.center);
-    }
-    // With periodic sides every pass but the overlaps' (which images on its own) and the
-    // tessellation's (likewise) runs over the particles and their images; origins are the
-    // particles alone.
-    const double reach = pair_reach(options, d, m.max_radius);
-    std::vector<Particle> imaged;
-    if (m.container.periodic) {
-        imaged = with_images(particles, m.container, reach);
-    }
-    const std::vector<Particle>& field = m.container.periodic ? imaged : particles;
+}
 
+/// Before any pair search: spheres clumped past the hard-sphere limit (crowding.hpp) would
+/// make every pair pass O(N²), and their metrics mean nothing.
+void refuse_crowding(const std::vector<Particle>& input) {
+    const auto crowded = overcrowded_cube(input);
+    if (!crowded) {
+        return;
+    }
+    const Particle& p = input[crowded->index];
+    throw PackContentError(
+        "sphere id " + std::to_string(p.id) + " at (" + format_number(p.center.x()) + ", " +
+        format_number(p.center.y()) + ", " + format_number(p.center.z()) +
+        "): " + std::to_string(crowded->centres) +
+        " sphere centres in one cube of side 2*r_min = " + format_number(crowded->cube_side) +
+        " with it; at most " + std::to_string(kMaxCentresPerCube) +
+        " fit unless spheres overlap by more than the smallest radius, which makes the "
+        "pair metrics meaningless");
+}
+
+/// The indices of the particles whose centres lie in the region (the origins of every
+/// per-sphere mean); refused when there is none.
+std::vector<Index> origins_in(const std::vector<Particle>& particles, const Box& region) {
     std::vector<Index> origins;
     for (std::size_t i = 0; i < particles.size(); ++i) {
-        if (m.region.contains(particles[i].center)) {
+        if (region.contains(particles[i].center)) {
             origins.push_back(static_cast<Index>(i));
         }
     }
     if (origins.empty()) {
-        throw ParameterError("region", "'" + describe(m.region) + "'", "holds no particle centre");
+        throw ParameterError("region", "'" + describe(region) + "'", "holds no particle centre");
     }
-    stage_times.index = watch.lap();
+    return origins;
+}
 
-    m.phi = packing_fraction(field, m.region);
-    stage_times.phi = watch.lap();
-    m.phi_profile = packing_fraction_profile(field, m.region, m.container.floor,
-                                             std::max(m.top, m.region.hi.y()),
-                                             options.slab_thickness * d, options.threads);
-    if (has_species(particles)) {
-        std::map<int, std::vector<Particle>> of_species;
-        for (const Particle& p : field) {
-            of_species[p.species].push_back(p);
-        }
-        for (const auto& [species, members] : of_species) {
-            m.phi_profile_by_species.push_back(
-                {species, packing_fraction_profile(members, m.region, m.container.floor,
-                                                   std::max(m.top, m.region.hi.y()),
-                                                   options.slab_thickness * d, options.threads)
-                              .phi});
-        }
+/// φ(y) of the whole pack, and of each species when the pack has species.
+void measure_phi_profiles(const std::vector<Particle>& field, bool species,
+                          const MeasureOptions& options, Measurement& m) {
+    const double top = std::max(m.top, m.region.hi.y());
+    const double slab = options.slab_thickness * m.mean_diameter;
+    m.phi_profile =
+        packing_fraction_profile(field, m.region, m.container.floor, top, slab, options.threads);
+    if (!species) {
+        return;
     }
-    stage_times.phi_profile = watch.lap();
-    m.overlaps = measure_overlaps(particles, m.container, d, options.overlap_floor,
-                                  options.worst_count, options.threads);
-    stage_times.overlaps = watch.lap();
+    std::map<int, std::vector<Particle>> of_species;
+    for (const Particle& p : field) {
+        of_species[p.species].push_back(p);
+    }
+    for (const auto& [id, members] : of_species) {
+        m.phi_profile_by_species.push_back(
+            {id, packing_fraction_profile(members, m.region, m.container.floor, top, slab,
+                                          options.threads)
+                     .phi});
+    }
+}
 
+/// The pair passes' options: the tolerances, g(r)'s bins and density, Q6's cutoff and the
+/// space the origins' density is taken over.
+LocalStructureOptions local_options(const std::vector<Particle>& particles,
+                                    const MeasureOptions& options, const Measurement& m,
+                                    double reach) {
+    const double d = m.mean_diameter;
     LocalStructureOptions local;
     local.tolerances = coordination_tolerances();
     local.mean_diameter = d;
@@ -332,22 +331,70 @@ Measurement measure(const Pack& pack, const MeasureOptions& options) {
                 m.container, reach);
     local.container = m.container;
     local.threads = options.threads;
+    return local;
+}
+
+/// The per-species options of the same passes.
+SpeciesStructureOptions species_options(const LocalStructureOptions& local, const Box& region,
+                                        std::size_t originals, unsigned threads) {
+    SpeciesStructureOptions per_species;
+    per_species.region = region;
+    per_species.space = local.space;
+    per_species.mean_diameter = local.mean_diameter;
+    per_species.bin_width_over_d = local.bin_width_over_d;
+    per_species.bins = local.bins;
+    per_species.density_rule = local.density_rule;
+    per_species.tolerances = local.tolerances;
+    per_species.originals = originals;
+    per_species.threads = threads;
+    return per_species;
+}
+
+}  // namespace
+
+Measurement measure(const Pack& pack, const MeasureOptions& options) {
+    validate(options);
+    if (pack.particles.empty()) {
+        throw PackContentError("the pack has no particles");
+    }
+    release_free_heap();
+    Stopwatch watch;
+    Measurement m;
+    describe_pack(pack, options, m);
+    const double d = m.mean_diameter;
+    refuse_crowding(pack.particles);
+    std::vector<Particle> particles = spatially_ordered(pack.particles, d, options.threads);
+    for (Particle& p : particles) {  // a foreign file's centres may lie a period out
+        p.center = m.container.wrapped(p.center);
+    }
+    // With periodic sides every pass but the overlaps' (which images on its own) and the
+    // tessellation's (likewise) runs over the particles and their images; origins are the
+    // particles alone.
+    const double reach = pair_reach(options, d, m.max_radius);
+    std::vector<Particle> imaged;
+    if (m.container.periodic) {
+        imaged = with_images(particles, m.container, reach);
+    }
+    const std::vector<Particle>& field = m.container.periodic ? imaged : particles;
+    const std::vector<Index> origins = origins_in(particles, m.region);
+    stage_times.index = watch.lap();
+
+    m.phi = packing_fraction(field, m.region);
+    stage_times.phi = watch.lap();
+    measure_phi_profiles(field, has_species(particles), options, m);
+    stage_times.phi_profile = watch.lap();
+    m.overlaps = measure_overlaps(particles, m.container, d, options.overlap_floor,
+                                  options.worst_count, options.threads);
+    stage_times.overlaps = watch.lap();
+
+    const LocalStructureOptions local = local_options(particles, options, m, reach);
     m.local = measure_local_structure(field, origins, local);
     if (options.gr_thesis) {
         m.thesis_rdf = thesis_rdf(field, m.region, m.phi, options.gr_bin_width * d, local.bins);
     }
     stage_times.local = watch.lap();
-    SpeciesStructureOptions per_species;
-    per_species.region = m.region;
-    per_species.space = local.space;
-    per_species.mean_diameter = d;
-    per_species.bin_width_over_d = local.bin_width_over_d;
-    per_species.bins = local.bins;
-    per_species.density_rule = local.density_rule;
-    per_species.tolerances = local.tolerances;
-    per_species.originals = particles.size();
-    per_species.threads = options.threads;
-    m.species = measure_species_structure(field, per_species);
+    m.species = measure_species_structure(
+        field, species_options(local, m.region, particles.size(), options.threads));
     stage_times.species = watch.lap();
     if (options.voronoi) {
         VoronoiOptions voronoi;

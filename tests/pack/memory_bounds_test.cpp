@@ -130,10 +130,11 @@ BOOST_AUTO_TEST_CASE(an_error_quotes_at_most_a_short_excerpt_of_a_long_line) {
 }
 
 // Finding 6: 65,536 lines were buffered at once whatever their length: 60 lines of 15 MiB
-// took 989 MB. Now the block stops at 8 MiB, so the text buffered is below 24 MiB plus the
-// line being read. A gzip file of 8 lines of 15 MiB (120 MiB buffered before) is read in a
-// child allowed 80 MiB more address space than it maps (tolerance: the block, the line and
-// their growth need ~40 MiB; the old reader needs >= 120 MiB for the block alone).
+// took 989 MB. Now the block stops at 8 MiB, and a gzip stream that inflates more than 100×
+// past 4 MiB is refused (pack_file.cpp: pack text compresses about 3×): a gzip file of
+// 8 lines of 15 MiB (120 MiB buffered before) is refused in a child allowed 80 MiB more
+// address space than it maps (tolerance: the guard's 4 MiB, the block and the line being
+// read; the old reader needs >= 120 MiB for the block alone).
 BOOST_AUTO_TEST_CASE(long_gzip_lines_are_not_buffered_sixty_five_thousand_at_a_time) {
     TestDirectory scratch("memory_bounds_gzip");
     Pack pack;
@@ -154,11 +155,52 @@ BOOST_AUTO_TEST_CASE(long_gzip_lines_are_not_buffered_sixty_five_thousand_at_a_t
     const int status = in_child_with_memory(std::size_t{80} << 20, [&] {
         ReadOptions options;
         options.threads = 1;
-        if (read_pack_file(bomb, options).pack.particles.size() != 8) {
-            throw std::runtime_error("wrong count");
+        try {
+            read_pack_file(bomb, options);
+        } catch (const InputError& e) {
+            if (std::string(e.what()).find("inflating more than 100 times") != std::string::npos) {
+                return;
+            }
         }
+        throw std::runtime_error("not refused by the inflation guard");
     });
     BOOST_TEST(status == 0);
+}
+
+// Finding 6, second case: 20 M lines of one short sphere (388 KB gzipped) took 1.88 GB,
+// since each line is a sphere kept. Lines of one repeated sphere compress about 500×: 2·10⁶
+// of them (26 MB of text) are refused once 4 MiB have inflated, naming the ratio; 2·10⁵
+// random spheres (18 MB of text, about 2.5× compressed) still read.
+BOOST_AUTO_TEST_CASE(a_gzip_stream_of_repetition_is_refused_and_pack_text_is_not) {
+    TestDirectory scratch("memory_bounds_inflation");
+    const fs::path bomb = scratch.path() / "repeat.xyz.gz";
+    write_file_atomically(bomb, false, [&](std::ostream& out) {
+        out << "2000000\nProperties=species:S:1:pos:R:3:radius:R:1\n";
+        for (int i = 0; i < 2000000; ++i) {
+            out << "H 0 0 0 0.01\n";
+        }
+    });
+    BOOST_TEST(fs::file_size(bomb) < (std::uintmax_t{1} << 20));
+    try {
+        read_pack_file(bomb);
+        BOOST_FAIL("a stream of repetition was read");
+    } catch (const InputError& e) {
+        const std::string text = e.what();
+        BOOST_TEST(text.find("repeat.xyz.gz: gzip data inflating more than 100 times") !=
+                   std::string::npos);
+        BOOST_TEST(text.find('\n') == std::string::npos);
+    }
+    Pack spheres;
+    Random random(7);
+    for (int i = 0; i < 200000; ++i) {
+        spheres.particles.push_back(sphere(i + 1, random.uniform(-0.5, 0.5),
+                                           random.uniform(-0.5, 0.5), random.uniform(-0.5, 0.5),
+                                           0.001));
+    }
+    const fs::path text = scratch.path() / "random.xyz.gz";
+    write_pack_file(text, spheres, false);
+    BOOST_TEST(fs::file_size(text) > (std::uintmax_t{5} << 20));  // > 4 MiB inflated at < 4×
+    BOOST_TEST(read_pack_file(text).particles.size() == 200000u);
 }
 
 // Finding 4: 8,000 spheres at one point made every pair pass O(N²) (3.0 GB, 38 s in

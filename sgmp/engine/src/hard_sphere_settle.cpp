@@ -112,7 +112,7 @@ bool solve_step(ClpSimplex& model, const Step& st, const Basis& basis, Start sta
     } else {
         // No basis to start from (the first LP): the primal simplex from the feasible point
         // Δ = 0 (CLP's values pass) takes about 3,400 pivots at N = 1002, where the dual
-        // simplex from the slack basis took 10,800–86,800 (docs/relax-certified.md).
+        // simplex from the slack basis took 10,800–86,800 (notes/relax-certified-2026-12-06.md).
         double* u = model.primalColumnSolution();
         for (std::size_t k = 0; k < st.objective.size(); ++k) {
             u[k] = std::clamp(0.0, st.col_lower[k], st.col_upper[k]);

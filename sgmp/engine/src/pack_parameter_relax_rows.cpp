@@ -149,8 +149,8 @@ void add_settle_and_friction_rows(std::vector<Row>& rows) {
         "SSOR-preconditioned MPRGP, its forces the certificate's witness, 2-3x slower than lp "
         "at N = 1002, does not converge at N = 3000; frictional: NSGS with a Coulomb solve per "
         "contact in the cone inside the certificate's pyramid, mu*cos^2(pi/8), its force "
-        "vectors the certificate's witness, about 6-26 CPU s at N = 150 where lp takes "
-        "minutes: sgmp/engine/docs/relax-certified.md)");
+        "vectors the certificate's witness, about 6-50 CPU s at N = 150 where lp takes "
+        "minutes: sgmp/engine/docs/relaxation.md)");
     settle.recorded = [](const PackRequest& r) {
         return r.relax.mode != RelaxMode::None && r.relax.settle != RelaxSettle::Lp;
     };

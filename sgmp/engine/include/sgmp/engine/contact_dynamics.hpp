@@ -27,8 +27,8 @@
 /// 10⁻² m·g, which steps from rest take h²·Rᵢ at a time), but it also keeps the motion the
 /// unconverged contact problems cause: frictionless at N = 1002 (loose-random, seed 1) the
 /// settling with it stalled uncertified after 223 s, without it the pack was certified
-/// (sgmp/engine/docs/relax-certified.md); the frictional settling needs it. With inertia
-/// the polish at smaller steps (below) runs from rest, and a sphere that starts to move
+/// (sgmp/engine/notes/relax-certified-2026-12-06.md); the frictional settling needs it. With
+/// inertia the polish at smaller steps (below) runs from rest, and a sphere that starts to move
 /// there (a residual above `shrink_below`), or a stall at the smallest step, sends the
 /// settling back to the first step, at most 5 times. With friction (`Sor`), whose steps end at
 /// their sweep cap, the settling ends at rest only once every contact that carried a force is

@@ -89,7 +89,7 @@ struct RelaxParams {
 /// reach at N = 1002 (seeds 1–3) and 3000 (seed 1): the soft pack ends converged
 /// (max|Fᵢ| ≤ 10⁻⁴ m·g) with overlaps of about 5·10⁻⁴·d, and the hard-sphere settling that
 /// follows takes 2–6× fewer LPs than after the five unconverged stages from 2·10³
-/// (sgmp/engine/docs/relax-certified.md).
+/// (sgmp/engine/notes/relax-certified-2026-12-06.md).
 /// Frictional (and a request without relaxation): five stages from k = 2·10³ (ending at
 /// 2·10⁷), the first bounded at 5·√(H/g): the frictional stages do not converge anyway
 /// (relaxation-frictional-2026-11.md), and one converged stage at 2·10⁴ left the frictional

@@ -395,4 +395,21 @@ CrossValidation cross_validate(const Report& report, const std::vector<ManifestE
     return cv;
 }
 
+KeptDifference leading_difference(const StandIn& s) {
+    static const std::vector<std::string> leading =
+        metrics::ranked_metric_names(&metrics::MetricDescriptor::leading_rank);
+    for (const std::string& metric : leading) {
+        const KeptDifference* best = nullptr;
+        for (const KeptDifference& d : s.kept) {
+            if (d.metric == metric && (best == nullptr || d.ratio > best->ratio)) {
+                best = &d;
+            }
+        }
+        if (best != nullptr) {
+            return *best;
+        }
+    }
+    return {"", s.worst_metric, s.worst_count, s.worst_ratio};
+}
+
 }  // namespace sgmp::report

@@ -43,26 +43,6 @@ std::vector<const HeadlineRow*> rows_of(const CrossValidation& cv, const std::st
     return rows;
 }
 
-/// The kept difference to name: the first of the metrics a reader weighs first (packing
-/// fraction, contacts, structure: leading_rank, metric_descriptors.hpp) that differs (at its
-/// largest ratio), else the largest of any metric.
-KeptDifference leading_difference(const StandIn& s) {
-    static const std::vector<std::string> leading =
-        metrics::ranked_metric_names(&metrics::MetricDescriptor::leading_rank);
-    for (const std::string& metric : leading) {
-        const KeptDifference* best = nullptr;
-        for (const KeptDifference& d : s.kept) {
-            if (d.metric == metric && (best == nullptr || d.ratio > best->ratio)) {
-                best = &d;
-            }
-        }
-        if (best != nullptr) {
-            return *best;
-        }
-    }
-    return {"", s.worst_metric, s.worst_count, s.worst_ratio};
-}
-
 /// "stands in for X at N = … (agrees on a–b of j judged metrics there, with s seeds)".
 std::string relation(const StandIn& s, const std::vector<const HeadlineRow*>& rows) {
     std::ostringstream out;

@@ -67,9 +67,16 @@ std::string stand_in_sentence(const StandIn& s) {
         return out.str();
     }
     if (s.decision == StandInDecision::Differs) {
-        out << "differs on " << s.worst_metric << " at N = " << s.worst_count << " by "
-            << sig(s.worst_ratio) << "× its margin (" << s.differ_familywise << " of " << judged
-            << " tests differ family-wise)";
+        // φ, Z and g(r) lead; the largest difference follows when it is another.
+        const KeptDifference d = leading_difference(s);
+        out << "differs on " << d.label << " at N = " << d.count << " by " << sig(d.ratio)
+            << "× its margin (" << s.differ_familywise << " of " << judged
+            << " tests differ family-wise";
+        if (d.label != s.worst_metric || d.count != s.worst_count) {
+            out << "; largest " << s.worst_metric << " at N = " << s.worst_count << ", "
+                << sig(s.worst_ratio) << "×";
+        }
+        out << ")";
     } else {
         out << to_string(s.decision) << ": agrees on " << s.agree << " of " << judged
             << " metric × count tests within the declared margins, none differs family-wise";

@@ -124,6 +124,11 @@ struct StandIn {
     [[nodiscard]] bool stands_in() const { return decision == StandInDecision::StandsIn; }
 };
 
+/// The kept difference to name first: of the metrics a reader weighs first (packing
+/// fraction, contacts, structure: leading_rank, metric_descriptors.hpp), the first that
+/// differs, at its largest ratio; else the largest of any metric.
+KeptDifference leading_difference(const StandIn& s);
+
 /// The stand-in record of `rows_by_count` (per count, that count's metric rows).
 StandIn stand_in_from(
     const std::vector<std::pair<std::size_t, std::vector<MetricRow>>>& rows_by_count);

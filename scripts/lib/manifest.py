@@ -15,14 +15,17 @@
     manifest.py verdicts HEADLINE   "A agree, D differ, I inconclusive" of headline.csv
     manifest.py budget FILE --group G --count C --add K --budget B
                                     whether K more candidate packs of that group and count
-                                    keep its packing time within B seconds: its packs' time
-                                    (each row's seconds, else the .seconds file beside the
-                                    pack) plus K times their mean; prints the estimate, exit
-                                    0 within the budget, 1 past it
+                                    keep its packing time within B seconds: its packs' CPU
+                                    seconds (the .cpu file scripts/run wrote beside each
+                                    pack: `times` of its shell; else the row's seconds, else
+                                    the .seconds file beside the pack) plus K times their
+                                    mean; prints the estimate, exit 0 within the budget, 1
+                                    past it
 """
 import argparse
 import csv
 import pathlib
+import re
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
@@ -65,9 +68,25 @@ def pack_seconds(fields):
         return None
 
 
+def pack_cpu_seconds(fields):
+    """The CPU seconds (user + system) of a candidate row's packing, from the .cpu file
+    beside the pack (the `times` builtin's two lines; the second, its children's, counts),
+    else its recorded wall seconds (pack_seconds)."""
+    path = pathlib.Path(fields[5])
+    cpu = path.with_name(path.name.removesuffix(".xyz") + ".cpu")
+    try:
+        lines = cpu.read_text().splitlines()
+        found = re.findall(r"(\d+)m([0-9.]+)s", lines[1])
+        if len(found) == 2:
+            return sum(60 * float(minutes) + float(seconds) for minutes, seconds in found)
+    except (OSError, ValueError, IndexError):
+        pass
+    return pack_seconds(fields)
+
+
 def budget(args):
     """Exit status 0 when ADD more packs keep the group within BUDGET seconds (see above)."""
-    times = [pack_seconds(fields) for _, fields in rows_of(args.file)
+    times = [pack_cpu_seconds(fields) for _, fields in rows_of(args.file)
              if fields[0] == "candidate" and fields[1] == args.group and fields[2] == args.count]
     known = [t for t in times if t is not None]
     spent = sum(known) * len(times) / len(known) if known else 0.0

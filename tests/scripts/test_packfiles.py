@@ -200,3 +200,12 @@ def test_manifest_budget(tmp_path):
     # A pack with no time at all counts at the mean of those timed.
     (tmp_path / "n0150-seed2.seconds").unlink()
     assert run_manifest(args + ["--budget", "1e6"]) == b"700\n"
+    # The CPU seconds scripts/run records beside a pack (`times`: the shell's line, then its
+    # children's) count before any wall time: seed 1 took 1 min 2.5 s + 0.5 s of CPU.
+    (tmp_path / "n0150-seed1.cpu").write_text("0m0.010s 0m0.020s\n1m2.500s 0m0.500s\n")
+    (tmp_path / "n0150-seed2.seconds").write_text("300.0\n")
+    # spent 63 + 300 = 363 s, mean 181.5 s: five more make 1270.5 s.
+    assert run_manifest(args + ["--budget", "1e6"]) == b"1270\n"
+    # A .cpu file that is not `times`' output falls back to the wall seconds.
+    (tmp_path / "n0150-seed1.cpu").write_text("garbage\n")
+    assert run_manifest(args + ["--budget", "1e6"]) == b"1400\n"

@@ -313,10 +313,7 @@ BOOST_AUTO_TEST_CASE(verlet_list_finds_the_brute_force_pairs_open_and_periodic) 
         list.build(balls, skin, sides);
         PairSet pairs;
         for (std::size_t i = 0; i < points.size(); ++i) {
-            const auto near = list.of(i);
-            // The list's order is the pairs' (i, j) order, whatever the grid.
-            BOOST_TEST(std::is_sorted(near.begin(), near.end()), "sphere " << i);
-            for (const std::uint32_t j : near) {
+            for (const std::uint32_t j : list.of(i)) {
                 pairs.insert({i, j});
             }
         }

@@ -197,6 +197,18 @@ def _stop_group(process, grace=10):
         pass
 
 
+def _stop_at_limit(process, done, grace=10):
+    """At the time limit (on the timer's thread): SIGTERM to the command's process group,
+    SIGKILL after `grace` s unless it has ended. It never waits for the process: the
+    caller's wait4 reaps it (a wait here raced it, and wait4 then found no child)."""
+    try:
+        os.killpg(process.pid, signal.SIGTERM)
+        if not done.wait(grace):
+            os.killpg(process.pid, signal.SIGKILL)
+    except ProcessLookupError:
+        pass
+
+
 def _run_once(command, cwd, env, limit=None):
     if not _is_executable(Path(GNU_TIME)):
         raise RunFailure(f"{GNU_TIME} is missing (Debian package `time`, from scripts/setup)")
@@ -209,12 +221,16 @@ def _run_once(command, cwd, env, limit=None):
                                    + [str(part) for part in command], cwd=cwd, env=env,
                                    stdin=subprocess.DEVNULL, stdout=out, stderr=err,
                                    start_new_session=limit is not None)
-        timer = threading.Timer(limit, _stop_group, (process,)) if limit is not None else None
+        done = threading.Event()
+        timer = (threading.Timer(limit, _stop_at_limit, (process, done))
+                 if limit is not None else None)
         if timer:
             timer.start()
         try:
             _, wait_status, usage = os.wait4(process.pid, 0)
+            done.set()
         except BaseException:
+            done.set()
             # Interrupted: Ctrl-C reached the command too (GNU time waits for it), unless it
             # runs in its own session.
             if timer:

@@ -16,9 +16,9 @@
 #include <ctime>
 #include <iostream>
 
-#include "sgmp/metrics/kd_columns.hpp"
 #include "sgmp/metrics/local_structure.hpp"
 #include "sgmp/metrics/measure.hpp"
+#include "sgmp/metrics/pair_columns.hpp"
 #include "sgmp/metrics/parallel.hpp"
 #include "sgmp/metrics/spatial_order.hpp"
 #include "sgmp/pack/pack_file.hpp"
@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
         const double width = 0.02 * d;
         const double reach = bin_outer(bins - 1, width);
         const double reach2 = reach * reach;
-        // The pass's two sets of kd-tree columns; every origin scans all its windows (the
+        // The pass's two sets of columns; every origin scans all its windows (the
         // centres of a column met with |z − z_p| ≤ half).
         std::vector<char> is_origin(particles.size(), 0);
         for (const Index i : origins) {
@@ -74,13 +74,13 @@ int main(int argc, char** argv) {
             }
         }
         const double side = kPairPassColumnSide * d;
-        const KdColumns origin_grid(particles, origins, side, 1);
-        const KdColumns other_grid(particles, rest, side, 1);
+        const PairColumns origin_grid(particles, origins, side, 1);
+        const PairColumns other_grid(particles, rest, side, 1);
         const auto for_each_window = [&](auto&& f) {
             for (std::size_t c = 0; c < origin_grid.columns(); ++c) {
                 const std::size_t begin = origin_grid.column_begin(c);
                 const std::size_t end = origin_grid.column_begin(c + 1);
-                for (const KdColumns* grid : {&origin_grid, &other_grid}) {
+                for (const PairColumns* grid : {&origin_grid, &other_grid}) {
                     grid->for_each_column(
                         origin_grid.footprint(begin, end), reach, 0,
                         [&](std::size_t, std::size_t first, std::size_t last, double half) {
@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
         double start = cpu_seconds();
         std::size_t pairs = 0;
         for_each_window(
-            [&](const KdColumns& grid, std::size_t p, std::size_t from, std::size_t to) {
+            [&](const PairColumns& grid, std::size_t p, std::size_t from, std::size_t to) {
                 const double ax = origin_grid.x[p];
                 const double ay = origin_grid.y[p];
                 const double az = origin_grid.z[p];
@@ -122,7 +122,7 @@ int main(int argc, char** argv) {
         start = cpu_seconds();
         std::vector<std::int64_t> histogram(bins + 1, 0);
         for_each_window(
-            [&](const KdColumns& grid, std::size_t p, std::size_t from, std::size_t to) {
+            [&](const PairColumns& grid, std::size_t p, std::size_t from, std::size_t to) {
                 for (std::size_t k = from; k < to; ++k) {
                     const double dx = grid.x[k] - origin_grid.x[p];
                     const double dy = grid.y[k] - origin_grid.y[p];

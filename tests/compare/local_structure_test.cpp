@@ -1,4 +1,4 @@
-// The fused pair pass of measure_local_structure (kd-tree columns, one loop for g(r), Z(δ) and
+// The fused pair pass of measure_local_structure (pair columns, one loop for g(r), Z(δ) and
 // Q6) against a brute-force O(N²) loop over every pair, on a few hundred spheres.
 // Pair, contact and wall counts are integers and must agree exactly; Q6 sums the same
 // bonds in another order, so it agrees to rounding: 1e-12 (the sums hold ~10³ terms of
@@ -8,8 +8,8 @@
 #include <cmath>
 
 #include "sgmp/metrics/bond_order.hpp"
-#include "sgmp/metrics/kd_columns.hpp"
 #include "sgmp/metrics/local_structure.hpp"
+#include "sgmp/metrics/pair_columns.hpp"
 #include "sgmp/metrics/parallel.hpp"
 #include "sgmp/pack/random.hpp"
 
@@ -157,7 +157,7 @@ BOOST_AUTO_TEST_CASE(results_are_bit_identical_for_any_thread_count) {
     BOOST_TEST(one.bond_order.q6_local_mean == two.bond_order.q6_local_mean);
 }
 
-BOOST_AUTO_TEST_CASE(kd_columns_partition_the_centres_sorted_by_height) {
+BOOST_AUTO_TEST_CASE(pair_columns_partition_the_centres_sorted_by_height) {
     // Every member once, each column sorted by z (then index), for spread, flat, linear
     // and coincident centres, and for no centre at all.
     Random random(7);
@@ -172,7 +172,7 @@ BOOST_AUTO_TEST_CASE(kd_columns_partition_the_centres_sorted_by_height) {
     sets.emplace_back();
     for (const auto& particles : sets) {
         for (const double side : {0.01, 0.2, 3.0}) {
-            const KdColumns columns(particles, side, 0);
+            const PairColumns columns(particles, side, 0);
             BOOST_TEST(columns.column_begin(columns.columns()) == particles.size());
             std::vector<int> seen(particles.size(), 0);
             for (std::size_t c = 0; c < columns.columns(); ++c) {
@@ -194,8 +194,8 @@ BOOST_AUTO_TEST_CASE(kd_columns_partition_the_centres_sorted_by_height) {
     }
 }
 
-BOOST_AUTO_TEST_CASE(kd_column_windows_hold_every_center_within_the_radius) {
-    // For the columns of a kd-tree over one set and those of another over a different
+BOOST_AUTO_TEST_CASE(pair_column_windows_hold_every_center_within_the_radius) {
+    // For the columns over one set and those over a different
     // set (other column sides): for every source centre p, the windows |z − z_p| ≤ half of
     // the columns met are disjoint and hold every target centre within the radius of p
     // (brute force); with first_column, each pair of columns within reach is met once.
@@ -210,8 +210,8 @@ BOOST_AUTO_TEST_CASE(kd_column_windows_hold_every_center_within_the_radius) {
         (i % 3 == 0 ? sources : targets).push_back(i);
     }
     for (const double side : {0.05, 0.2, 1.0}) {
-        const KdColumns source(particles, sources, side, 0);
-        const KdColumns target(particles, targets, 0.7 * side, 0);
+        const PairColumns source(particles, sources, side, 0);
+        const PairColumns target(particles, targets, 0.7 * side, 0);
         for (const double radius : {0.0, 0.07, 0.3}) {
             for (std::size_t c = 0; c < source.columns(); ++c) {
                 const std::size_t begin = source.column_begin(c);

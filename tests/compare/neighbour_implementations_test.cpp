@@ -4,7 +4,7 @@
 // in a periodic box: radius queries, pairs and k nearest must equal brute force over the
 // box's own distance exactly (lattice points sit exactly on the radius, also across the
 // periodic faces). The engine's incremental SettledGrid, the relaxation's Verlet list
-// (NeighbourList) and the metrics' kd-tree columns (KdColumns) must give the brute-force
+// (NeighbourList) and the metrics' pair columns (PairColumns) must give the brute-force
 // pair sets too, open and periodic (the grid and the columns through the images their
 // users add).
 #include <algorithm>
@@ -18,8 +18,8 @@
 
 #include "sgmp/engine/neighbour_list.hpp"
 #include "sgmp/engine/settled_grid.hpp"
-#include "sgmp/metrics/kd_columns.hpp"
 #include "sgmp/metrics/neighbour_index.hpp"
+#include "sgmp/metrics/pair_columns.hpp"
 #include "sgmp/pack/cell_grid.hpp"
 #include "sgmp/pack/neighbour_query.hpp"
 #include "sgmp/pack/periodic_images.hpp"
@@ -257,9 +257,9 @@ BOOST_AUTO_TEST_CASE(settled_grid_with_images_finds_the_periodic_pairs) {
     }
 }
 
-BOOST_AUTO_TEST_CASE(kd_columns_with_images_find_the_periodic_pairs) {
+BOOST_AUTO_TEST_CASE(pair_columns_with_images_find_the_periodic_pairs) {
     // The metrics' pair passes see a periodic pack as its particles and their images within
-    // the reach of a face (with_periodic_images): the windows of the kd-tree's columns
+    // the reach of a face (with_periodic_images): the windows of the pair columns
     // around each particle then hold every minimum-image neighbour.
     const Container sides = periodic_sides();
     for (const double cutoff : {0.0625, 0.125, 0.25}) {
@@ -269,7 +269,7 @@ BOOST_AUTO_TEST_CASE(kd_columns_with_images_find_the_periodic_pairs) {
             particles[i].center = points[i];
         }
         const ImagedParticles imaged = with_periodic_images(particles, sides, cutoff);
-        const metrics::KdColumns columns(imaged.particles, 0.1, 1);
+        const metrics::PairColumns columns(imaged.particles, 0.1, 1);
         PairSet pairs;
         for (std::size_t c = 0; c < columns.columns(); ++c) {
             for (std::size_t p = columns.column_begin(c); p < columns.column_begin(c + 1); ++p) {
@@ -313,7 +313,10 @@ BOOST_AUTO_TEST_CASE(verlet_list_finds_the_brute_force_pairs_open_and_periodic) 
         list.build(balls, skin, sides);
         PairSet pairs;
         for (std::size_t i = 0; i < points.size(); ++i) {
-            for (const std::uint32_t j : list.of(i)) {
+            const auto near = list.of(i);
+            // The list's order is the pairs' (i, j) order, whatever the grid.
+            BOOST_TEST(std::is_sorted(near.begin(), near.end()), "sphere " << i);
+            for (const std::uint32_t j : near) {
                 pairs.insert({i, j});
             }
         }

@@ -322,7 +322,7 @@ BOOST_AUTO_TEST_CASE(the_frictional_polish_goes_on_until_the_carrying_contacts_c
     // Seed 16 of the measured 24: at rest after the first polish step, a contact still carried
     // a force across a gap the certificate does not count (the witness then fails and the LP
     // leaves 0.119 m·g); the polish goes on at h/3 until every carrying contact is within
-    // 0.5·10⁻⁶·d (5 steps more), and the witness certifies.
+    // 0.5·10⁻⁶·d (2 steps more), and the witness certifies.
     const Pack pack = make_pack(dynamics_request(RelaxMode::Frictional, 16));
     BOOST_TEST(*pack.metadata.get("certified") == "true");
     BOOST_TEST(*pack.metadata.get("certificate_forces") == "settling-witness");
@@ -334,7 +334,7 @@ BOOST_AUTO_TEST_CASE(the_frictional_polish_goes_on_until_the_carrying_contacts_c
 BOOST_AUTO_TEST_CASE(a_frictional_creep_the_polish_cannot_end_goes_back_to_the_first_step) {
     // Seed 46 of the main job's 48: its polish stalled at h/3 with 1.9·10⁻³ m·g left, above
     // the certificate's 10⁻³ (uncertified); back at the first step with inertia the creep
-    // ends, and the witness certifies (741 steps, one of its two returns after a stall).
+    // ends, and the witness certifies (633 steps, one of its two returns after a stall).
     const Pack pack = make_pack(dynamics_request(RelaxMode::Frictional, 46));
     BOOST_TEST(*pack.metadata.get("certified") == "true");
     BOOST_TEST(*pack.metadata.get_number("certificate_residual_max") <= 1e-3);

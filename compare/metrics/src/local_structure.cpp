@@ -10,7 +10,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "sgmp/metrics/kd_columns.hpp"
+#include "sgmp/metrics/pair_columns.hpp"
 #include "sgmp/metrics/pair_kernels.hpp"
 #include "sgmp/metrics/parallel.hpp"
 #include "sgmp/pack/size_classes.hpp"
@@ -220,8 +220,8 @@ struct Scratch {
 
 /// The g(r) and split-window counts of the origins of one column of the origins' grid:
 /// pairs with the origins after each of them (weight 2: both are origins) and with every
-/// other particle (weight 1), over the sliding windows of KdColumns::for_each_column.
-void count_column_pairs(const KdColumns& origin_grid, const KdColumns& other_grid,
+/// other particle (weight 1), over the sliding windows of PairColumns::for_each_column.
+void count_column_pairs(const PairColumns& origin_grid, const PairColumns& other_grid,
                         std::size_t column, const Setup& s, Scratch& scratch) {
     const std::size_t begin = origin_grid.column_begin(column);
     const std::size_t end = origin_grid.column_begin(column + 1);
@@ -229,7 +229,7 @@ void count_column_pairs(const KdColumns& origin_grid, const KdColumns& other_gri
         return;
     }
     const std::array<double, 4> footprint = origin_grid.footprint(begin, end);
-    for (const KdColumns* grid : {&origin_grid, &other_grid}) {
+    for (const PairColumns* grid : {&origin_grid, &other_grid}) {
         const bool origins = grid == &origin_grid;
         grid->for_each_column(
             footprint, s.reach, origins ? column : 0,
@@ -246,14 +246,14 @@ void count_column_pairs(const KdColumns& origin_grid, const KdColumns& other_gri
 /// grids, or for a wide blend the same split into small spheres (r ≤ r_max / 2) and large
 /// ones, each searched within its own reach. Close::grid indexes this list.
 struct CloseGrids {
-    std::vector<const KdColumns*> grids;
+    std::vector<const PairColumns*> grids;
     std::vector<double> max_radius;  // of each grid's particles (r_max when not split)
 };
 
 /// Fills scratch.close with the centres close enough to an origin of the column
 /// [begin, end) of the origins' grid to be a contact or a bond (every grid of `close`, the
 /// origin itself left out), sorted by origin, then particle index.
-void gather_close(const KdColumns& origin_grid, const CloseGrids& close,
+void gather_close(const PairColumns& origin_grid, const CloseGrids& close,
                   const std::vector<Particle>& particles, std::size_t begin, std::size_t end,
                   const Setup& s, Scratch& scratch) {
     scratch.close.clear();
@@ -269,7 +269,7 @@ void gather_close(const KdColumns& origin_grid, const CloseGrids& close,
         }
     }
     for (std::size_t g = 0; g < close.grids.size(); ++g) {
-        const KdColumns* grid = close.grids[g];
+        const PairColumns* grid = close.grids[g];
         const double reach = s.split_sizes ? s.close_for(column_radius, close.max_radius[g])
                                            : std::sqrt(s.close_squared);
         const double reach_squared = s.split_sizes ? reach * reach : s.close_squared;
@@ -322,7 +322,7 @@ BondSums contacts_and_bonds(const std::vector<Particle>& particles, const Partic
     for (const Close* close = first; close != last; ++close) {
         const Close& c = *close;
         // The grid's copy of the centre (in cache) and, for equal spheres, the one radius.
-        const KdColumns& grid = *grids.grids[c.grid];
+        const PairColumns& grid = *grids.grids[c.grid];
         const double rb = s.equal ? s.radius : particles[c.index].radius;
         const double gap = c.distance - a.radius - rb;
         if (gap <= s.max_threshold) {
@@ -455,11 +455,11 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
     // origins' grid (weight 2, both are origins), origin–other pairs from the origin.
     // Origins are visited in the grid's stored order (column by column: near in space).
     const double side = kPairPassColumnSide * options.mean_diameter;
-    const KdColumns origin_grid(particles, origins, side, options.threads);
+    const PairColumns origin_grid(particles, origins, side, options.threads);
     const std::vector<Index> rest = others(particles.size(), origins);
-    const KdColumns other_grid(particles, rest, side, options.threads);
+    const PairColumns other_grid(particles, rest, side, options.threads);
     // A wide blend's contacts and bonds: small and large spheres apart (Setup::split_sizes).
-    std::vector<std::unique_ptr<KdColumns>> size_grids;
+    std::vector<std::unique_ptr<PairColumns>> size_grids;
     CloseGrids grids{{&origin_grid, &other_grid}, {s.radius, s.radius}};
     if (s.split_sizes) {
         grids = {};
@@ -474,11 +474,11 @@ LocalStructure measure_local_structure(const std::vector<Particle>& particles,
                     is_large ? std::max(large_radius, particles[i].radius) : large_radius;
             }
             size_grids.push_back(
-                std::make_unique<KdColumns>(particles, small, side, options.threads));
+                std::make_unique<PairColumns>(particles, small, side, options.threads));
             grids.grids.push_back(size_grids.back().get());
             grids.max_radius.push_back(s.small_radius);
             size_grids.push_back(
-                std::make_unique<KdColumns>(particles, large, side, options.threads));
+                std::make_unique<PairColumns>(particles, large, side, options.threads));
             grids.grids.push_back(size_grids.back().get());
             grids.max_radius.push_back(large_radius);
         }

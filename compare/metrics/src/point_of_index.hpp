@@ -1,7 +1,7 @@
 #pragma once
 /// @file point_of_index.hpp
-/// The property map through which the metrics' CGAL kd-trees (neighbour_index.cpp,
-/// kd_columns.cpp) read the point of an index: the trees store indices only, the points
+/// The property map through which the metrics' CGAL kd-tree (neighbour_index.cpp) reads
+/// the point of an index: the trees store indices only, the points
 /// stay in one vector the map points to.
 #include <boost/property_map/property_map.hpp>
 #include <vector>

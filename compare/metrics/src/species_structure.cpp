@@ -7,8 +7,8 @@
 #include <numbers>
 #include <utility>
 
-#include "sgmp/metrics/kd_columns.hpp"
 #include "sgmp/metrics/local_structure.hpp"
+#include "sgmp/metrics/pair_columns.hpp"
 #include "sgmp/metrics/pair_kernels.hpp"
 #include "sgmp/metrics/parallel.hpp"
 #include "sgmp/pack/sphere_box_volume.hpp"
@@ -98,8 +98,8 @@ struct PairCounts {
     }
 };
 
-PairCounts count_pairs(const std::vector<Particle>& particles, const KdColumns& origins,
-                       const KdColumns& targets, bool same_species, const Bins& bins,
+PairCounts count_pairs(const std::vector<Particle>& particles, const PairColumns& origins,
+                       const PairColumns& targets, bool same_species, const Bins& bins,
                        const std::vector<double>& thresholds, double close, unsigned threads) {
     const double reach = bins.outer(bins.count - 1);
     const double limit = std::max(reach, close);
@@ -195,12 +195,13 @@ std::optional<SpeciesStructure> measure_species_structure(const std::vector<Part
         return (largest[a] + largest[b] + max_tolerance * d) * (1.0 + 1e-9);
     };
     const double side = kPairPassColumnSide * d;
-    std::vector<std::unique_ptr<KdColumns>> origin_columns;
-    std::vector<std::unique_ptr<KdColumns>> all_columns;
+    std::vector<std::unique_ptr<PairColumns>> origin_columns;
+    std::vector<std::unique_ptr<PairColumns>> all_columns;
     for (const Members& m : members) {
         origin_columns.push_back(
-            std::make_unique<KdColumns>(particles, m.origins, side, options.threads));
-        all_columns.push_back(std::make_unique<KdColumns>(particles, m.all, side, options.threads));
+            std::make_unique<PairColumns>(particles, m.origins, side, options.threads));
+        all_columns.push_back(
+            std::make_unique<PairColumns>(particles, m.all, side, options.threads));
     }
     const double space_volume = options.space.volume();
 

@@ -24,11 +24,11 @@ double cell_count(const std::array<double, 3>& dims) {
 }  // namespace
 
 CellGrid::CellGrid(const std::vector<Vec3>& centers, double reach, const NeighbourBox& box)
-    : centers_(centers), box_(box), reach_(reach) {
+    : box_(box), reach_(reach) {
     if (!(reach > 0.0) || !std::isfinite(reach)) {
         throw std::invalid_argument("cell grid: reach must be a positive finite length");
     }
-    if (centers_.size() >= std::numeric_limits<std::uint32_t>::max()) {
+    if (centers.size() >= std::numeric_limits<std::uint32_t>::max()) {
         throw std::invalid_argument("cell grid: too many centres");
     }
     if (box_.periodic && !(box_.period_x() > 0.0 && box_.period_z() > 0.0 &&
@@ -37,10 +37,10 @@ CellGrid::CellGrid(const std::vector<Vec3>& centers, double reach, const Neighbo
     }
     Vec3 lo = Vec3::Zero();
     Vec3 hi = Vec3::Zero();
-    if (!centers_.empty()) {
-        lo = hi = centers_.front();
+    if (!centers.empty()) {
+        lo = hi = centers.front();
     }
-    for (const Vec3& c : centers_) {
+    for (const Vec3& c : centers) {
         if (!c.allFinite()) {
             throw std::invalid_argument("cell grid: a centre is not finite");
         }
@@ -53,36 +53,24 @@ CellGrid::CellGrid(const std::vector<Vec3>& centers, double reach, const Neighbo
         lo.z() = box_.z_min;
         hi.z() = box_.z_max;
     }
-    origin_ = lo;
-    const std::array<double, 3> dims = size_cells(hi - lo, reach);
-    for (int a = 0; a < 3; ++a) {
-        dims_[a] = static_cast<std::int64_t>(dims[a]);  // at most 2N + 64 by now
-    }
-    const auto cells = static_cast<std::size_t>(cell_count(dims));
-
-    // Counting sort of the centres by cell; members of a cell stay in increasing order.
-    std::vector<std::uint32_t> cell_of(centers_.size());
-    start_.assign(cells + 1, 0);
-    for (std::size_t i = 0; i < centers_.size(); ++i) {
-        const Vec3 c = box_.wrapped(centers_[i]);
-        const std::int64_t cell =
-            (axis_cell(0, c.x()) * dims_[1] + axis_cell(1, c.y())) * dims_[2] + axis_cell(2, c.z());
-        cell_of[i] = static_cast<std::uint32_t>(cell);
-        ++start_[static_cast<std::size_t>(cell) + 1];
-    }
-    for (std::size_t c = 0; c < cells; ++c) {
-        start_[c + 1] += start_[c];
-    }
-    members_.resize(centers_.size());
-    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-    for (std::size_t i = 0; i < centers_.size(); ++i) {
-        members_[fill[cell_of[i]]++] = static_cast<std::uint32_t>(i);
+    grid_ = IncrementalGrid<GridPoint>::packed(
+        layout_for(lo, hi, reach, centers.size()), centers.size(),
+        [&](std::size_t i) {
+            const Vec3& c = centers[i];
+            return GridPoint{c.x(), c.y(), c.z(), static_cast<std::uint32_t>(i), 0};
+        },
+        [&](const GridPoint& point) { return box_.wrapped(Vec3(point.x, point.y, point.z)); });
+    place_.resize(centers.size());
+    const std::vector<GridPoint>& filed = grid_.packed_items();
+    for (std::size_t k = 0; k < filed.size(); ++k) {
+        place_[filed[k].index] = static_cast<std::uint32_t>(k);
     }
 }
 
-std::array<double, 3> CellGrid::size_cells(const Vec3& span, double reach) {
-    // Widen the cells until the grid holds at most 2N + 64 of them.
-    const double max_cells = 2.0 * static_cast<double>(centers_.size()) + 64.0;
+CellLayout CellGrid::layout_for(const Vec3& lo, const Vec3& hi, double reach, std::size_t n) const {
+    // Widen the cells until the grid holds at most 2n + 64 of them.
+    const Vec3 span = hi - lo;
+    const double max_cells = 2.0 * static_cast<double>(n) + 64.0;
     double side = reach;
     if (!span.allFinite()) {
         side = INFINITY;  // centres near ±10³⁰⁸: one cell (every query still exact)
@@ -101,35 +89,27 @@ std::array<double, 3> CellGrid::size_cells(const Vec3& span, double reach) {
     }
     const std::array<double, 3> dims =
         std::isfinite(side) ? dims_of(side) : std::array<double, 3>{1.0, 1.0, 1.0};
-    for (int a = 0; a < 3; ++a) {
-        side_[a] = wraps(a) ? span[a] / dims[a] : side;
-    }
-    return dims;
+    CellLayout layout;
+    layout.x_min = lo.x();
+    layout.z_min = lo.z();
+    layout.floor = lo.y();
+    layout.nx = static_cast<int>(dims[0]);  // at most 2N + 64 by now
+    layout.nz = static_cast<int>(dims[2]);
+    layout.hx = wraps(0) ? span.x() / dims[0] : side;
+    layout.hz = wraps(2) ? span.z() / dims[2] : side;
+    layout.hy = side;
+    return layout;
 }
 
-std::int64_t CellGrid::axis_cell(int a, double x) const {
-    const double cell = std::floor((x - origin_[a]) / side_[a]);
-    if (!(cell > 0.0)) {  // also NaN from an infinite query radius
-        return 0;
-    }
-    const auto last = static_cast<double>(dims_[a] - 1);
-    return static_cast<std::int64_t>(std::min(cell, last));
-}
-
-void CellGrid::axis_range(int a, double x, double radius, std::int64_t& lo,
-                          std::int64_t& hi) const {
-    if (!wraps(a)) {
-        lo = axis_cell(a, x - radius);
-        hi = axis_cell(a, x + radius);
-        return;
-    }
+void CellGrid::wrapped_range(double x, double radius, double origin, double side, int count,
+                             std::int64_t& lo, std::int64_t& hi) {
     // x is wrapped into the period; widened far beyond the rounding of a centre's cell.
-    const double wide = radius * (1.0 + 1e-12) + side_[a] * static_cast<double>(dims_[a]) * 1e-12;
-    const double first = std::floor((x - wide - origin_[a]) / side_[a]);
-    const double last = std::floor((x + wide - origin_[a]) / side_[a]);
-    if (!(last - first + 1.0 < static_cast<double>(dims_[a]))) {  // also NaN, infinities
+    const double wide = radius * (1.0 + 1e-12) + side * static_cast<double>(count) * 1e-12;
+    const double first = std::floor((x - wide - origin) / side);
+    const double last = std::floor((x + wide - origin) / side);
+    if (!(last - first + 1.0 < static_cast<double>(count))) {  // also NaN, infinities
         lo = 0;
-        hi = dims_[a] - 1;
+        hi = count - 1;
         return;
     }
     lo = static_cast<std::int64_t>(first);
@@ -138,11 +118,11 @@ void CellGrid::axis_range(int a, double x, double radius, std::int64_t& lo,
 
 std::vector<Neighbour> CellGrid::nearest(const Vec3& p, std::size_t k) const {
     std::vector<Neighbour> found;
-    k = std::min(k, centers_.size());
+    k = std::min(k, size());
     if (k == 0) {
         return found;
     }
-    double radius = side_[1];
+    double radius = cell_side();
     for (;;) {
         found.clear();
         for_each_near(p, radius, [&](std::size_t j, double r2) { found.push_back({j, r2}); });

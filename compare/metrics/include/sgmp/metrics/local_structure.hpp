@@ -50,12 +50,12 @@ struct LocalStructureOptions {
     unsigned threads = 0;  // worker threads (parallel.hpp: 0 is every CPU the process may use)
 };
 
-/// Side of the pass's columns, over d (kd_columns.hpp sizes its leaves from it): 1.6 took
-/// 18 % less CPU than 0.8 and 7 % less than 1.2 or 2.2 on the 10⁶ loose-random pack
-/// (windows of ~20 candidates; measured on the former uniform grid of columns).
+/// Side of the pass's columns, over d (pair_columns.hpp): 1.6 took 18 % less CPU than 0.8
+/// and 7 % less than 1.2 or 2.2 on the 10⁶ loose-random pack (windows of ~20 candidates;
+/// measured on a uniform grid of columns, as they are again).
 inline constexpr double kPairPassColumnSide = 1.6;
 
-/// One pass over the origins on two sets of kd-tree columns (KdColumns::for_each_column),
+/// One pass over the origins on two sets of columns (PairColumns::for_each_column),
 /// one of the origins and one of the other particles, column of origins by column:
 /// g(r) and the split windows count each origin–origin pair once, from its earlier member
 /// (weight 2), and each origin–other pair from the origin, out to the g(r) range; then a

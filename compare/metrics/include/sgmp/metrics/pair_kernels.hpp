@@ -73,7 +73,7 @@ void count_bins_scalar(const double* xs, const double* ys, const double* zs, con
                        std::size_t from, std::size_t to, std::int64_t weight, const BinSetup& s,
                        std::int64_t* lanes, std::int64_t (&split)[2]);
 
-/// count_bins over the sliding windows of one pair of columns (KdColumns::for_each_column):
+/// count_bins over the sliding windows of one pair of columns (PairColumns::for_each_column):
 /// for each origin p in [begin, end) of the arrays (ox, oy, oz), z increasing, the
 /// candidates [lo_p, hi_p) of the column [first, last) of (xs, ys, zs), z increasing, with
 /// lo_p the first position with z ≥ z_p − half and hi_p the first after it with
@@ -84,11 +84,11 @@ void count_column_bins(const double* ox, const double* oy, const double* oz, std
                        std::int64_t weight, const BinSetup& s, std::int64_t* lanes,
                        std::int64_t (&split)[2]);
 
-/// The sliding windows of one pair of columns (KdColumns::for_each_column) for the origins [begin,
-/// end) of `oz` (z increasing) over the column [first, last) of `zs` (z increasing), the empty ones
-/// left out: f(p, lo, hi) with lo the first position with z ≥ z_p − half, hi the first after it
-/// with z > z_p + half, only where lo < hi. An empty window (z_lo > z_p + half) skips at once
-/// to the first origin with z + half ≥ z_lo: the windows of those between are empty too.
+/// The sliding windows of one pair of columns (PairColumns::for_each_column) for the origins
+/// [begin, end) of `oz` (z increasing) over the column [first, last) of `zs` (z increasing), the
+/// empty ones left out: f(p, lo, hi) with lo the first position with z ≥ z_p − half, hi the first
+/// after it with z > z_p + half, only where lo < hi. An empty window (z_lo > z_p + half) skips at
+/// once to the first origin with z + half ≥ z_lo: the windows of those between are empty too.
 template <class F>
 void for_each_nonempty_window(const double* oz, std::size_t begin, std::size_t end,
                               const double* zs, std::size_t first, std::size_t last, double half,

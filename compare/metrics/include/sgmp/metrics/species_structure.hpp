@@ -23,7 +23,7 @@
 /// Z_IJ(δ) is the mean, over the origins of I, of the number of neighbours of J with surface
 /// gap |cᵢ − cⱼ| − rᵢ − rⱼ ≤ δ·d; the species' own Z_I(δ) = Σ_J Z_IJ(δ) (spheres only, as Z(δ)).
 ///
-/// Pairs are found on the comparison's neighbour search (kd_columns.hpp); every sum over
+/// Pairs are found on the comparison's neighbour search (pair_columns.hpp); every sum over
 /// origins runs in a fixed order, so results do not depend on the thread count.
 #include <cstddef>
 #include <cstdint>

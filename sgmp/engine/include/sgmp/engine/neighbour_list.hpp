@@ -1,13 +1,14 @@
 #pragma once
 /// @file neighbour_list.hpp
 /// Verlet neighbour list of the relaxation: for each sphere i, the spheres j > i whose
-/// surface gap |cᵢ − cⱼ| − rᵢ − rⱼ was below `skin` when the list was built. While no sphere
-/// has moved more than skin/2 since, every touching pair is in the list. Built through a
-/// cell list over the spheres' bounding box (cells of side ≥ 2·r_max + skin, counting sort,
-/// the 27 cells around each sphere), in O(N); the scan order is fixed, so the same positions
-/// give the same list. With periodic sides (Container::periodic) the cells wrap in x and z
-/// and pairs are minimum-image pairs (Container::to_nearest_image), so the pair loops must
-/// take the nearest image of each listed pair's separation too.
+/// surface gap |cᵢ − cⱼ| − rᵢ − rⱼ was below `skin` when the list was built, in increasing j.
+/// While no sphere has moved more than skin/2 since, every touching pair is in the list.
+/// Built through the neighbour-query vocabulary's cell grid (sgmp/pack/cell_grid.hpp: every
+/// pair within 2·r_max + skin, O(N)), then each pair kept at its own reach; the list's
+/// order is the pairs' (i, j) order, whatever the grid, so the same positions give the same
+/// list. With periodic sides (Container::periodic) pairs are nearest-image pairs
+/// (NeighbourBox::separation), so the pair loops must take the nearest image of each listed
+/// pair's separation too.
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -27,8 +28,8 @@ struct Ball {
 
 class NeighbourList {
   public:
-    /// Rebuilds the list for the spheres' present positions; only `sides.periodic` and, when
-    /// set, its periods are read (the cell must be over twice 2·r_max + skin wide).
+    /// Rebuilds the list for the spheres' present positions (finite, else
+    /// std::invalid_argument); only `sides.periodic` and, when set, its periods are read.
     void build(const std::vector<Ball>& balls, double skin, const Container& sides = {});
 
     /// The neighbours j > i of sphere i.
@@ -42,10 +43,7 @@ class NeighbourList {
   private:
     std::vector<std::uint32_t> offsets_;
     std::vector<std::uint32_t> neighbours_;
-    // Scratch of the cell list, kept to reuse its memory.
-    std::vector<std::uint32_t> cell_of_;
-    std::vector<std::uint32_t> cell_start_;
-    std::vector<std::uint32_t> by_cell_;
+    std::vector<Vec3> centers_;  ///< scratch: the centres handed to the grid
 };
 
 }  // namespace sgmp::engine

@@ -1,19 +1,22 @@
 #pragma once
 /// @file cell_grid.hpp
-/// The pack library's neighbour kernel: a uniform cell grid over a fixed set of centres,
-/// one of the two implementations of the neighbour-query vocabulary (neighbour_query.hpp).
+/// A fixed set of centres filed in the testbed's one cell grid (IncrementalGrid,
+/// incremental_grid.hpp), speaking the neighbour-query vocabulary (neighbour_query.hpp):
+/// one of its two implementations.
 ///
-/// Cells are cubes of side h ≥ `reach` over the bounding box of the centres, so every
-/// pair with |c_i − c_j| < reach lies in the same or in adjacent cells (the 27-cell
-/// stencil). The grid is built by a counting sort (O(N) time, 4·(N + cells) bytes). When
-/// the centres are spread far apart, h grows until there are at most 2·N + 64 cells, so
-/// memory stays O(N) for any input; a larger h only adds candidates, never loses a pair.
-/// Every query tests exact distances, so results do not depend on h.
+/// Cells are cubes of side h ≥ `reach` from the corner of the centres' bounding box, so
+/// every pair with |c_i − c_j| < reach lies in the same or in adjacent cells (the 27-cell
+/// stencil). When the centres are spread far apart, h grows until there are at most
+/// 2·N + 64 cells, so memory stays O(N) for any input; a larger h only adds candidates,
+/// never loses a pair. Every query tests exact distances, so results do not depend on h.
 ///
 /// In a periodic box (NeighbourBox::periodic) the cells of x and z tile one period (sides
 /// period / ⌊period / h⌋, at least h) and wrap; centres are filed by their wrapped
 /// position, distances are the box's nearest-image distances, and a query visits each cell
 /// at most once, so it meets each centre at most once.
+///
+/// Order: a query walks the cells x-major (x, then y, then z; on a wrapping axis from the
+/// query's lowest unwrapped cell upward), each cell's centres by increasing index.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -22,6 +25,7 @@
 #include <vector>
 
 #include "sgmp/pack/geometry.hpp"
+#include "sgmp/pack/incremental_grid.hpp"
 #include "sgmp/pack/neighbour_query.hpp"
 
 namespace sgmp {
@@ -33,17 +37,20 @@ class CellGrid {
     CellGrid(const std::vector<Vec3>& centers, double reach,
              const NeighbourBox& box = NeighbourBox::open());
 
-    [[nodiscard]] std::size_t size() const { return centers_.size(); }
+    [[nodiscard]] std::size_t size() const { return place_.size(); }
     [[nodiscard]] const NeighbourBox& box() const { return box_; }
     /// The cells' side along y (along x and z too unless periodic).
-    [[nodiscard]] double cell_side() const { return side_[1]; }
-    [[nodiscard]] const Vec3& center(std::size_t i) const { return centers_[i]; }
+    [[nodiscard]] double cell_side() const { return grid_.layout().hy; }
+    [[nodiscard]] Vec3 center(std::size_t i) const {
+        const GridPoint& point = grid_.packed_items()[place_[i]];
+        return {point.x, point.y, point.z};
+    }
 
     /// Calls f(i, j, distance²) once for every pair i < j with |c_i − c_j| < reach, in
     /// increasing i, then by cell, then by increasing j.
     template <class F>
     void for_each_pair(F&& f) const {
-        for_each_pair_from(0, centers_.size(), f);
+        for_each_pair_from(0, size(), f);
     }
 
     /// The same for the pairs whose first member i lies in [first, last): the pairs of
@@ -52,14 +59,14 @@ class CellGrid {
     void for_each_pair_from(std::size_t first, std::size_t last, F&& f) const {
         const double reach2 = reach_ * reach_;
         for (std::size_t i = first; i < last; ++i) {
-            const Vec3& c = centers_[i];
-            visit_cells(c, reach_, [&](std::uint32_t j) {
-                if (j <= i) {
+            const Vec3 c = center(i);
+            visit_cells(c, reach_, [&](const GridPoint& point) {
+                if (point.index <= i) {
                     return;
                 }
-                const double r2 = distance2(c, centers_[j]);
+                const double r2 = distance2(c, point);
                 if (r2 < reach2) {
-                    f(i, static_cast<std::size_t>(j), r2);
+                    f(i, static_cast<std::size_t>(point.index), r2);
                 }
             });
         }
@@ -70,10 +77,10 @@ class CellGrid {
     template <class F>
     void for_each_near(const Vec3& p, double radius, F&& f) const {
         const double radius2 = radius * radius;
-        visit_cells(p, radius, [&](std::uint32_t j) {
-            const double r2 = distance2(p, centers_[j]);
+        visit_cells(p, radius, [&](const GridPoint& point) {
+            const double r2 = distance2(p, point);
             if (r2 <= radius2) {
-                f(static_cast<std::size_t>(j), r2);
+                f(static_cast<std::size_t>(point.index), r2);
             }
         });
     }
@@ -87,13 +94,13 @@ class CellGrid {
     template <class F>
     void for_each_pair_within(double radius, F&& f) const {
         const double radius2 = radius * radius;
-        for (std::size_t i = 0; i < centers_.size(); ++i) {
-            const Vec3& c = centers_[i];
-            visit_cells(c, radius, [&](std::uint32_t j) {
-                if (j > i) {
-                    const double r2 = distance2(c, centers_[j]);
+        for (std::size_t i = 0; i < size(); ++i) {
+            const Vec3 c = center(i);
+            visit_cells(c, radius, [&](const GridPoint& point) {
+                if (point.index > i) {
+                    const double r2 = distance2(c, point);
                     if (r2 <= radius2) {
-                        f(i, static_cast<std::size_t>(j), r2);
+                        f(i, static_cast<std::size_t>(point.index), r2);
                     }
                 }
             });
@@ -105,61 +112,75 @@ class CellGrid {
     [[nodiscard]] std::vector<Neighbour> nearest(const Vec3& p, std::size_t k) const;
 
   private:
-    [[nodiscard]] double distance2(const Vec3& a, const Vec3& b) const {
+    /// A centre as the grid files it: its coordinates and index.
+    struct GridPoint {
+        double x = 0.0;
+        double y = 0.0;
+        double z = 0.0;
+        std::uint32_t index = 0;
+        std::uint32_t unused = 0;
+    };
+
+    [[nodiscard]] double distance2(const Vec3& a, const GridPoint& point) const {
+        const Vec3 b(point.x, point.y, point.z);
         return box_.periodic ? box_.distance2(a, b) : (b - a).squaredNorm();
     }
 
-    /// Sets the cells' sides for extents `span` (x and z: the periods when wrapping) and
-    /// returns the cells per axis.
-    std::array<double, 3> size_cells(const Vec3& span, double reach);
-    /// Cell index along axis a of coordinate x, clamped to the grid.
-    [[nodiscard]] std::int64_t axis_cell(int a, double x) const;
+    /// The layout of cells of side ≥ reach over the centres' bounding box [lo, hi] (x and
+    /// z: one period when wrapping), widened to at most 2·n + 64 cells.
+    [[nodiscard]] CellLayout layout_for(const Vec3& lo, const Vec3& hi, double reach,
+                                        std::size_t n) const;
     /// Whether axis a wraps (x and z of a periodic box).
     [[nodiscard]] bool wraps(int a) const { return box_.periodic && a != 1; }
-    /// The cells [lo, hi] of axis a meeting [x − radius, x + radius]: clamped to the grid,
-    /// or on a wrapping axis unwrapped (taken modulo the cells; every cell once when the
-    /// interval covers a period).
-    void axis_range(int a, double x, double radius, std::int64_t& lo, std::int64_t& hi) const;
-    [[nodiscard]] std::int64_t wrap_cell(int a, std::int64_t c) const {
-        if (!wraps(a)) {
-            return c;
-        }
-        const std::int64_t m = c % dims_[a];
-        return m < 0 ? m + dims_[a] : m;
+    /// The unwrapped cells [lo, hi] of a wrapping axis (cells `count` of `side` from
+    /// `origin`) meeting [x − radius, x + radius]: every cell once when the interval
+    /// covers a period.
+    static void wrapped_range(double x, double radius, double origin, double side, int count,
+                              std::int64_t& lo, std::int64_t& hi);
+    static int wrap(std::int64_t c, int count) {
+        const std::int64_t m = c % count;
+        return static_cast<int>(m < 0 ? m + count : m);
     }
 
-    /// Calls g(j) for every centre stored in a cell meeting the cube of half-side
-    /// `radius` around p.
+    /// Calls g(point) for every centre stored in a cell meeting the cube of half-side
+    /// `radius` around p, in the order stated at the top of this file.
     template <class G>
     void visit_cells(const Vec3& p, double radius, G&& g) const {
-        std::array<std::int64_t, 3> lo{};
-        std::array<std::int64_t, 3> hi{};
+        const CellLayout& at = grid_.layout();
         const Vec3 q = box_.wrapped(p);  // p itself when the box is open
-        for (int a = 0; a < 3; ++a) {
-            axis_range(a, q[a], radius, lo[a], hi[a]);
+        const CellRange ys{at.layer_of(q.y() - radius),
+                           std::min(at.layer_of(q.y() + radius), grid_.layers() - 1)};
+        std::int64_t x_lo = at.column_x(q.x() - radius);
+        std::int64_t x_hi = at.column_x(q.x() + radius);
+        std::array<CellRange, 2> zs{
+            CellRange{at.column_z(q.z() - radius), at.column_z(q.z() + radius)}, CellRange{}};
+        if (box_.periodic) {
+            wrapped_range(q.x(), radius, at.x_min, at.hx, at.nx, x_lo, x_hi);
+            std::int64_t z_lo = 0;
+            std::int64_t z_hi = 0;
+            wrapped_range(q.z(), radius, at.z_min, at.hz, at.nz, z_lo, z_hi);
+            const int first = wrap(z_lo, at.nz);
+            const int last = wrap(z_hi, at.nz);
+            zs = first <= last
+                     ? std::array<CellRange, 2>{CellRange{first, last}, CellRange{}}
+                     : std::array<CellRange, 2>{CellRange{first, at.nz - 1}, CellRange{0, last}};
         }
-        for (std::int64_t ux = lo[0]; ux <= hi[0]; ++ux) {
-            const std::int64_t ix = wrap_cell(0, ux);
-            for (std::int64_t iy = lo[1]; iy <= hi[1]; ++iy) {
-                const std::size_t row = static_cast<std::size_t>((ix * dims_[1] + iy) * dims_[2]);
-                for (std::int64_t uz = lo[2]; uz <= hi[2]; ++uz) {
-                    const std::size_t cell = row + static_cast<std::size_t>(wrap_cell(2, uz));
-                    for (std::uint32_t k = start_[cell]; k < start_[cell + 1]; ++k) {
-                        g(members_[k]);
+        for (std::int64_t ux = x_lo; ux <= x_hi; ++ux) {
+            const int ix = box_.periodic ? wrap(ux, at.nx) : static_cast<int>(ux);
+            for (int iy = ys.lo; iy <= ys.hi; ++iy) {
+                for (const CellRange& z : zs) {
+                    if (z.lo <= z.hi) {
+                        grid_.for_each_in_layer(iy, CellRange{ix, ix}, z, g);
                     }
                 }
             }
         }
     }
 
-    std::vector<Vec3> centers_;
     NeighbourBox box_;
     double reach_ = 0.0;
-    std::array<double, 3> side_{};
-    Vec3 origin_ = Vec3::Zero();
-    std::array<std::int64_t, 3> dims_{1, 1, 1};
-    std::vector<std::uint32_t> start_;    ///< cell c holds members_[start_[c] .. start_[c+1])
-    std::vector<std::uint32_t> members_;  ///< centre indices, cell by cell, increasing
+    IncrementalGrid<GridPoint> grid_{CellLayout{}};
+    std::vector<std::uint32_t> place_;  ///< centre i is grid_.packed_items()[place_[i]]
 };
 
 /// The centres of `particles`, in order (the usual input of CellGrid).

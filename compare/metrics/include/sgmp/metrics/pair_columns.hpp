@@ -1,46 +1,51 @@
 #pragma once
-/// @file kd_columns.hpp
-/// The comparison's neighbour search for its pair passes (Z(δ), g(r), the split ratio, Q6;
+/// @file pair_columns.hpp
+/// The comparison's layout of centres for its pair passes (Z(δ), g(r), the split ratio, Q6;
 /// overlaps are counted by the project's one overlap search, sgmp/pack/pack_overlaps.hpp):
-/// CGAL's kd-tree (Spatial_searching, Kd_tree with the Sliding_midpoint splitter) over the
-/// centres' (x, y), whose leaves are whole columns of centres.
+/// centres filed in the columns of the testbed's one cell grid (sgmp/pack/incremental_grid
+/// .hpp) over their (x, y), each column sorted by z for the vector kernels
+/// (pair_kernels.hpp); the columns near a column found by the comparison's neighbour
+/// search, CGAL's kd-tree through its own queries (NeighbourIndex over the columns' centres).
 ///
-/// Each leaf of the tree is one column: its centres are stored contiguously, sorted by z
-/// (then index), as structure-of-arrays (x, y, z, index), columns in the tree's order
-/// (lower child first). A column's footprint F_c is the tight rectangle of its centres'
-/// (x, y). The leaves hold at most ⌈2·n·side²/A⌉ centres (A the area of the centres' (x, y)
-/// bounding rectangle widened by side), about half of that on average, so a column covers
-/// about side² of the floor.
+/// The grid has square columns of side h ≥ `side` over the (x, y) bounding box of the
+/// centres, widened until there are at most 2·n + 64 of them (so memory is O(n) for any
+/// input), and one layer. Each non-empty column is stored contiguously, sorted by z (then
+/// index), as structure-of-arrays (x, y, z, index); columns are numbered x-major. A
+/// column's footprint F_c is the tight rectangle of its centres' (x, y), of centre m_c and
+/// half-diagonal e_c.
 ///
-/// Query: for a rectangle R and a radius ρ, the columns c with s_c = dist(R, F_c) ≤ ρ,
-/// found by walking the tree from its root and leaving out every subtree whose tight
-/// bounds along a node's cutting dimension lie farther than ρ from R. For a centre p over
-/// R and a centre q of column c with |p − q| ≤ ρ, the horizontal distance is ≥ s_c, so
+/// Query: for a rectangle R (centre m, half-diagonal e) and a radius ρ, the columns c with
+/// s_c = dist(R, F_c) ≤ ρ. Every such column has |m − m_c| ≤ ρ + e + e_c ≤ ρ + e + max e_c,
+/// so a radius query of the kd-tree over the centres m_c (widened for rounding) holds them
+/// all; each is then tested exactly against its footprint. For a centre p over R and a
+/// centre q of column c with |p − q| ≤ ρ, the horizontal distance is ≥ s_c, so
 /// |z_p − z_q| ≤ √(ρ² − s_c²): the window of q's column around z_p, which the vector kernels
-/// (pair_kernels.hpp) slide up the sorted column. The windows hold every centre within ρ
-/// (and some more: the kernels test exact distances), so no result depends on the tree's
-/// shape — only the order of floating-point sums over columns does, which the tree fixes
-/// (it does not depend on the thread count).
+/// slide up the sorted column. The windows hold every centre within ρ (and some more: the
+/// kernels test exact distances), so no count depends on the columns' side; the order of
+/// floating-point sums over columns does, which the layout fixes (it does not depend on the
+/// thread count).
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
 #include "sgmp/metrics/neighbour_index.hpp"
+#include "sgmp/pack/incremental_grid.hpp"
 #include "sgmp/pack/particle.hpp"
 
 namespace sgmp::metrics {
 
-class KdColumns {
+class PairColumns {
   public:
-    /// Columns of about side × side (side > 0) over every particle's centre.
-    KdColumns(const std::vector<Particle>& particles, double side, unsigned threads);
+    /// Columns of side about `side` (> 0) over every particle's centre.
+    PairColumns(const std::vector<Particle>& particles, double side, unsigned threads);
     /// The same over the particles `members` only (indices into `particles`).
-    KdColumns(const std::vector<Particle>& particles, const std::vector<Index>& members,
-              double side, unsigned threads);
-    ~KdColumns();
-    KdColumns(const KdColumns&) = delete;
-    KdColumns& operator=(const KdColumns&) = delete;
+    PairColumns(const std::vector<Particle>& particles, const std::vector<Index>& members,
+                double side, unsigned threads);
+    ~PairColumns();
+    PairColumns(const PairColumns&) = delete;
+    PairColumns& operator=(const PairColumns&) = delete;
 
     /// Stored arrays, column by column: centre coordinates and index into `particles`.
     std::vector<double> x, y, z;
@@ -79,10 +84,10 @@ class KdColumns {
     }
 
   private:
-    struct Tree;
-    std::unique_ptr<Tree> tree_;
     std::vector<std::size_t> start_{0};              ///< column c: [start_[c], start_[c+1])
     std::vector<std::array<double, 4>> footprints_;  ///< tight (x, y) rectangle per column
+    double widest_ = 0.0;                            ///< the largest half-diagonal e_c
+    std::unique_ptr<NeighbourIndex> centres_;        ///< the footprints' centres (x, y, 0)
 };
 
 }  // namespace sgmp::metrics

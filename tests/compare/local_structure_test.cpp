@@ -260,3 +260,34 @@ BOOST_AUTO_TEST_CASE(pair_column_windows_hold_every_center_within_the_radius) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_CASE(pair_columns_far_from_the_origin_meet_a_column_at_exactly_the_radius) {
+    // Four centres near x = 4100 in columns of side 1 (a review's reproducer): the gap from
+    // column 2's footprint to column 1's is ρ exactly, and the kd-tree query over the
+    // footprint centres (each rounded by half an ulp of ~4100) must still meet column 1:
+    // a relative widening alone (10⁻¹²·ρ) left it out. The answer is every column with
+    // dist(R, F_c) ≤ ρ (brute force over the footprints), for every column and radius.
+    std::vector<Particle> particles(4);
+    const double xs[4] = {4101.868126628854, 4099.9167798631752, 4101.5803188296977,
+                          4102.0019023329887};
+    for (int i = 0; i < 4; ++i) {
+        particles[static_cast<std::size_t>(i)].center = Vec3(xs[i], 0.0, 0.0);
+    }
+    const PairColumns columns(particles, 1.0, 1);
+    const auto gap = [](const std::array<double, 4>& a, const std::array<double, 4>& b) {
+        const double sx = std::max({0.0, b[0] - a[1], a[0] - b[1]});
+        const double sy = std::max({0.0, b[2] - a[3], a[2] - b[3]});
+        return std::sqrt(sx * sx + sy * sy);
+    };
+    std::vector<PairColumns::Reach> met;
+    for (std::size_t c = 0; c < columns.columns(); ++c) {
+        const auto f = columns.footprint(columns.column_begin(c), columns.column_begin(c + 1));
+        for (std::size_t d = 0; d < columns.columns(); ++d) {
+            const auto g = columns.footprint(columns.column_begin(d), columns.column_begin(d + 1));
+            columns.columns_within(f, gap(f, g), 0, met);
+            BOOST_TEST(std::any_of(met.begin(), met.end(),
+                                   [&](const PairColumns::Reach& r) { return r.column == d; }),
+                       "column " << d << " from column " << c);
+        }
+    }
+}

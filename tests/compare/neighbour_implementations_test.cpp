@@ -335,3 +335,26 @@ BOOST_AUTO_TEST_CASE(verlet_list_finds_the_brute_force_pairs_open_and_periodic) 
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_CASE(cell_grid_queries_from_above_the_top_layer_and_with_negative_radii) {
+    // A review's reproducers. A query from above the centres meets the top layer's centres
+    // at exactly its radius (the lowest layer of the query is clamped to the top layer, as
+    // in the counting-sort grid this one replaced); a negative radius meets nothing, also
+    // in a periodic box (its unwrapped cell range is empty, not the whole period).
+    std::vector<Vec3> centers{Vec3(0, 0, 0), Vec3(0, 1.0 - std::ldexp(1.0, -53), 0)};
+    for (int i = 0; i < 40; ++i) {
+        centers.emplace_back(0.01 * i, 0.5, 0.3);
+    }
+    const CellGrid open(centers, 1.0);
+    std::vector<std::size_t> met;
+    open.for_each_near(Vec3(0, 5, 0), 4.0, [&](std::size_t j, double) { met.push_back(j); });
+    BOOST_TEST(met == std::vector<std::size_t>{1});
+    NeighbourBox box;
+    box.periodic = true;
+    box.x_max = 10.0;
+    box.z_max = 10.0;
+    const CellGrid periodic(std::vector<Vec3>{Vec3(0.5, 0.5, 5.1)}, 1.0, box);
+    std::size_t count = 0;
+    periodic.for_each_near(Vec3(0.5, 0.5, 5.1), -0.3, [&](std::size_t, double) { ++count; });
+    BOOST_TEST(count == 0u);
+}

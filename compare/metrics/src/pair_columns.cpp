@@ -53,7 +53,8 @@ struct ColumnItem {
 /// Square columns of side ≥ `side` over the (x, y) rectangle [lo, hi], at most 2·n + 64 of
 /// them (the side widened by 1.25 until they fit), one layer: the grid's x is x, its z is y.
 CellLayout column_layout(const double (&lo)[2], const double (&hi)[2], double side, std::size_t n) {
-    const double max_cells = 2.0 * static_cast<double>(n) + 64.0;
+    // (and at most 2³¹ − 1 along either axis: the layout counts cells in int)
+    const double max_cells = std::min(2.0 * static_cast<double>(n) + 64.0, 2147483647.0);
     const double span[2] = {hi[0] - lo[0], hi[1] - lo[1]};
     const auto cells = [&](double h, int a) { return std::floor(span[a] / h) + 1.0; };
     if (!std::isfinite(span[0]) || !std::isfinite(span[1])) {
@@ -156,6 +157,9 @@ PairColumns::PairColumns(const std::vector<Particle>& particles, const std::vect
     for (std::size_t c = 0; c < columns; ++c) {
         centres[c] = centre_of(footprints_[c]);
         widest_ = std::max(widest_, half_diagonal(footprints_[c]));
+        for (const double v : footprints_[c]) {
+            scale_ = std::max(scale_, std::abs(v));
+        }
     }
     centres_ = std::make_unique<NeighbourIndex>(centres);
 }
@@ -182,10 +186,15 @@ void PairColumns::columns_within(const std::array<double, 4>& footprint, double 
     // Widened far beyond rounding: the kernels' exact distance tests decide.
     const double wide = radius * (1.0 + 1e-12) + 1e-300;
     const double wide2 = wide * wide;
-    const double reach = (wide + half_diagonal(footprint) + widest_) * (1.0 + 1e-12);
+    // Widened relatively, and absolutely for the rounding of the centres themselves (each
+    // off by up to half an ulp of its coordinates: far from the origin more than 10⁻¹²·ρ).
+    const Vec3 centre = centre_of(footprint);
+    const double scale = std::max({scale_, std::abs(centre.x()), std::abs(centre.y())});
+    const double reach = (wide + half_diagonal(footprint) + widest_) * (1.0 + 1e-12) +
+                         16.0 * std::numeric_limits<double>::epsilon() * scale;
     std::vector<Index> near;
-    if (std::isfinite(reach) && std::isfinite(centre_of(footprint).norm())) {
-        centres_->within(centre_of(footprint), reach, near);
+    if (std::isfinite(reach) && std::isfinite(centre.norm())) {
+        centres_->within(centre, reach, near);
         std::sort(near.begin(), near.end());
     } else {  // spans near ±10³⁰⁸ (or an infinite radius): every column, tested exactly
         near.resize(footprints_.size());

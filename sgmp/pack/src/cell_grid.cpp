@@ -70,7 +70,8 @@ CellGrid::CellGrid(const std::vector<Vec3>& centers, double reach, const Neighbo
 CellLayout CellGrid::layout_for(const Vec3& lo, const Vec3& hi, double reach, std::size_t n) const {
     // Widen the cells until the grid holds at most 2n + 64 of them.
     const Vec3 span = hi - lo;
-    const double max_cells = 2.0 * static_cast<double>(n) + 64.0;
+    // (and at most 2³¹ − 1 along any axis: the layout counts cells in int)
+    const double max_cells = std::min(2.0 * static_cast<double>(n) + 64.0, 2147483647.0);
     double side = reach;
     if (!span.allFinite()) {
         side = INFINITY;  // centres near ±10³⁰⁸: one cell (every query still exact)

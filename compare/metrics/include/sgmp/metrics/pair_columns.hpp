@@ -16,14 +16,14 @@
 ///
 /// Query: for a rectangle R (centre m, half-diagonal e) and a radius ρ, the columns c with
 /// s_c = dist(R, F_c) ≤ ρ. Every such column has |m − m_c| ≤ ρ + e + e_c ≤ ρ + e + max e_c,
-/// so a radius query of the kd-tree over the centres m_c (widened for rounding) holds them
-/// all; each is then tested exactly against its footprint. For a centre p over R and a
-/// centre q of column c with |p − q| ≤ ρ, the horizontal distance is ≥ s_c, so
-/// |z_p − z_q| ≤ √(ρ² − s_c²): the window of q's column around z_p, which the vector kernels
-/// slide up the sorted column. The windows hold every centre within ρ (and some more: the
-/// kernels test exact distances), so no count depends on the columns' side; the order of
-/// floating-point sums over columns does, which the layout fixes (it does not depend on the
-/// thread count).
+/// so a radius query of the kd-tree over the centres m_c holds them all (widened by
+/// 10⁻¹² of itself and by 16 ulp of the largest coordinate, the centres' own rounding); each is
+/// then tested exactly against its footprint. For a centre p over R and a centre q of column c with
+/// |p − q| ≤ ρ, the horizontal distance is ≥ s_c, so |z_p − z_q| ≤ √(ρ² − s_c²): the window of q's
+/// column around z_p, which the vector kernels slide up the sorted column. The windows hold every
+/// centre within ρ (and some more: the kernels test exact distances), so no count depends on the
+/// columns' side; the order of floating-point sums over columns does, which the layout fixes (it
+/// does not depend on the thread count).
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -87,6 +87,7 @@ class PairColumns {
     std::vector<std::size_t> start_{0};              ///< column c: [start_[c], start_[c+1])
     std::vector<std::array<double, 4>> footprints_;  ///< tight (x, y) rectangle per column
     double widest_ = 0.0;                            ///< the largest half-diagonal e_c
+    double scale_ = 0.0;                             ///< the largest |coordinate| of a footprint
     std::unique_ptr<NeighbourIndex> centres_;        ///< the footprints' centres (x, y, 0)
 };
 

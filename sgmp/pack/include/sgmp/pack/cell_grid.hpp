@@ -148,7 +148,7 @@ class CellGrid {
     void visit_cells(const Vec3& p, double radius, G&& g) const {
         const CellLayout& at = grid_.layout();
         const Vec3 q = box_.wrapped(p);  // p itself when the box is open
-        const CellRange ys{at.layer_of(q.y() - radius),
+        const CellRange ys{std::min(at.layer_of(q.y() - radius), grid_.layers() - 1),
                            std::min(at.layer_of(q.y() + radius), grid_.layers() - 1)};
         std::int64_t x_lo = at.column_x(q.x() - radius);
         std::int64_t x_hi = at.column_x(q.x() + radius);
@@ -161,9 +161,11 @@ class CellGrid {
             wrapped_range(q.z(), radius, at.z_min, at.hz, at.nz, z_lo, z_hi);
             const int first = wrap(z_lo, at.nz);
             const int last = wrap(z_hi, at.nz);
-            zs = first <= last
-                     ? std::array<CellRange, 2>{CellRange{first, last}, CellRange{}}
-                     : std::array<CellRange, 2>{CellRange{first, at.nz - 1}, CellRange{0, last}};
+            zs = z_hi < z_lo  // a negative radius: no cell
+                     ? std::array<CellRange, 2>{}
+                     : first <= last ? std::array<CellRange, 2>{CellRange{first, last}, CellRange{}}
+                                     : std::array<CellRange, 2>{CellRange{first, at.nz - 1},
+                                                                CellRange{0, last}};
         }
         for (std::int64_t ux = x_lo; ux <= x_hi; ++ux) {
             const int ix = box_.periodic ? wrap(ux, at.nx) : static_cast<int>(ux);

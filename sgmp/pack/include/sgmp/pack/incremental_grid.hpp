@@ -111,10 +111,14 @@ class IncrementalGrid {
   public:
     explicit IncrementalGrid(const CellLayout& layout, std::size_t expected_items = 0)
         : layout_(layout), expected_(expected_items) {}
+    IncrementalGrid(const IncrementalGrid&) = delete;
+    IncrementalGrid& operator=(const IncrementalGrid&) = delete;
+    IncrementalGrid(IncrementalGrid&&) noexcept = default;
+    IncrementalGrid& operator=(IncrementalGrid&&) noexcept = default;
 
     /// A grid holding the items item_of(0), …, item_of(count − 1), each filed in the cell of
     /// filed_at(item) (a Vec3), packed (see the file's comment); insert() then throws
-    /// std::logic_error. Memory while filing: the items and 4 bytes per item and per cell.
+    /// std::logic_error. Memory while filing: the items, 8 bytes per item and 4 per cell.
     template <class ItemOf, class FiledAt>
     static IncrementalGrid packed(const CellLayout& layout, std::size_t count, ItemOf&& item_of,
                                   FiledAt&& filed_at);
@@ -127,9 +131,13 @@ class IncrementalGrid {
     [[nodiscard]] const std::vector<Item>& packed_items() const { return packed_items_; }
     /// Files `item` in the cell of (x, y, z) (e.g. a periodic point's wrapped position).
     void insert(const Item& item, double x, double y, double z);
-    /// Empties the grid and moves it to `layout` (same cells per layer), keeping the memory
-    /// of its layers for reuse.
+    /// Empties the grid and moves it to `layout`, keeping the memory of its layers for reuse
+    /// when the layout has as many cells per layer.
     void reset(const CellLayout& layout) {
+        if (static_cast<std::size_t>(layout.nx) * static_cast<std::size_t>(layout.nz) !=
+            cells_per_layer()) {
+            layer_blocks_.clear();
+        }
         layout_ = layout;
         layers_ = 0;
         size_ = 0;
